@@ -1,0 +1,39 @@
+# Finds every dependency as ARCHITECTURE.md lists them; a missing one stops configuration with a
+# message naming the Debian 12 package that provides it.
+include(FindPackageHandleStandardArgs)
+
+macro(stc_require found debian_package what)
+  if(NOT ${found})
+    message(FATAL_ERROR "stcontact needs ${what}: install the Debian package '${debian_package}' "
+                        "(apt-get install -y ${debian_package})")
+  endif()
+endmacro()
+
+find_package(Eigen3 3.4 QUIET NO_MODULE)
+stc_require(Eigen3_FOUND libeigen3-dev "Eigen 3.4")
+
+find_package(CHOLMOD QUIET)
+stc_require(CHOLMOD_FOUND libsuitesparse-dev "SuiteSparse CHOLMOD")
+
+find_package(ARPACK QUIET)
+stc_require(ARPACK_FOUND libarpack2-dev "ARPACK")
+
+find_package(GSL QUIET)
+stc_require(GSL_FOUND libgsl-dev "GSL")
+
+find_package(tomlplusplus QUIET)
+stc_require(tomlplusplus_FOUND libtomlplusplus-dev "toml++")
+
+find_package(CLI11 QUIET)
+stc_require(CLI11_FOUND libcli11-dev "CLI11")
+
+find_package(Threads REQUIRED)
+
+if(STC_BUILD_TESTS)
+  find_package(GTest QUIET)
+  stc_require(GTest_FOUND libgtest-dev "GoogleTest")
+endif()
+if(STC_BUILD_BENCHMARKS)
+  find_package(benchmark QUIET)
+  stc_require(benchmark_FOUND libbenchmark-dev "Google Benchmark")
+endif()

@@ -1,0 +1,38 @@
+#pragma once
+// P1 triangle mesh with named boundary groups (node sets and their boundary edges).
+#include <Eigen/Core>
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace stc {
+
+/// A named part of the boundary: its edges (pairs of node ids) and the nodes they touch,
+/// sorted and unique. Built-in generators and the Gmsh reader fill both.
+struct BoundaryGroup {
+  std::vector<int> nodes;
+  std::vector<std::array<int, 2>> edges;
+};
+
+struct Mesh {
+  Eigen::Matrix2Xd nodes;      ///< coordinates, one column per node
+  Eigen::Matrix3Xi triangles;  ///< node ids, one column per element, counter-clockwise
+  std::map<std::string, BoundaryGroup> groups;
+
+  int numNodes() const { return static_cast<int>(nodes.cols()); }
+  int numDofs() const { return 2 * numNodes(); }
+  int numElements() const { return static_cast<int>(triangles.cols()); }
+
+  /// Twice the signed area of element e (positive when counter-clockwise).
+  double twiceSignedArea(int e) const;
+  /// The group named `name`; throws InputError listing the groups the mesh has.
+  const BoundaryGroup& group(const std::string& name) const;
+  /// Throws InputError naming the first element that is inverted or degenerate
+  /// (|area| below 1e-12 of the mean element area), or a node id out of range.
+  void validate() const;
+  /// Fills `nodes` of every group from its edges (sorted, unique).
+  void finalizeGroups();
+};
+
+}  // namespace stc

@@ -1,0 +1,104 @@
+#pragma once
+// A validated scene: the input as read from TOML (INTERFACE.md "Scene file"), nothing computed.
+// Units are the user's (the seed scene: mm, MPa, N/mm); times are dimensionless instants.
+#include <Eigen/Core>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stc {
+
+enum class PlaneModel { Strain, Stress };
+enum class Component { X, Y };
+
+/// [mesh]: either the built-in generator or a Gmsh 4.1 file.
+struct MeshSpec {
+  std::string generator;              ///< "half_disc", or empty when `file` is given
+  std::filesystem::path file;         ///< resolved against the scene file's folder
+  double radius = 1.0;                ///< half_disc: radius R (> 0)
+  int arc_nodes = 101;                ///< half_disc: potential contact nodes on the arc (>= 3)
+  double grading = 1.25;              ///< half_disc: growth of the element size per ring inward (1 = uniform)
+};
+
+/// [material]: isotropic linear elasticity.
+struct MaterialSpec {
+  double young = 0.0;    ///< E > 0
+  double poisson = 0.0;  ///< -1 < nu < 0.5
+};
+
+enum class ObstacleType { Plane };
+
+/// [obstacle]: rigid obstacle. Plane: through `point` with unit `normal` pointing into the body.
+struct ObstacleSpec {
+  ObstacleType type = ObstacleType::Plane;
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();
+  Eigen::Vector2d normal = Eigen::Vector2d(0.0, 1.0);  ///< normalised on reading (must be nonzero)
+};
+
+/// [contact]: which boundary may touch the obstacle, with which Coulomb coefficient.
+struct ContactSpec {
+  std::string boundary;
+  double friction = 0.0;                ///< mu >= 0
+  std::optional<double> length_scale;  ///< L of the search direction k = kappa E l_i / L (> 0);
+                                        ///< default: the radius, or the mesh's largest extent
+};
+
+/// [time]: uniform grid of `steps` instants on [0, end].
+struct TimeSpec {
+  int steps = 0;       ///< m >= 2
+  double end = 1.0;    ///< > 0
+};
+
+/// One piecewise-linear history of a scalar: `times` strictly increasing, same length as `values`.
+struct History {
+  std::vector<double> times;
+  std::vector<double> values;
+};
+
+/// [[dirichlet]]: prescribed displacement component on every node of a boundary.
+struct DirichletSpec {
+  std::string boundary;
+  Component component = Component::X;
+  History history;
+};
+
+/// [[load]]: total force (per unit thickness) on a boundary, spread by edge length.
+struct LoadSpec {
+  std::string boundary;
+  Component component = Component::X;
+  History history;
+};
+
+/// [solver]: choice and common options (each solver validates its own further options).
+struct SolverSpec {
+  std::string name = "fas-apriori";  ///< latin, latin-pgd, fas-aposteriori, fas-apriori, incremental
+  double tolerance = 1e-6;           ///< on the LATIN indicator (METHOD.md §2), > 0
+  int max_iterations = 2000;         ///< >= 1
+  double search_scale = 1.0;         ///< kappa of METHOD.md §2, > 0
+  double relaxation = 1.0;           ///< omega in (0, 1]
+};
+
+/// [output]: what to write beside the CSV/JSON files.
+struct OutputSpec {
+  bool vtu = true;      ///< write solution.pvd + vtu/
+  int vtu_stride = 1;   ///< write every k-th instant (the last one always), >= 1
+};
+
+struct Scene {
+  std::string name;
+  std::filesystem::path source;  ///< the scene file, for messages and relative paths
+  PlaneModel plane = PlaneModel::Strain;
+  MeshSpec mesh;
+  MaterialSpec material;
+  ObstacleSpec obstacle;
+  ContactSpec contact;
+  TimeSpec time;
+  std::vector<DirichletSpec> dirichlet;
+  std::vector<LoadSpec> loads;
+  SolverSpec solver;
+  OutputSpec output;
+  std::string parameters_json;  ///< the scene as read (overrides applied), as a JSON object
+};
+
+}  // namespace stc

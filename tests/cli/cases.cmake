@@ -1,0 +1,1 @@
+# cases filled in with the CLI
