@@ -18,7 +18,7 @@ struct MeshSpec {
   std::filesystem::path file;         ///< resolved against the scene file's folder
   double radius = 1.0;                ///< half_disc: radius R (> 0)
   int arc_nodes = 101;                ///< half_disc: potential contact nodes on the arc (>= 3)
-  double grading = 1.25;              ///< half_disc: growth of the element size per ring inward (1 = uniform)
+  double grading = 1.135;             ///< half_disc: growth of the element size per ring inward (1 = uniform)
 };
 
 /// [material]: isotropic linear elasticity.

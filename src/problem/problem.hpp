@@ -1,0 +1,59 @@
+#pragma once
+// The assembled space-time problem of METHOD.md §1: stiffness, Dirichlet elimination, loads in
+// separated form on the time grid, and the contact interface. Built once from a validated Scene.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <string>
+#include <vector>
+
+#include "src/contact/contact_interface.hpp"
+#include "src/mesh/mesh.hpp"
+#include "src/scene/scene.hpp"
+
+namespace stc {
+
+/// One separated term of the loading: at instant t_k the free dofs receive `free_force · values[k]`
+/// and the full displacement gets `prescribed · values[k]`. A Dirichlet history u_d(t) on a set of
+/// dofs D gives prescribed = e_D and free_force = −K_fD e_D; an applied force gives prescribed = 0.
+/// Storing loads this way keeps memory O(n + m) per history instead of O(n·m).
+struct SeparatedLoad {
+  Eigen::VectorXd free_force;  ///< n_free
+  Eigen::VectorXd prescribed;  ///< n (full field), zero on free dofs
+  std::vector<double> values;  ///< m, the history sampled on the grid
+};
+
+struct Problem {
+  std::string name;
+  Mesh mesh;
+  MaterialSpec material;
+  PlaneModel plane = PlaneModel::Strain;
+  std::vector<double> times;                  ///< t_0 … t_{m−1}
+  Eigen::SparseMatrix<double> stiffness;      ///< full, unconstrained K (n × n), for energies
+  Eigen::SparseMatrix<double> stiffness_free; ///< K_ff (n_free × n_free)
+  std::vector<int> free_dofs;                 ///< free dof ids, increasing
+  std::vector<int> free_index;                ///< per dof: its index among free dofs, −1 if prescribed
+  std::vector<SeparatedLoad> loads;
+  ContactInterface contact;
+  double length_scale = 1.0;                  ///< L of the search direction
+
+  int numDofs() const { return mesh.numDofs(); }
+  int numFreeDofs() const { return static_cast<int>(free_dofs.size()); }
+  int numSteps() const { return static_cast<int>(times.size()); }
+
+  /// f(t_k) on the free dofs: external forces minus K_fp u_p(t_k).
+  Eigen::VectorXd load(int k) const;
+  /// [f(t_0) … f(t_{m−1})] restricted to the instants [k0, k0 + count).
+  Eigen::MatrixXd loadBlock(int k0, int count) const;
+  /// Full displacement at instant k from the free part.
+  Eigen::VectorXd fullDisplacement(const Eigen::VectorXd& u_free, int k) const;
+};
+
+/// Builds the mesh, assembles K, eliminates Dirichlet dofs, samples the histories and sets up the
+/// contact interface with k = κ E ℓ_i / L. Throws InputError on inconsistent input (a boundary that
+/// the mesh lacks, a dof prescribed twice, initial penetration, a contact node half prescribed).
+Problem buildProblem(const Scene& scene);
+
+/// The scene's mesh: built-in generator or Gmsh file.
+Mesh buildMesh(const MeshSpec& spec);
+
+}  // namespace stc

@@ -1,0 +1,27 @@
+#include "src/solver/condensed_interface.hpp"
+
+namespace stc {
+
+CondensedInterface CondensedInterface::build(const Problem& problem, const SpdFactor& stiffness_free) {
+  const auto& B = problem.contact.B;
+  CondensedInterface c;
+  const Eigen::MatrixXd Bt = Eigen::MatrixXd(B.transpose());
+  c.delassus = B * stiffness_free.solve(Bt);
+  c.delassus = 0.5 * (c.delassus + c.delassus.transpose()).eval();  // symmetric to round-off
+  c.free_response = Eigen::MatrixXd::Zero(B.rows(), problem.numSteps());
+  for (const auto& term : problem.loads) {
+    const Eigen::VectorXd w = B * stiffness_free.solve(term.free_force);
+    c.free_response.noalias() += w * Eigen::Map<const Eigen::RowVectorXd>(term.values.data(), problem.numSteps());
+  }
+  c.sparse_solves = static_cast<int>(Bt.cols() + problem.loads.size());
+  return c;
+}
+
+Eigen::MatrixXd displacementsFromForces(const Problem& problem, const SpdFactor& stiffness_free,
+                                        const Eigen::MatrixXd& lambda) {
+  Eigen::MatrixXd rhs = problem.loadBlock(0, problem.numSteps());
+  rhs.noalias() += problem.contact.B.transpose() * lambda;
+  return stiffness_free.solve(rhs);
+}
+
+}  // namespace stc

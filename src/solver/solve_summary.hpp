@@ -1,0 +1,42 @@
+#pragma once
+// What every solver returns beside its solution (house style 3, after Ceres' Solver::Summary):
+// a termination status, a message, and the per-iteration history written to history.csv.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stc {
+
+enum class Termination { Converged, MaxIterations, Stagnated, NumericalIssue, StoppedByCallback };
+
+const char* toString(Termination termination);
+
+struct IterationRecord {
+  int iteration = 0;
+  int relaxations = 0;            ///< fine-level LATIN relaxations so far (global + local stage pairs)
+  double indicator = 0.0;         ///< METHOD.md §2 η
+  std::optional<double> error;    ///< true energy error against the reference, when known
+  int rank = 0;                   ///< coarse / PGD basis size (0 for plain LATIN)
+  int sparse_solves = 0;          ///< right-hand sides solved with the sparse factor so far
+  double wall_s = 0.0;            ///< since the start of the solve
+};
+
+struct SolveSummary {
+  std::string solver;
+  Termination termination = Termination::MaxIterations;
+  std::string message;
+  std::vector<IterationRecord> history;
+  int iterations = 0;
+  int relaxations = 0;
+  double indicator = 0.0;
+  std::optional<double> error;
+  double wall_s = 0.0;
+
+  bool converged() const { return termination == Termination::Converged; }
+};
+
+/// Called after every iteration; returning false stops the solve (Termination::StoppedByCallback).
+using IterationCallback = std::function<bool(const IterationRecord&)>;
+
+}  // namespace stc
