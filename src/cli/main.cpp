@@ -1,1 +1,68 @@
-int main() { return 0; }
+// stcontact: the command line (INTERFACE.md). Exit status: 0 converged / ok; 1 bad input or usage
+// (one "error: ..." line on stderr); 2 ran but did not converge; 3 internal failure.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "src/cli/commands.hpp"
+#include "src/core/input_error.hpp"
+#include "src/io/output_error.hpp"
+
+namespace {
+
+std::string oneLine(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+int fail(int status, const std::string& message) {
+  std::cerr << "error: " << oneLine(message) << std::endl;
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"stcontact " STC_VERSION
+               ": quasi-static frictional contact over the whole space-time grid (LATIN, FAS, PGD)"};
+  app.set_version_flag("--version", std::string("stcontact ") + STC_VERSION);
+  app.require_subcommand(1);
+
+  stc::cli::CheckArgs check;
+  auto* check_cmd = app.add_subcommand("check", "validate a scene and print the model's sizes");
+  check_cmd->add_option("scene", check.scene, "scene file (TOML)")->required();
+  check_cmd->add_option("--set", check.overrides, "override a scene value: section.key=value")->take_all();
+
+  stc::cli::SolveArgs solve;
+  auto* solve_cmd = app.add_subcommand("solve", "solve a scene and write the results");
+  solve_cmd->add_option("scene", solve.scene, "scene file (TOML)")->required();
+  solve_cmd->add_option("--solver", solve.solver,
+                        "latin | latin-pgd | fas-aposteriori | fas-apriori | incremental (default: the scene's "
+                        "[solver] name, else fas-apriori)");
+  solve_cmd->add_option("--out", solve.out, "output folder (default results/<scene name>/<solver>)");
+  solve_cmd->add_option("--tol", solve.tolerance, "tolerance on the LATIN indicator");
+  solve_cmd->add_option("--max-iterations", solve.max_iterations, "iteration limit");
+  solve_cmd->add_option("--set", solve.overrides, "override a scene value: section.key=value")->take_all();
+  solve_cmd->add_flag("--quiet", solve.quiet, "no progress, no final report");
+  solve_cmd->add_flag("--no-reference", solve.no_reference,
+                      "do not compute the incremental reference (no true error in history.csv)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return fail(1, std::string(e.what()) + " (see stcontact --help)");
+  }
+  try {
+    if (check_cmd->parsed()) return stc::cli::runCheck(check);
+    return stc::cli::runSolve(solve);
+  } catch (const stc::InputError& e) {
+    return fail(1, e.what());
+  } catch (const stc::OutputError& e) {
+    return fail(1, e.what());
+  } catch (const std::exception& e) {
+    return fail(3, std::string("internal failure: ") + e.what());
+  }
+}

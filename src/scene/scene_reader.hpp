@@ -1,7 +1,12 @@
 #pragma once
-// Reads and validates a scene file (TOML, through toml++), applying `--set section.key=value`
-// overrides first. Every key is checked: unknown key, wrong type, out-of-range value, missing
-// required key all throw InputError with "FILE: key 'section.key': rule" style messages.
+// Reads and validates a scene file (TOML, through toml++; INTERFACE.md "Scene file"), applying
+// `--set KEY=VALUE` overrides first. Every key is checked: unknown key, wrong type, non-finite or
+// out-of-range value, missing required key all throw InputError with one-line messages such as
+//   "hemicylinder.toml: key 'material.poisson' = 0.5 is out of range: must be in (-1, 0.5)"
+//   "hemicylinder.toml:12:9: TOML syntax error: <toml++'s description>"
+// Keys are named by their full dotted path, arrays of tables by 0-based index
+// ("dirichlet[1].times"). Checks that need the mesh (boundary names, penetration) belong to the
+// Problem builder.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -11,6 +16,8 @@
 namespace stc {
 
 /// Parses `text` as if read from `source` (used for messages and relative mesh paths).
+/// `overrides` are `--set` texts: "contact.friction=0.3", "model.plane=stress",
+/// "dirichlet[1].values=[0, -0.02]"; see src/scene/detail/scene_overrides.hpp.
 Scene parseScene(const std::string& text, const std::filesystem::path& source,
                  const std::vector<std::string>& overrides = {});
 

@@ -1,0 +1,38 @@
+#include "latin/global_stage.hpp"
+
+#include <algorithm>
+
+namespace stc::latin {
+
+Eigen::SparseMatrix<double> searchDirectionOperator(const Problem& problem) {
+  const auto& B = problem.contact.B;
+  const Eigen::SparseMatrix<double> kB = problem.contact.search_direction.asDiagonal() * B;
+  return Eigen::SparseMatrix<double>(problem.stiffness_free + Eigen::SparseMatrix<double>(B.transpose()) * kB);
+}
+
+GlobalStage::GlobalStage(const Problem& problem, int block_size)
+    : problem_(problem),
+      matrix_(searchDirectionOperator(problem)),
+      factor_(matrix_, "K + B^T k B"),
+      block_size_(std::max(1, block_size)) {}
+
+void GlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s) {
+  const auto& B = problem_.contact.B;
+  const Eigen::VectorXd& k = problem_.contact.search_direction;
+  const int m = hat.numSteps();
+  s.v.resize(hat.v.rows(), m);
+  s.lambda.resize(hat.lambda.rows(), m);
+  for (int k0 = 0; k0 < m; k0 += block_size_) {
+    const int count = std::min(block_size_, m - k0);
+    const auto v_hat = hat.v.middleCols(k0, count);
+    const auto l_hat = hat.lambda.middleCols(k0, count);
+    Eigen::MatrixXd rhs = problem_.loadBlock(k0, count);
+    rhs.noalias() += B.transpose() * (l_hat + k.asDiagonal() * v_hat);
+    const Eigen::MatrixXd u = factor_.solve(rhs);
+    s.v.middleCols(k0, count).noalias() = B * u;
+    s.lambda.middleCols(k0, count) = l_hat - k.asDiagonal() * (s.v.middleCols(k0, count) - v_hat);
+  }
+  sparse_solves_ += m;
+}
+
+}  // namespace stc::latin

@@ -1,0 +1,39 @@
+#pragma once
+// LATIN global (linear) stage (METHOD.md §2): from ŝ find s ∈ A_d along λ − λ̂ = −k (v − v̂):
+//   (K + Bᵀ k B) u(t_k) = f(t_k) + Bᵀ (λ̂(t_k) + k v̂(t_k))  for every k,   v = B u,
+//   λ = λ̂ − k (v − v̂).
+// The operator depends on neither time nor iteration: factorised once (CHOLMOD), then one
+// multi-right-hand-side solve per iteration, by blocks of instants to bound memory.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "src/linalg/spd_factor.hpp"
+#include "src/problem/problem.hpp"
+#include "src/spacetime/interface_history.hpp"
+
+namespace stc::latin {
+
+class GlobalStage {
+ public:
+  /// Factorises K_ff + Bᵀ k B with k = problem.contact.search_direction.
+  explicit GlobalStage(const Problem& problem, int block_size = 64);
+
+  /// s = global stage of ŝ (all instants). Adds m to the sparse-solve count.
+  void solve(const InterfaceHistory& hat, InterfaceHistory& s);
+
+  /// The operator K_ff + Bᵀ k B and its factor (the FAS coarse space and PGD use them).
+  const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
+  const SpdFactor& factor() const { return factor_; }
+  long sparseSolves() const { return sparse_solves_; }
+
+ private:
+  const Problem& problem_;
+  Eigen::SparseMatrix<double> matrix_;
+  SpdFactor factor_;
+  int block_size_;
+  long sparse_solves_ = 0;
+};
+
+Eigen::SparseMatrix<double> searchDirectionOperator(const Problem& problem);
+
+}  // namespace stc::latin

@@ -1,0 +1,18 @@
+#pragma once
+// LATIN local stage (METHOD.md §2; Ladevèze 1999 ch. 4 for the method): from s = (v, λ) ∈ A_d find
+// ŝ = (v̂, λ̂) ∈ Γ (Signorini + implicit Coulomb) along the search direction λ̂ − λ = k (v̂ − v).
+// Node-wise and exact; marches in time because the slip depends on the previous instant.
+#include "src/contact/contact_interface.hpp"
+#include "src/spacetime/interface_history.hpp"
+
+namespace stc::latin {
+
+/// Writes ŝ into `hat` (resized as needed). For each node i and instant k:
+///   λ̂_n = max(0, λ_n − k_n (g0 + v_n));
+///   open (λ̂_n = 0):  v̂_n = v_n − λ_n/k_n, λ̂_t = 0, v̂_t = v_t − λ_t/k_t;
+///   closed:          v̂_n = −g0, v̂_t = clamp(v̂_t(t_{k−1}), c − b, c + b) with c = v_t − λ_t/k_t,
+///                    b = μ λ̂_n / k_t, then λ̂_t = λ_t + k_t (v̂_t − v_t)   (stick or slip, branch-free).
+/// v̂_t(t_{−1}) = 0: the body starts unloaded.
+void localStage(const ContactInterface& contact, const InterfaceHistory& s, InterfaceHistory& hat);
+
+}  // namespace stc::latin

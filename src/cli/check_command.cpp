@@ -1,0 +1,32 @@
+// stcontact check SCENE: validate and print the model's sizes.
+#include <iostream>
+
+#include "src/cli/commands.hpp"
+#include "src/problem/problem.hpp"
+#include "src/scene/scene_reader.hpp"
+
+namespace stc::cli {
+
+int runCheck(const CheckArgs& args) {
+  const Scene scene = readScene(args.scene, args.overrides);
+  const Problem p = buildProblem(scene);
+  const auto& c = p.contact;
+  std::cout << "scene            " << scene.name << " (" << args.scene << ")\n"
+            << "model            plane " << (p.plane == PlaneModel::Strain ? "strain" : "stress")
+            << ", E = " << p.material.young << ", nu = " << p.material.poisson << ", mu = " << c.friction << "\n"
+            << "nodes            " << p.mesh.numNodes() << "\n"
+            << "elements         " << p.mesh.numElements() << "\n"
+            << "dofs             " << p.numDofs() << " (" << p.numFreeDofs() << " free, "
+            << p.numDofs() - p.numFreeDofs() << " prescribed)\n"
+            << "contact nodes    " << c.size() << " on boundary '" << scene.contact.boundary << "'\n"
+            << "steps            " << p.numSteps() << " instants on [" << p.times.front() << ", " << p.times.back()
+            << "]\n"
+            << "initial gap      min " << c.initial_gap.minCoeff() << ", max " << c.initial_gap.maxCoeff() << "\n"
+            << "search direction k = kappa E l_i / L: kappa = " << scene.solver.search_scale << ", L = "
+            << p.length_scale << ", kappa E / L = " << c.search_scale_per_length << ", k in ["
+            << c.search_direction.minCoeff() << ", " << c.search_direction.maxCoeff() << "]\n"
+            << "solver           " << scene.solver.name << ", tolerance " << scene.solver.tolerance << "\n";
+  return 0;
+}
+
+}  // namespace stc::cli

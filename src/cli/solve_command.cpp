@@ -1,0 +1,97 @@
+// stcontact solve SCENE: choose the solver, compute the incremental reference for the true error
+// (scenes small enough, unless --no-reference), solve, write every output file.
+#include <iostream>
+#include <memory>
+
+#include "latin/latin_solver.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/progress.hpp"
+#include "src/core/input_error.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/io/run_writer.hpp"
+#include "src/scene/scene_reader.hpp"
+#include "src/solver/incremental_solver.hpp"
+
+namespace stc::cli {
+namespace {
+
+// Beyond this many contact nodes the dense Delassus operator of the reference (32 n_C² bytes)
+// and its per-iteration error evaluation become a noticeable cost: skip the reference.
+constexpr int kMaxReferenceContactNodes = 1000;
+
+const std::vector<std::string> kAvailable = {"latin", "incremental"};
+const std::vector<std::string> kPlanned = {"latin-pgd", "fas-aposteriori", "fas-apriori"};
+
+void requireAvailable(const std::string& name) {
+  for (const auto& s : kAvailable)
+    if (s == name) return;
+  for (const auto& s : kPlanned)
+    if (s == name)
+      throw InputError("solver '" + name + "' is not available in this version yet (available: latin, incremental)");
+  throw InputError("unknown solver '" + name + "' (known: latin, latin-pgd, fas-aposteriori, fas-apriori, incremental)");
+}
+
+std::unique_ptr<ErrorReference> computeReference(const Problem& problem, bool quiet) {
+  Progress progress("reference (incremental)", !quiet);
+  SolveResult ref = solveIncremental(problem, {}, progress.callback());
+  progress.done();
+  if (!ref.summary.converged())
+    throw std::runtime_error("the incremental reference did not converge: " + ref.summary.message);
+  const SpdFactor factor(problem.stiffness_free, "K_ff");
+  const CondensedInterface condensed = CondensedInterface::build(problem, factor);
+  return std::make_unique<ErrorReference>(problem, factor, condensed.delassus, ref.interface.lambda);
+}
+
+SolveResult runSolver(const std::string& name, const Problem& problem, const Scene& scene,
+                      const ErrorReference* reference, bool quiet) {
+  Progress progress(name, !quiet);
+  SolveResult result;
+  if (name == "incremental") {
+    result = solveIncremental(problem, {}, progress.callback());
+  } else {
+    latin::LatinOptions options;
+    options.tolerance = scene.solver.tolerance;
+    options.max_iterations = scene.solver.max_iterations;
+    options.relaxation = scene.solver.relaxation;
+    result = latin::solveLatin(problem, options, reference, progress.callback());
+  }
+  progress.done();
+  return result;
+}
+
+}  // namespace
+
+int runSolve(const SolveArgs& args) {
+  Scene scene = readScene(args.scene, args.overrides);
+  const std::string solver = args.solver.value_or(scene.solver.name);
+  requireAvailable(solver);
+  if (args.tolerance) {
+    if (!(*args.tolerance > 0.0)) throw InputError("--tol must be > 0");
+    scene.solver.tolerance = *args.tolerance;
+  }
+  if (args.max_iterations) {
+    if (*args.max_iterations < 1) throw InputError("--max-iterations must be >= 1");
+    scene.solver.max_iterations = *args.max_iterations;
+  }
+  const std::filesystem::path out = args.out ? std::filesystem::path(*args.out)
+                                             : std::filesystem::path("results") / scene.name / solver;
+  ensureWritableDirectory(out);  // fail before the solve, not after
+  const Problem problem = buildProblem(scene);
+
+  std::unique_ptr<ErrorReference> reference;
+  if (solver != "incremental" && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes)
+    reference = computeReference(problem, args.quiet);
+  const SolveResult result = runSolver(solver, problem, scene, reference.get(), args.quiet);
+  writeRunOutputs(out, problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
+
+  if (!args.quiet) {
+    const auto& s = result.summary;
+    std::cout << solver << ": " << toString(s.termination) << " — " << s.message << "\n"
+              << "  iterations " << s.iterations << ", indicator " << s.indicator;
+    if (s.error) std::cout << ", true error " << *s.error;
+    std::cout << ", " << s.wall_s << " s\n  results in " << out.string() << "/\n";
+  }
+  return result.summary.converged() ? 0 : 2;
+}
+
+}  // namespace stc::cli

@@ -1,0 +1,121 @@
+#include "src/io/run_writer.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+#include "src/contact/contact_state.hpp"
+#include "src/fem/elasticity.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/io/contact_tables.hpp"
+#include "src/io/json_writer.hpp"
+#include "src/io/vtu_writer.hpp"
+#include "src/solver/condensed_interface.hpp"
+
+namespace stc {
+namespace {
+
+std::vector<int> frameSteps(int steps, int stride) {
+  std::vector<int> frames;
+  for (int k = 0; k < steps; k += stride) frames.push_back(k);
+  if (frames.back() != steps - 1) frames.push_back(steps - 1);
+  return frames;
+}
+
+std::string frameName(int k) {
+  char name[32];
+  std::snprintf(name, sizeof name, "vtu/step_%05d.vtu", k);
+  return name;
+}
+
+// Nodal contact force (λ_n n + λ_t τ) and state code (−1: not a contact node, 0 open, 1 stick, 2 slip).
+void contactFields(const Problem& problem, const SolveResult& result, int k, Eigen::MatrixXd& force,
+                   Eigen::MatrixXd& state) {
+  const auto& c = problem.contact;
+  const auto& s = result.admissible();
+  force = Eigen::MatrixXd::Zero(2, problem.mesh.numNodes());
+  state = Eigen::MatrixXd::Constant(1, problem.mesh.numNodes(), -1.0);
+  const double force_scale = std::max(s.lambda.cwiseAbs().maxCoeff(), 1e-300);
+  const double length_scale = std::max(s.v.cwiseAbs().maxCoeff(), 1e-300);
+  for (int i = 0; i < c.size(); ++i) {
+    const int node = c.nodes[i];
+    const double ln = result.interface.lambda(2 * i, k), lt = result.interface.lambda(2 * i + 1, k);
+    force.col(node) = ln * c.normals.col(i) + lt * c.tangents.col(i);
+    const double slip = s.v(2 * i + 1, k) - (k > 0 ? s.v(2 * i + 1, k - 1) : 0.0);
+    state(0, node) = static_cast<double>(
+        classifyContact(s.lambda(2 * i, k), s.lambda(2 * i + 1, k), slip, c.friction, force_scale, length_scale));
+  }
+}
+
+}  // namespace
+
+std::string historyCsv(const SolveSummary& summary) {
+  std::ostringstream out;
+  out.precision(12);
+  out << "iteration,relaxations,indicator,error,rank,wall_s\n";
+  for (const auto& r : summary.history) {
+    out << r.iteration << ',' << r.relaxations << ',' << r.indicator << ',';
+    if (r.error) out << *r.error;
+    out << ',' << r.rank << ',' << r.wall_s << '\n';
+  }
+  return out.str();
+}
+
+std::string summaryJson(const Problem& problem, const SolveSummary& summary, const RunInfo& info) {
+  JsonObject json;
+  json.add("solver", summary.solver)
+      .add("termination", toString(summary.termination))
+      .add("message", summary.message)
+      .add("iterations", summary.iterations)
+      .add("relaxations", summary.relaxations)
+      .add("indicator", summary.indicator)
+      .add("error", summary.error)
+      .add("wall_s", summary.wall_s)
+      .add("n_dofs", problem.numDofs())
+      .add("n_contact_nodes", problem.contact.size())
+      .add("n_steps", problem.numSteps())
+      .add("version", info.version)
+      .add("parameters", RawJson{info.parameters_json});
+  return json.str() + "\n";
+}
+
+void writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
+                         int stride) {
+  ensureWritableDirectory(dir / "vtu");
+  const SpdFactor factor(problem.stiffness_free, "K_ff");
+  std::vector<std::pair<double, std::string>> frames;
+  for (int k : frameSteps(problem.numSteps(), stride)) {
+    const Eigen::VectorXd rhs = problem.load(k) + problem.contact.B.transpose() * result.interface.lambda.col(k);
+    const Eigen::VectorXd u = problem.fullDisplacement(factor.solve(rhs), k);
+    Eigen::MatrixXd force, state;
+    contactFields(problem, result, k, force, state);
+    const auto stress = elementStresses(problem.mesh, problem.material, problem.plane, u);
+    const Eigen::MatrixXd displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), 2, problem.mesh.numNodes());
+    AtomicFile file(dir / frameName(k));
+    writeVtu(file.stream(), problem.mesh,
+             {{"displacement", displacement}, {"contact_force", force}, {"contact_state", state}},
+             {{"stress", stress.topRows(3)}, {"von_mises", stress.bottomRows(1)}});
+    file.commit();
+    frames.emplace_back(problem.times[k], frameName(k));
+  }
+  writeFileAtomically(dir / "solution.pvd", pvdDocument(frames));
+}
+
+void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
+                     const RunInfo& info, const OutputSpec& output) {
+  ensureWritableDirectory(dir);
+  {
+    AtomicFile file(dir / "reactions.csv");
+    writeReactionsCsv(file.stream(), problem, result);
+    file.commit();
+  }
+  {
+    AtomicFile file(dir / "contact.csv");
+    writeContactCsv(file.stream(), problem, result);
+    file.commit();
+  }
+  writeFileAtomically(dir / "history.csv", historyCsv(result.summary));
+  if (output.vtu) writeSolutionSeries(dir, problem, result, output.vtu_stride);
+  writeFileAtomically(dir / "summary.json", summaryJson(problem, result.summary, info));  // last: marks a complete run
+}
+
+}  // namespace stc

@@ -1,0 +1,45 @@
+#pragma once
+// Reader for 2D meshes in Gmsh's MSH 4.1 ASCII format ("4.1 0 8"), the format written by
+// `Mesh.MshFileVersion = 4.1;` (Gmsh reference manual, §"MSH file format", version 4.1).
+//
+// What is read:
+//  - $MeshFormat: must be 4.1 ASCII; any other version or the binary form is an InputError.
+//  - $PhysicalNames: names of physical groups; a group without a name is named by its number.
+//  - $Entities: which physical groups each curve carries.
+//  - $Nodes: all nodes must lie in the plane z = 0 (|z| <= 1e-12 max(1, |x|, |y|)), else
+//    "not a 2D mesh". Parametric coordinates, when present, are skipped.
+//  - $Elements: 3-node triangles (type 2) become Mesh::triangles, in file order; 2-node lines
+//    (type 1) on a curve that carries physical groups become edges of a BoundaryGroup for each of
+//    that curve's group names; points (type 15) are ignored. Any other element type (quadrangles,
+//    second-order elements, 3D elements) is an InputError naming the type.
+//  Other sections ($Periodic, $NodeData, ...) are skipped. $Nodes must precede $Elements.
+//
+// Nodes: only the nodes used by some triangle are kept (an unused node would add a zero row to
+// the stiffness), renumbered 0..N-1 in the order of the file. A boundary edge that uses a node
+// no triangle uses is an InputError.
+//
+// Orientation: Gmsh writes the triangles of a plane surface with one orientation, that of the
+// surface's normal. If every triangle is clockwise (a surface whose normal is -z), all are
+// flipped to counter-clockwise. If only some are, nothing is flipped, so that Mesh::validate()
+// reports the first inverted element: a mixed orientation means a broken file, which no silent
+// repair should hide. Element numbers in such messages count the file's triangles from 0.
+//
+// Every error is an InputError whose message starts with the file name and, where it points at
+// a line, the line number: "part.msh: line 57: expected 3 numbers (x y z) for node 12, found 2",
+// "part.msh: truncated file (expected $EndNodes)". A file cut anywhere gives an InputError.
+#include <filesystem>
+#include <istream>
+#include <string>
+
+#include "src/mesh/mesh.hpp"
+
+namespace stc {
+
+/// Reads `file` (see the top of this header). A file that cannot be opened is an InputError
+/// "cannot open mesh file 'X'". The mesh is finalised (group nodes filled) and validated.
+Mesh readGmsh(const std::filesystem::path& file);
+
+/// Parses MSH 4.1 ASCII text from `in`; `source_name` prefixes every error message.
+Mesh parseGmsh(std::istream& in, const std::string& source_name);
+
+}  // namespace stc

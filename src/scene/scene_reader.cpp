@@ -1,0 +1,317 @@
+#include "src/scene/scene_reader.hpp"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <utility>
+
+#include "src/core/input_error.hpp"
+#include "src/scene/detail/scene_errors.hpp"
+#include "src/scene/detail/scene_overrides.hpp"
+#include "src/scene/detail/table_view.hpp"
+
+namespace stc {
+
+namespace {
+
+using detail::ErrorReporter;
+using detail::formatNumber;
+using detail::TableView;
+
+/// Reads a string key that must be one of `allowed`; returns it.
+std::string readKeyword(const TableView& table, std::string_view key,
+                        std::initializer_list<std::string_view> allowed) {
+  std::string text = table.requiredString(key);
+  std::string list;
+  for (const auto name : allowed) {
+    if (name == text) return text;
+    list += (list.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+  }
+  const std::string path = table.keyPath(key);
+  table.errors().fail(path, "key '" + path + "' = \"" + text + "\" is not one of " + list);
+}
+
+/// Reads a Component ("x" or "y").
+Component readComponent(const TableView& table) {
+  return readKeyword(table, "component", {"x", "y"}) == "x" ? Component::X : Component::Y;
+}
+
+/// Throws "key 'P' = V is out of range: must be RULE" unless `ok`.
+void requireRange(const TableView& table, std::string_view key, double value, bool ok,
+                  std::string_view rule) {
+  if (!ok) table.errors().outOfRange(table.keyPath(key), formatNumber(value), rule);
+}
+
+/// A nonempty string (boundary names, the scene name).
+std::string requiredName(const TableView& table, std::string_view key) {
+  std::string name = table.requiredString(key);
+  if (name.empty()) {
+    const std::string path = table.keyPath(key);
+    table.errors().fail(path, "key '" + path + "' must not be empty");
+  }
+  return name;
+}
+
+/// Two finite numbers [x, y].
+Eigen::Vector2d readVector2(const TableView& table, std::string_view key) {
+  const std::vector<double> xy = table.requiredNumbers(key);
+  if (xy.size() != 2) {
+    const std::string path = table.keyPath(key);
+    table.errors().fail(
+        path, "key '" + path + "' must have 2 entries [x, y], got " + std::to_string(xy.size()));
+  }
+  return {xy[0], xy[1]};
+}
+
+/// The scene name becomes a folder of the default output path, so it must be a plain name.
+std::string readName(const TableView& root) {
+  std::string name = requiredName(root, "name");
+  if (name.find_first_of("/\\") != std::string::npos || name == "." || name == "..") {
+    root.errors().fail("name", "key 'name' = \"" + name +
+                                   "\" must be a plain file name (no '/', '\\', '.' or '..')");
+  }
+  return name;
+}
+
+PlaneModel readModel(const TableView& root) {
+  const auto model = root.optionalTable("model", {"plane"});
+  if (!model) return PlaneModel::Strain;
+  if (!model->has("plane")) return PlaneModel::Strain;
+  return readKeyword(*model, "plane", {"strain", "stress"}) == "strain" ? PlaneModel::Strain
+                                                                        : PlaneModel::Stress;
+}
+
+void readHalfDisc(const TableView& mesh, MeshSpec& spec) {
+  spec.generator = readKeyword(mesh, "generator", {"half_disc"});
+  spec.radius = mesh.optionalNumber("radius").value_or(spec.radius);
+  requireRange(mesh, "radius", spec.radius, spec.radius > 0.0, "must be > 0");
+  spec.arc_nodes = mesh.optionalInt("arc_nodes").value_or(spec.arc_nodes);
+  requireRange(mesh, "arc_nodes", spec.arc_nodes, spec.arc_nodes >= 3, "must be >= 3");
+  spec.grading = mesh.optionalNumber("grading").value_or(spec.grading);
+  requireRange(mesh, "grading", spec.grading, spec.grading >= 1.0 && spec.grading <= 4.0,
+               "must be in [1, 4] (1 = uniform)");
+}
+
+MeshSpec readMesh(const TableView& root, const std::filesystem::path& source) {
+  const TableView mesh =
+      root.requiredTable("mesh", {"generator", "file", "radius", "arc_nodes", "grading"});
+  const ErrorReporter& errors = mesh.errors();
+  const bool hasGenerator = mesh.has("generator");
+  if (hasGenerator == mesh.has("file")) {
+    errors.fail("mesh", hasGenerator
+                            ? "keys 'mesh.generator' and 'mesh.file' exclude each other: give one"
+                            : "missing required key 'mesh.generator' or 'mesh.file' (give one)");
+  }
+  MeshSpec spec;
+  if (hasGenerator) {
+    readHalfDisc(mesh, spec);
+    return spec;
+  }
+  for (const std::string_view key : {"radius", "arc_nodes", "grading"}) {
+    if (mesh.has(key)) {
+      errors.fail(mesh.keyPath(key),
+                  "key '" + mesh.keyPath(key) +
+                      "' applies to generator = \"half_disc\", not to a mesh file");
+    }
+  }
+  const std::filesystem::path file = requiredName(mesh, "file");
+  spec.file = file.is_absolute() ? file : (source.parent_path() / file).lexically_normal();
+  return spec;
+}
+
+MaterialSpec readMaterial(const TableView& root) {
+  const TableView material = root.requiredTable("material", {"young", "poisson"});
+  MaterialSpec spec;
+  spec.young = material.requiredNumber("young");
+  requireRange(material, "young", spec.young, spec.young > 0.0, "must be > 0");
+  spec.poisson = material.requiredNumber("poisson");
+  requireRange(material, "poisson", spec.poisson, spec.poisson > -1.0 && spec.poisson < 0.5,
+               "must be in (-1, 0.5)");
+  return spec;
+}
+
+ObstacleSpec readObstacle(const TableView& root) {
+  const TableView obstacle = root.requiredTable("obstacle", {"type", "point", "normal"});
+  ObstacleSpec spec;
+  if (obstacle.has("type")) readKeyword(obstacle, "type", {"plane"});
+  spec.type = ObstacleType::Plane;
+  spec.point = readVector2(obstacle, "point");
+  const Eigen::Vector2d normal = readVector2(obstacle, "normal");
+  const double length = normal.norm();
+  if (!(length > 0.0) || !std::isfinite(length)) {
+    obstacle.errors().fail(obstacle.keyPath("normal"),
+                           "key 'obstacle.normal' = [" + formatNumber(normal.x()) + ", " +
+                               formatNumber(normal.y()) + "] must be a nonzero finite vector");
+  }
+  spec.normal = normal / length;
+  return spec;
+}
+
+ContactSpec readContact(const TableView& root) {
+  const TableView contact = root.requiredTable("contact", {"boundary", "friction", "length_scale"});
+  ContactSpec spec;
+  spec.boundary = requiredName(contact, "boundary");
+  spec.friction = contact.requiredNumber("friction");
+  requireRange(contact, "friction", spec.friction, spec.friction >= 0.0, "must be >= 0");
+  spec.length_scale = contact.optionalNumber("length_scale");
+  if (spec.length_scale) {
+    requireRange(contact, "length_scale", *spec.length_scale, *spec.length_scale > 0.0,
+                 "must be > 0");
+  }
+  return spec;
+}
+
+TimeSpec readTime(const TableView& root) {
+  const TableView time = root.requiredTable("time", {"steps", "end"});
+  TimeSpec spec;
+  spec.steps = time.requiredInt("steps");
+  requireRange(time, "steps", spec.steps, spec.steps >= 2, "must be >= 2");
+  spec.end = time.optionalNumber("end").value_or(spec.end);
+  requireRange(time, "end", spec.end, spec.end > 0.0, "must be > 0");
+  return spec;
+}
+
+/// `times` strictly increasing (one entry = a constant), `values` of the same length.
+History readHistory(const TableView& entry) {
+  History history{entry.requiredNumbers("times"), entry.requiredNumbers("values")};
+  const ErrorReporter& errors = entry.errors();
+  const std::string times = entry.keyPath("times");
+  if (history.times.empty()) errors.fail(times, "key '" + times + "' must not be empty");
+  for (std::size_t i = 1; i < history.times.size(); ++i) {
+    if (!(history.times[i] > history.times[i - 1])) {
+      errors.fail(times, "key '" + times + "' must be strictly increasing, but entry " +
+                             std::to_string(i) + " = " + formatNumber(history.times[i]) +
+                             " follows " + formatNumber(history.times[i - 1]));
+    }
+  }
+  if (history.values.size() != history.times.size()) {
+    const std::string values = entry.keyPath("values");
+    errors.fail(values, "key '" + values + "' has " + std::to_string(history.values.size()) +
+                            " entries but '" + times + "' has " +
+                            std::to_string(history.times.size()) + ": they must match");
+  }
+  return history;
+}
+
+/// [[dirichlet]] and [[load]]: an array of tables {boundary, component, times, values}.
+template <class Spec>
+std::vector<Spec> readHistories(const TableView& root, std::string_view key) {
+  std::vector<Spec> specs;
+  const toml::node* node = root.find(key);
+  if (node == nullptr) return specs;
+  const std::string path = root.keyPath(key);
+  const auto* array = node->as_array();
+  if (array == nullptr) {
+    root.errors().wrongType(path, "an array of tables ([[" + path + "]])", *node);
+  }
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const std::string entryPath = detail::indexPath(path, i);
+    const TableView entry(detail::asTable(*array->get(i), entryPath, root.errors()), entryPath,
+                          root.errors(), {"boundary", "component", "times", "values"});
+    Spec spec;
+    spec.boundary = requiredName(entry, "boundary");
+    spec.component = readComponent(entry);
+    spec.history = readHistory(entry);
+    specs.push_back(std::move(spec));
+  }
+  return specs;
+}
+
+SolverSpec readSolver(const TableView& root) {
+  SolverSpec spec;
+  const auto solver = root.optionalTable(
+      "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation"});
+  if (!solver) return spec;
+  if (solver->has("name")) {
+    spec.name = readKeyword(
+        *solver, "name", {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori", "incremental"});
+  }
+  spec.tolerance = solver->optionalNumber("tolerance").value_or(spec.tolerance);
+  requireRange(*solver, "tolerance", spec.tolerance, spec.tolerance > 0.0, "must be > 0");
+  spec.max_iterations = solver->optionalInt("max_iterations").value_or(spec.max_iterations);
+  requireRange(*solver, "max_iterations", spec.max_iterations, spec.max_iterations >= 1,
+               "must be >= 1");
+  spec.search_scale = solver->optionalNumber("search_scale").value_or(spec.search_scale);
+  requireRange(*solver, "search_scale", spec.search_scale, spec.search_scale > 0.0, "must be > 0");
+  spec.relaxation = solver->optionalNumber("relaxation").value_or(spec.relaxation);
+  requireRange(*solver, "relaxation", spec.relaxation,
+               spec.relaxation > 0.0 && spec.relaxation <= 1.0, "must be in (0, 1]");
+  return spec;
+}
+
+OutputSpec readOutput(const TableView& root) {
+  OutputSpec spec;
+  const auto output = root.optionalTable("output", {"vtu", "vtu_stride"});
+  if (!output) return spec;
+  spec.vtu = output->optionalBool("vtu").value_or(spec.vtu);
+  spec.vtu_stride = output->optionalInt("vtu_stride").value_or(spec.vtu_stride);
+  requireRange(*output, "vtu_stride", spec.vtu_stride, spec.vtu_stride >= 1, "must be >= 1");
+  return spec;
+}
+
+/// Parses TOML; a syntax error becomes "FILE:LINE:COLUMN: TOML syntax error: ..." on one line.
+toml::table parseToml(const std::string& text, const ErrorReporter& errors) {
+  try {
+    return toml::parse(std::string_view(text), std::string_view(errors.file()));
+  } catch (const toml::parse_error& error) {
+    const auto& begin = error.source().begin;
+    errors.failAt(begin.line, begin.column,
+                  "TOML syntax error: " + std::string(error.description()));
+  }
+}
+
+/// The table as JSON (toml++'s formatter; every number is finite once validated).
+std::string toJson(const toml::table& table) {
+  std::ostringstream json;
+  json << toml::json_formatter{table};
+  return json.str();
+}
+
+Scene readTable(const toml::table& table, const std::filesystem::path& source,
+                const ErrorReporter& errors) {
+  const TableView root(table, "", errors,
+                       {"name", "model", "mesh", "material", "obstacle", "contact", "time",
+                        "dirichlet", "load", "solver", "output"});
+  Scene scene;
+  scene.source = source;
+  scene.name = readName(root);
+  scene.plane = readModel(root);
+  scene.mesh = readMesh(root, source);
+  scene.material = readMaterial(root);
+  scene.obstacle = readObstacle(root);
+  scene.contact = readContact(root);
+  scene.time = readTime(root);
+  scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet");
+  scene.loads = readHistories<LoadSpec>(root, "load");
+  scene.solver = readSolver(root);
+  scene.output = readOutput(root);
+  scene.parameters_json = toJson(table);
+  return scene;
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::filesystem::path& source,
+                 const std::vector<std::string>& overrides) {
+  ErrorReporter errors(source.string());
+  toml::table table = parseToml(text, errors);
+  detail::applyOverrides(table, overrides, errors);
+  return readTable(table, source, errors);
+}
+
+Scene readScene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  const ErrorReporter errors(file.string());
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) errors.failFile("is a folder, not a scene file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) errors.failFile("cannot open the scene file (missing or unreadable)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) errors.failFile("cannot read the scene file");
+  return parseScene(text.str(), file, overrides);
+}
+
+}  // namespace stc

@@ -1,0 +1,35 @@
+#pragma once
+// The true error of METHOD.md §2, measured against a reference solution on the same mesh and grid:
+//   e² = Σ_k (u_k − u_ref,k)ᵀ K (u_k − u_ref,k) / Σ_k u_ref,kᵀ K u_ref,k
+// with full displacements and the full stiffness. Any iterate that satisfies equilibrium
+// K_ff u = f + Bᵀ λ (every LATIN global-stage result does) has u − u_ref = K_ff⁻¹ Bᵀ (λ − λ_ref) on the
+// free dofs and zero on the prescribed ones, so the numerator is Σ_k δλ_kᵀ W δλ_k with the Delassus
+// operator W = B K_ff⁻¹ Bᵀ: the error is measured on the interface alone.
+#include <Eigen/Core>
+
+#include "src/solver/condensed_interface.hpp"
+
+namespace stc {
+
+class ErrorReference {
+ public:
+  /// `lambda_ref` (2n_C × m): the reference contact forces, e.g. from solveIncremental.
+  ErrorReference(const Problem& problem, const SpdFactor& stiffness_free, Eigen::MatrixXd delassus,
+                 Eigen::MatrixXd lambda_ref);
+
+  /// Relative energy error of an equilibrated iterate given by its contact forces.
+  double relativeError(const Eigen::MatrixXd& lambda) const;
+  /// Σ_k u_ref,kᵀ K u_ref,k (full field, full K).
+  double referenceEnergy() const { return reference_energy_; }
+  const Eigen::MatrixXd& referenceForces() const { return lambda_ref_; }
+
+ private:
+  Eigen::MatrixXd delassus_;
+  Eigen::MatrixXd lambda_ref_;
+  double reference_energy_ = 0.0;
+};
+
+/// Σ_k u_kᵀ K u_k for full displacements rebuilt from free ones (n_free × m).
+double spaceTimeEnergy(const Problem& problem, const Eigen::MatrixXd& u_free);
+
+}  // namespace stc

@@ -1,0 +1,72 @@
+#include "src/solver/iteration_monitor.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace stc {
+
+IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const ErrorReference* reference,
+                                   IterationCallback callback)
+    : rule_(rule), reference_(reference), callback_(std::move(callback)), start_(std::chrono::steady_clock::now()) {
+  summary_.solver = std::move(solver);
+}
+
+double IterationMonitor::elapsed() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+bool IterationMonitor::record(int relaxations, double indicator, const Eigen::MatrixXd& lambda, int rank,
+                              long sparse_solves) {
+  IterationRecord r;
+  r.iteration = static_cast<int>(summary_.history.size()) + 1;
+  r.relaxations = relaxations;
+  r.indicator = indicator;
+  if (reference_) r.error = reference_->relativeError(lambda);
+  r.rank = rank;
+  r.sparse_solves = static_cast<int>(sparse_solves);
+  r.wall_s = elapsed();
+  summary_.history.push_back(r);
+  if (!std::isfinite(indicator) || !lambda.allFinite())
+    return stop(Termination::NumericalIssue, "NaN or Inf in the iterate at iteration " + std::to_string(r.iteration));
+  if (indicator <= rule_.tolerance) {
+    std::ostringstream msg;
+    msg << "indicator " << indicator << " <= tolerance " << rule_.tolerance << " after " << r.iteration << " iterations";
+    return stop(Termination::Converged, msg.str());
+  }
+  if (r.iteration == 1 || indicator < 0.99 * best_indicator_) {
+    best_indicator_ = indicator;
+    best_iteration_ = r.iteration;
+  } else if (rule_.stagnation_window > 0 && r.iteration - best_iteration_ >= rule_.stagnation_window) {
+    std::ostringstream msg;
+    msg << "stagnated: indicator has not decreased by 1% in " << rule_.stagnation_window << " iterations (best "
+        << best_indicator_ << ")";
+    return stop(Termination::Stagnated, msg.str());
+  }
+  if (callback_ && !callback_(r)) return stop(Termination::StoppedByCallback, "stopped by the callback");
+  if (r.iteration >= rule_.max_iterations) {
+    std::ostringstream msg;
+    msg << "iteration limit " << rule_.max_iterations << " reached with indicator " << indicator;
+    return stop(Termination::MaxIterations, msg.str());
+  }
+  return false;
+}
+
+bool IterationMonitor::stop(Termination termination, std::string message) {
+  summary_.termination = termination;
+  summary_.message = std::move(message);
+  return true;
+}
+
+SolveSummary IterationMonitor::finish() {
+  summary_.iterations = static_cast<int>(summary_.history.size());
+  if (!summary_.history.empty()) {
+    const auto& last = summary_.history.back();
+    summary_.relaxations = last.relaxations;
+    summary_.indicator = last.indicator;
+    summary_.error = last.error;
+  }
+  summary_.wall_s = elapsed();
+  return summary_;
+}
+
+}  // namespace stc

@@ -1,0 +1,425 @@
+// Scene reader: the seed scene reads with every value, and every rule broken gives one InputError
+// whose one-line message starts with the scene file and names the key by its dotted path.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "src/core/input_error.hpp"
+#include "src/scene/scene_reader.hpp"
+
+namespace stc {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+// The seed scene of INTERFACE.md "Scene file", verbatim.
+const std::string kSeed = R"(name = "hemicylinder"
+[model]
+plane = "strain"
+[mesh]
+generator = "half_disc"
+radius = 1.0
+arc_nodes = 101
+[material]
+young = 3000.0
+poisson = 0.3
+[obstacle]
+type = "plane"
+point = [0.0, -1.01]
+normal = [0.0, 1.0]
+[contact]
+boundary = "arc"
+friction = 0.15
+[time]
+steps = 201
+[[dirichlet]]
+boundary = "top"
+component = "x"
+times  = [0.0, 0.2, 1.0]
+values = [0.0, 0.0, 0.05]
+[[dirichlet]]
+boundary = "top"
+component = "y"
+times  = [0.0, 0.2, 1.0]
+values = [0.0, -0.01, -0.11]
+[solver]
+name = "fas-apriori"
+tolerance = 1e-6
+)";
+
+const std::filesystem::path kSource = "hemicylinder.toml";
+
+/// The seed with the first occurrence of `from` replaced by `to`.
+std::string seedWith(const std::string& from, const std::string& to) {
+  std::string text = kSeed;
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "the seed has no '" << from << "'";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// The message of the InputError that parsing throws; checks that it is one line and starts
+/// with the file name.
+std::string errorOf(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    parseScene(text, kSource, overrides);
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_THAT(message, StartsWith("hemicylinder.toml"));
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    return message;
+  }
+  ADD_FAILURE() << "no InputError";
+  return {};
+}
+
+TEST(SceneReader, ExampleSeedSceneHasEveryValueOfInterfaceMd) {
+  const auto file = std::filesystem::path(STC_SOURCE_DIR) / "examples/scenes/hemicylinder.toml";
+  const Scene s = readScene(file);
+  EXPECT_EQ(s.name, "hemicylinder");
+  EXPECT_EQ(s.source, file);
+  EXPECT_EQ(s.plane, PlaneModel::Strain);
+  EXPECT_EQ(s.mesh.generator, "half_disc");
+  EXPECT_TRUE(s.mesh.file.empty());
+  EXPECT_EQ(s.mesh.radius, 1.0);
+  EXPECT_EQ(s.mesh.arc_nodes, 101);
+  EXPECT_EQ(s.mesh.grading, MeshSpec{}.grading);
+  EXPECT_EQ(s.material.young, 3000.0);
+  EXPECT_EQ(s.material.poisson, 0.3);
+  EXPECT_EQ(s.obstacle.type, ObstacleType::Plane);
+  EXPECT_EQ(s.obstacle.point, Eigen::Vector2d(0.0, -1.01));
+  EXPECT_EQ(s.obstacle.normal, Eigen::Vector2d(0.0, 1.0));
+  EXPECT_EQ(s.contact.boundary, "arc");
+  EXPECT_EQ(s.contact.friction, 0.15);
+  EXPECT_FALSE(s.contact.length_scale.has_value());
+  EXPECT_EQ(s.time.steps, 201);
+  EXPECT_EQ(s.time.end, 1.0);
+  ASSERT_EQ(s.dirichlet.size(), 2u);
+  EXPECT_EQ(s.dirichlet[0].boundary, "top");
+  EXPECT_EQ(s.dirichlet[0].component, Component::X);
+  EXPECT_EQ(s.dirichlet[0].history.times, (std::vector<double>{0.0, 0.2, 1.0}));
+  EXPECT_EQ(s.dirichlet[0].history.values, (std::vector<double>{0.0, 0.0, 0.05}));
+  EXPECT_EQ(s.dirichlet[1].boundary, "top");
+  EXPECT_EQ(s.dirichlet[1].component, Component::Y);
+  EXPECT_EQ(s.dirichlet[1].history.times, (std::vector<double>{0.0, 0.2, 1.0}));
+  EXPECT_EQ(s.dirichlet[1].history.values, (std::vector<double>{0.0, -0.01, -0.11}));
+  EXPECT_TRUE(s.loads.empty());
+  EXPECT_EQ(s.solver.name, "fas-apriori");
+  EXPECT_EQ(s.solver.tolerance, 1e-6);
+  EXPECT_EQ(s.solver.max_iterations, 2000);
+  EXPECT_EQ(s.solver.search_scale, 1.0);
+  EXPECT_EQ(s.solver.relaxation, 1.0);
+  EXPECT_TRUE(s.output.vtu);
+  EXPECT_EQ(s.output.vtu_stride, 1);
+}
+
+TEST(SceneReader, ExampleSeedSceneEqualsTheSeedOfInterfaceMd) {
+  const auto file = std::filesystem::path(STC_SOURCE_DIR) / "examples/scenes/hemicylinder.toml";
+  EXPECT_EQ(readScene(file).parameters_json, parseScene(kSeed, kSource).parameters_json);
+}
+
+/// The seed with every optional key given a non-default value.
+std::string seedWithEveryOptionalKey() {
+  std::string text = seedWith("plane = \"strain\"", "plane = \"stress\"");
+  text.replace(text.find("arc_nodes = 101"), 15, "arc_nodes = 11\ngrading = 1.5");
+  text.replace(text.find("friction = 0.15"), 15, "friction = 0.15\nlength_scale = 2");
+  text.replace(text.find("steps = 201"), 11, "steps = 3\nend = 2.5");
+  text.replace(text.find("tolerance = 1e-6"), 16, R"(tolerance = 1e-8
+max_iterations = 50
+search_scale = 2
+relaxation = 0.5
+[output]
+vtu = false
+vtu_stride = 5
+[[load]]
+boundary = "top"
+component = "y"
+times = [0.5]
+values = [-2.0])");
+  return text;
+}
+
+TEST(SceneReader, OptionalKeysOverrideTheirDefaults) {
+  const Scene s = parseScene(seedWithEveryOptionalKey(), kSource);
+  EXPECT_EQ(s.plane, PlaneModel::Stress);
+  EXPECT_EQ(s.mesh.arc_nodes, 11);
+  EXPECT_EQ(s.mesh.grading, 1.5);
+  EXPECT_EQ(s.contact.length_scale, 2.0);
+  EXPECT_EQ(s.time.steps, 3);
+  EXPECT_EQ(s.time.end, 2.5);
+  EXPECT_EQ(s.solver.tolerance, 1e-8);
+  EXPECT_EQ(s.solver.max_iterations, 50);
+  EXPECT_EQ(s.solver.search_scale, 2.0);
+  EXPECT_EQ(s.solver.relaxation, 0.5);
+  EXPECT_FALSE(s.output.vtu);
+  EXPECT_EQ(s.output.vtu_stride, 5);
+  ASSERT_EQ(s.loads.size(), 1u);
+  EXPECT_EQ(s.loads[0].boundary, "top");
+  EXPECT_EQ(s.loads[0].component, Component::Y);
+  EXPECT_EQ(s.loads[0].history.times, std::vector<double>{0.5});
+  EXPECT_EQ(s.loads[0].history.values, std::vector<double>{-2.0});
+}
+
+TEST(SceneReader, OmittedOptionalSectionsTakeDefaults) {
+  std::string text = seedWith("[model]\nplane = \"strain\"\n", "");
+  text = text.substr(0, text.find("[solver]"));
+  const Scene s = parseScene(text, kSource);
+  EXPECT_EQ(s.plane, PlaneModel::Strain);
+  EXPECT_EQ(s.solver.name, "fas-apriori");
+  EXPECT_EQ(s.solver.tolerance, 1e-6);
+  EXPECT_TRUE(s.output.vtu);
+}
+
+TEST(SceneReader, IntegerIsAcceptedWhereAFloatIsExpected) {
+  const Scene s = parseScene(seedWith("young = 3000.0", "young = 3000"), kSource);
+  EXPECT_EQ(s.material.young, 3000.0);
+}
+
+TEST(SceneReader, ObstacleNormalIsNormalised) {
+  const Scene s = parseScene(seedWith("normal = [0.0, 1.0]", "normal = [3, 4]"), kSource);
+  EXPECT_NEAR(s.obstacle.normal.x(), 0.6, 1e-15);
+  EXPECT_NEAR(s.obstacle.normal.y(), 0.8, 1e-15);
+}
+
+TEST(SceneReader, HistoryWithOneInstantIsAccepted) {
+  const Scene s = parseScene(
+      seedWith("times  = [0.0, 0.2, 1.0]\nvalues = [0.0, 0.0, 0.05]", "times = [0]\nvalues = [0]"),
+      kSource);
+  EXPECT_EQ(s.dirichlet[0].history.times.size(), 1u);
+}
+
+TEST(SceneReader, RelativeMeshFileIsResolvedAgainstTheSceneFolder) {
+  const std::string text = seedWith("generator = \"half_disc\"\nradius = 1.0\narc_nodes = 101",
+                                    "file = \"../meshes/part.msh\"");
+  const Scene s = parseScene(text, "/data/study/scenes/cut.toml");
+  EXPECT_TRUE(s.mesh.generator.empty());
+  EXPECT_EQ(s.mesh.file, std::filesystem::path("/data/study/meshes/part.msh"));
+  const Scene t = parseScene(text, "cut.toml");
+  EXPECT_EQ(t.mesh.file, std::filesystem::path("../meshes/part.msh"));
+}
+
+TEST(SceneReader, AbsoluteMeshFileIsKept) {
+  const Scene s = parseScene(seedWith("generator = \"half_disc\"\nradius = 1.0\narc_nodes = 101",
+                                      "file = \"/meshes/part.msh\""),
+                             "/data/cut.toml");
+  EXPECT_EQ(s.mesh.file, std::filesystem::path("/meshes/part.msh"));
+}
+
+TEST(SceneReader, ParametersJsonIsTheTableAsAJsonObject) {
+  const std::string json = parseScene(kSeed, kSource).parameters_json;
+  ASSERT_FALSE(json.empty());
+  EXPECT_EQ(json.front(), '{');
+  EXPECT_EQ(json.back(), '}');
+  EXPECT_THAT(json, HasSubstr("\"name\" : \"hemicylinder\""));
+  EXPECT_THAT(json, HasSubstr("\"young\" : 3000.0"));
+  EXPECT_THAT(json, HasSubstr("\"steps\" : 201"));
+  EXPECT_THAT(json, HasSubstr("\"dirichlet\" : ["));
+}
+
+TEST(SceneReader, MissingFileIsAnInputErrorNamingIt) {
+  try {
+    readScene("/nonexistent/folder/gone.toml");
+    FAIL() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), StartsWith("/nonexistent/folder/gone.toml: cannot open"));
+  }
+}
+
+// --- Errors: every message names the key by its dotted path and the rule. ---
+
+TEST(SceneReaderErrors, UnknownTopLevelKeyIsNamed) {
+  EXPECT_THAT(errorOf("colour = \"red\"\n" + kSeed),
+              StartsWith("hemicylinder.toml: unknown key 'colour'"));
+}
+
+TEST(SceneReaderErrors, UnknownKeyInASectionIsNamedWithItsSection) {
+  EXPECT_THAT(errorOf(seedWith("young = 3000.0", "youngs = 3000.0")),
+              StartsWith("hemicylinder.toml: unknown key 'material.youngs'"));
+}
+
+TEST(SceneReaderErrors, UnknownKeyInSolverIsAnError) {
+  EXPECT_THAT(errorOf(kSeed + "coarse_rank = 4\n"),
+              StartsWith("hemicylinder.toml: unknown key 'solver.coarse_rank'"));
+}
+
+TEST(SceneReaderErrors, UnknownKeyInADirichletEntryIsNamedWithItsIndex) {
+  EXPECT_THAT(errorOf(seedWith("component = \"y\"", "component = \"y\"\nscale = 2")),
+              StartsWith("hemicylinder.toml: unknown key 'dirichlet[1].scale'"));
+}
+
+TEST(SceneReaderErrors, StringWhereAnIntegerIsExpectedIsATypeError) {
+  EXPECT_EQ(errorOf(seedWith("steps = 201", "steps = \"201\"")),
+            "hemicylinder.toml: key 'time.steps' must be an integer, got a string");
+}
+
+TEST(SceneReaderErrors, FloatWhereAnIntegerIsExpectedIsATypeError) {
+  EXPECT_EQ(errorOf(seedWith("steps = 201", "steps = 201.0")),
+            "hemicylinder.toml: key 'time.steps' must be an integer, got a float");
+}
+
+TEST(SceneReaderErrors, StringWhereANumberIsExpectedIsATypeError) {
+  EXPECT_EQ(errorOf(seedWith("friction = 0.15", "friction = \"0.15\"")),
+            "hemicylinder.toml: key 'contact.friction' must be a number, got a string");
+}
+
+TEST(SceneReaderErrors, SectionThatIsNotATableIsATypeError) {
+  EXPECT_EQ(errorOf("model = 3\n" + seedWith("[model]\nplane = \"strain\"\n", "")),
+            "hemicylinder.toml: key 'model' must be a table, got an integer");
+}
+
+TEST(SceneReaderErrors, DirichletAsASingleTableIsATypeError) {
+  std::string text = kSeed.substr(0, kSeed.find("[[dirichlet]]"));
+  text += "[dirichlet]\nboundary = \"top\"\n";
+  EXPECT_THAT(errorOf(text), StartsWith("hemicylinder.toml: key 'dirichlet' must be an array of "
+                                        "tables ([[dirichlet]]), got a table"));
+}
+
+TEST(SceneReaderErrors, MissingRequiredKeyIsNamed) {
+  EXPECT_EQ(errorOf(seedWith("friction = 0.15\n", "")),
+            "hemicylinder.toml: missing required key 'contact.friction'");
+  EXPECT_EQ(errorOf(seedWith("name = \"hemicylinder\"\n", "")),
+            "hemicylinder.toml: missing required key 'name'");
+}
+
+TEST(SceneReaderErrors, MissingRequiredSectionIsNamed) {
+  EXPECT_EQ(errorOf(seedWith("[material]\nyoung = 3000.0\npoisson = 0.3\n", "")),
+            "hemicylinder.toml: missing required key 'material'");
+}
+
+TEST(SceneReaderErrors, PoissonRatioOfOneHalfIsOutOfRange) {
+  EXPECT_EQ(
+      errorOf(seedWith("poisson = 0.3", "poisson = 0.5")),
+      "hemicylinder.toml: key 'material.poisson' = 0.5 is out of range: must be in (-1, 0.5)");
+}
+
+TEST(SceneReaderErrors, PoissonRatioOfMinusOneIsOutOfRange) {
+  EXPECT_EQ(errorOf(seedWith("poisson = 0.3", "poisson = -1")),
+            "hemicylinder.toml: key 'material.poisson' = -1 is out of range: must be in (-1, 0.5)");
+}
+
+TEST(SceneReaderErrors, NonPositiveYoungModulusIsOutOfRange) {
+  EXPECT_EQ(errorOf(seedWith("young = 3000.0", "young = 0.0")),
+            "hemicylinder.toml: key 'material.young' = 0 is out of range: must be > 0");
+  EXPECT_THAT(errorOf(seedWith("young = 3000.0", "young = -5")),
+              StartsWith("hemicylinder.toml: key 'material.young' = -5 is out of range"));
+}
+
+TEST(SceneReaderErrors, NegativeFrictionIsOutOfRange) {
+  EXPECT_EQ(errorOf(seedWith("friction = 0.15", "friction = -0.1")),
+            "hemicylinder.toml: key 'contact.friction' = -0.1 is out of range: must be >= 0");
+}
+
+TEST(SceneReaderErrors, SingleTimeStepIsOutOfRange) {
+  EXPECT_EQ(errorOf(seedWith("steps = 201", "steps = 1")),
+            "hemicylinder.toml: key 'time.steps' = 1 is out of range: must be >= 2");
+}
+
+TEST(SceneReaderErrors, OtherRangesAreChecked) {
+  EXPECT_THAT(errorOf(seedWith("radius = 1.0", "radius = 0")), HasSubstr("'mesh.radius' = 0"));
+  EXPECT_THAT(errorOf(seedWith("arc_nodes = 101", "arc_nodes = 101\ngrading = 0.9")),
+              HasSubstr("'mesh.grading' = 0.9"));
+  EXPECT_THAT(errorOf(seedWith("arc_nodes = 101", "arc_nodes = 2")),
+              HasSubstr("'mesh.arc_nodes' = 2"));
+  EXPECT_THAT(errorOf(seedWith("steps = 201", "steps = 201\nend = 0")),
+              HasSubstr("'time.end' = 0"));
+  EXPECT_THAT(errorOf(kSeed + "relaxation = 1.5\n"), HasSubstr("'solver.relaxation' = 1.5"));
+  EXPECT_THAT(errorOf(kSeed + "max_iterations = 0\n"), HasSubstr("'solver.max_iterations' = 0"));
+  EXPECT_THAT(errorOf(seedWith("tolerance = 1e-6", "tolerance = 0")),
+              HasSubstr("'solver.tolerance' = 0"));
+  EXPECT_THAT(errorOf(kSeed + "[output]\nvtu_stride = 0\n"), HasSubstr("'output.vtu_stride' = 0"));
+  EXPECT_THAT(errorOf(seedWith("friction = 0.15", "friction = 0.15\nlength_scale = -1")),
+              HasSubstr("'contact.length_scale' = -1"));
+}
+
+TEST(SceneReaderErrors, TimesNotStrictlyIncreasingAreNamed) {
+  const std::string text = seedWith("times  = [0.0, 0.2, 1.0]\nvalues = [0.0, -0.01",
+                                    "times  = [0.0, 0.2, 0.2]\nvalues = [0.0, -0.01");
+  EXPECT_THAT(
+      errorOf(text),
+      StartsWith("hemicylinder.toml: key 'dirichlet[1].times' must be strictly increasing"));
+}
+
+TEST(SceneReaderErrors, TimesAndValuesOfDifferentLengthsAreNamed) {
+  EXPECT_THAT(errorOf(seedWith("values = [0.0, -0.01, -0.11]", "values = [0.0, -0.01]")),
+              StartsWith("hemicylinder.toml: key 'dirichlet[1].values' has 2 entries but "
+                         "'dirichlet[1].times' has 3"));
+}
+
+TEST(SceneReaderErrors, NanLiteralIsRejectedNamingTheKey) {
+  EXPECT_EQ(errorOf(seedWith("young = 3000.0", "young = nan")),
+            "hemicylinder.toml: key 'material.young' = nan is not a finite number");
+}
+
+TEST(SceneReaderErrors, InfinityIsRejectedNamingTheKeyAndEntry) {
+  EXPECT_EQ(errorOf(seedWith("friction = 0.15", "friction = inf")),
+            "hemicylinder.toml: key 'contact.friction' = inf is not a finite number");
+  EXPECT_EQ(errorOf(seedWith("point = [0.0, -1.01]", "point = [0.0, -inf]")),
+            "hemicylinder.toml: key 'obstacle.point[1]' = -inf is not a finite number");
+}
+
+TEST(SceneReaderErrors, UnknownSolverNameIsRejected) {
+  EXPECT_THAT(errorOf(seedWith("name = \"fas-apriori\"", "name = \"fas\"")),
+              StartsWith("hemicylinder.toml: key 'solver.name' = \"fas\" is not one of \"latin\", "
+                         "\"latin-pgd\", \"fas-aposteriori\", \"fas-apriori\", \"incremental\""));
+}
+
+TEST(SceneReaderErrors, UnknownKeywordsAreRejected) {
+  EXPECT_THAT(errorOf(seedWith("plane = \"strain\"", "plane = \"plain\"")),
+              HasSubstr("key 'model.plane' = \"plain\" is not one of"));
+  EXPECT_THAT(errorOf(seedWith("component = \"x\"", "component = \"z\"")),
+              HasSubstr("key 'dirichlet[0].component' = \"z\" is not one of"));
+  EXPECT_THAT(errorOf(seedWith("type = \"plane\"", "type = \"disc\"")),
+              HasSubstr("key 'obstacle.type' = \"disc\" is not one of"));
+  EXPECT_THAT(errorOf(seedWith("generator = \"half_disc\"", "generator = \"disc\"")),
+              HasSubstr("key 'mesh.generator' = \"disc\" is not one of"));
+}
+
+TEST(SceneReaderErrors, GeneratorAndFileTogetherAreRejected) {
+  EXPECT_THAT(errorOf(seedWith("radius = 1.0", "file = \"part.msh\"\nradius = 1.0")),
+              StartsWith("hemicylinder.toml: keys 'mesh.generator' and 'mesh.file' exclude"));
+}
+
+TEST(SceneReaderErrors, NeitherGeneratorNorFileIsRejected) {
+  EXPECT_EQ(errorOf(seedWith("generator = \"half_disc\"\n", "")),
+            "hemicylinder.toml: missing required key 'mesh.generator' or 'mesh.file' (give one)");
+}
+
+TEST(SceneReaderErrors, GeneratorKeysWithAMeshFileAreRejected) {
+  EXPECT_THAT(errorOf(seedWith("generator = \"half_disc\"", "file = \"part.msh\"")),
+              StartsWith("hemicylinder.toml: key 'mesh.radius' applies to generator"));
+}
+
+TEST(SceneReaderErrors, ZeroNormalIsRejected) {
+  EXPECT_THAT(errorOf(seedWith("normal = [0.0, 1.0]", "normal = [0, 0]")),
+              StartsWith("hemicylinder.toml: key 'obstacle.normal' = [0, 0] must be a nonzero"));
+}
+
+TEST(SceneReaderErrors, PointWithThreeEntriesIsRejected) {
+  EXPECT_EQ(errorOf(seedWith("point = [0.0, -1.01]", "point = [0.0, -1.01, 0.0]")),
+            "hemicylinder.toml: key 'obstacle.point' must have 2 entries [x, y], got 3");
+}
+
+TEST(SceneReaderErrors, EmptyBoundaryNameIsRejected) {
+  EXPECT_EQ(errorOf(seedWith("boundary = \"arc\"", "boundary = \"\"")),
+            "hemicylinder.toml: key 'contact.boundary' must not be empty");
+}
+
+TEST(SceneReaderErrors, SceneNameWithAPathSeparatorIsRejected) {
+  EXPECT_THAT(errorOf(seedWith("name = \"hemicylinder\"", "name = \"a/b\"")),
+              StartsWith("hemicylinder.toml: key 'name' = \"a/b\" must be a plain file name"));
+}
+
+TEST(SceneReaderErrors, MalformedTomlGivesOneLineMessageWithLineAndColumn) {
+  const std::string message = errorOf(seedWith("poisson = 0.3", "poisson = = 0.3"));
+  EXPECT_THAT(message, StartsWith("hemicylinder.toml:10:"));
+  EXPECT_THAT(message, HasSubstr("TOML syntax error: "));
+  const std::string unclosed = errorOf(seedWith("point = [0.0, -1.01]", "point = [0.0, -1.01"));
+  EXPECT_THAT(unclosed, StartsWith("hemicylinder.toml:1"));
+}
+
+}  // namespace
+}  // namespace stc
