@@ -56,8 +56,8 @@ ContactInterface buildContactInterface(const Mesh& mesh, const std::string& boun
     c.initial_gap[i] = obstacleGap(obstacle, x);
     if (c.initial_gap[i] < 0.0) {
       std::ostringstream msg;
-      msg << "contact " << describeNode(mesh, c.nodes[i]) << " starts inside the obstacle (gap "
-          << c.initial_gap[i] << ")";
+      msg << "contact " << describeNode(mesh, c.nodes[i]) << " starts inside the obstacle (initial gap "
+          << c.initial_gap[i] << " < 0; check obstacle.point and obstacle.normal)";
       throw InputError(msg.str());
     }
     for (int d = 0; d < 2; ++d) {

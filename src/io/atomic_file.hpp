@@ -38,6 +38,7 @@ class AtomicFile {
   /// twice, or after a failed commit.
   void commit();
 
+  /// The target and the temporary (both undefined on a moved-from AtomicFile).
   const std::filesystem::path& path() const;
   const std::filesystem::path& temporaryPath() const;
 

@@ -79,6 +79,17 @@ void addLoads(Problem& p, const Scene& scene, const std::vector<int>& owner) {
                        LoadHistory(spec.history).sample(p.times)});
 }
 
+// Runs `step`, prefixing any InputError with the scene file and the key it concerns.
+template <class Step>
+auto withContext(const Scene& scene, const std::string& key, Step&& step) {
+  try {
+    return step();
+  } catch (const InputError& e) {
+    const std::string file = scene.source.empty() ? "<scene>" : scene.source.string();
+    throw InputError(file + ": " + (key.empty() ? "" : "key '" + key + "': ") + e.what());
+  }
+}
+
 }  // namespace
 
 Mesh buildMesh(const MeshSpec& spec) {
@@ -90,20 +101,20 @@ Mesh buildMesh(const MeshSpec& spec) {
 Problem buildProblem(const Scene& scene) {
   Problem p;
   p.name = scene.name;
-  p.mesh = buildMesh(scene.mesh);
+  p.mesh = withContext(scene, scene.mesh.file.empty() ? "mesh.generator" : "", [&] { return buildMesh(scene.mesh); });
   p.material = scene.material;
   p.plane = scene.plane;
   p.times = uniformGrid(scene.time);
   p.stiffness = assembleStiffness(p.mesh, hookeMatrix(p.material, p.plane));
 
-  const std::vector<int> owner = prescribedBy(p.mesh, scene.dirichlet);
+  const std::vector<int> owner = withContext(scene, "dirichlet", [&] { return prescribedBy(p.mesh, scene.dirichlet); });
   p.free_index.assign(p.numDofs(), -1);
   for (int dof = 0; dof < p.numDofs(); ++dof)
     if (owner[dof] < 0) {
       p.free_index[dof] = static_cast<int>(p.free_dofs.size());
       p.free_dofs.push_back(dof);
     }
-  if (p.free_dofs.empty()) throw InputError("every dof is prescribed: nothing to solve");
+  if (p.free_dofs.empty()) withContext(scene, "dirichlet", [] { throw InputError("every dof is prescribed: nothing to solve"); });
   std::vector<Eigen::Triplet<double>> triplets;
   for (int col = 0; col < p.stiffness.outerSize(); ++col)
     for (Eigen::SparseMatrix<double>::InnerIterator it(p.stiffness, col); it; ++it)
@@ -112,9 +123,12 @@ Problem buildProblem(const Scene& scene) {
   p.stiffness_free.resize(p.numFreeDofs(), p.numFreeDofs());
   p.stiffness_free.setFromTriplets(triplets.begin(), triplets.end());
 
-  addLoads(p, scene, owner);
-  p.contact = buildContactInterface(p.mesh, scene.contact.boundary, makeObstacle(scene.obstacle), p.free_index,
-                                    scene.contact.friction);
+  withContext(scene, "load", [&] { addLoads(p, scene, owner); });
+  withContext(scene, "contact.boundary", [&] { return p.mesh.group(scene.contact.boundary); });
+  p.contact = withContext(scene, "", [&] {
+    return buildContactInterface(p.mesh, scene.contact.boundary, makeObstacle(scene.obstacle), p.free_index,
+                                 scene.contact.friction);
+  });
   p.length_scale = defaultLengthScale(scene, p.mesh);
   setSearchDirection(p.contact, scene.solver.search_scale, p.material.young, p.length_scale);
   return p;

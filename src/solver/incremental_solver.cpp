@@ -2,7 +2,6 @@
 
 #include <Eigen/LU>
 #include <chrono>
-#include <cstdlib>
 #include <cmath>
 #include <sstream>
 
@@ -229,7 +228,7 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
   const SpdFactor factor(problem.stiffness_free, "the free-dof stiffness K_ff");
   const CondensedInterface condensed = CondensedInterface::build(problem, factor);
   const int nc = problem.contact.size(), m = problem.numSteps();
-  const Eigen::VectorXd rho = (getenv("RHOF") ? atof(getenv("RHOF")) : 1.0) * condensed.delassus.diagonal().cwiseInverse();  // ρ = 1 / diag(W)
+  const Eigen::VectorXd rho = condensed.delassus.diagonal().cwiseInverse();  // ρ = 1 / diag(W)
 
   SolveResult result;
   result.interface = InterfaceHistory::zeros(nc, m);

@@ -1,0 +1,26 @@
+// Description: the smallest outside program linking the installed stcontact library.
+// Sample run:  consumer examples/scenes/hemicylinder.toml
+// 1. read and validate a scene, 2. assemble the problem, 3. solve it with LATIN on a short grid,
+// 4. print the sizes and the final total normal force.
+#include <iostream>
+
+#include "latin/latin_solver.hpp"
+#include "src/problem/problem.hpp"
+#include "src/scene/scene_reader.hpp"
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::cerr << "usage: consumer SCENE.toml\n";
+    return 1;
+  }
+  const stc::Scene scene = stc::readScene(argv[1], {"time.steps=21", "mesh.arc_nodes=21"});
+  const stc::Problem problem = stc::buildProblem(scene);
+  stc::latin::LatinOptions options;
+  options.tolerance = 1e-4;
+  const stc::SolveResult result = stc::latin::solveLatin(problem, options);
+  std::cout << "dofs " << problem.numDofs() << ", contact nodes " << problem.contact.size() << ", steps "
+            << problem.numSteps() << ", " << stc::toString(result.summary.termination) << " after "
+            << result.summary.iterations << " iterations, final normal force "
+            << result.interface.lambda.col(problem.numSteps() - 1)(Eigen::seq(0, Eigen::last, 2)).sum() << "\n";
+  return result.summary.converged() ? 0 : 2;
+}
