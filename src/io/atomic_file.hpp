@@ -1,6 +1,6 @@
 #pragma once
 // Atomic result files (INTERFACE.md: "all written atomically: a crashed run never leaves a half
-// file"). Content goes to a temporary file in the target's folder, is flushed to disk (fsync), then
+// file"). Content goes to a temporary file in the target's folder, is flushed and closed (no fsync: see commit()), then
 // renamed over the target: readers see either the old file or the complete new one, never a part.
 #include <filesystem>
 #include <memory>
@@ -33,7 +33,7 @@ class AtomicFile {
 
   /// The stream to write to; usable until commit().
   std::ostream& stream();
-  /// Checks every write, flushes, fsyncs and closes the temporary, then renames it over path().
+  /// Checks every write, flushes and closes the temporary, then renames it over path().
   /// On failure removes the temporary and throws OutputError. Throws std::logic_error if called
   /// twice, or after a failed commit.
   void commit();

@@ -114,7 +114,9 @@ void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, c
     file.commit();
   }
   writeFileAtomically(dir / "history.csv", historyCsv(result.summary));
-  if (output.vtu) writeSolutionSeries(dir, problem, result, output.vtu_stride);
+  // VTK's ASCII reader cannot read NaN: a run that broke down numerically gets no VTU series.
+  if (output.vtu && result.interface.lambda.allFinite() && result.interface.v.allFinite())
+    writeSolutionSeries(dir, problem, result, output.vtu_stride);
   writeFileAtomically(dir / "summary.json", summaryJson(problem, result.summary, info));  // last: marks a complete run
 }
 

@@ -1,9 +1,12 @@
 #include "src/solver/incremental_solver.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "src/contact/contact_state.hpp"
 #include "src/core/input_error.hpp"
@@ -45,7 +48,7 @@ Eigen::VectorXd interfaceDisplacement(const Instant& d, const Eigen::VectorXd& l
   return v;
 }
 
-// Alart–Curnier residual, node by node (header; Alart & Curnier 1991 eqs. 3.12–3.13).
+// Alart–Curnier residual, node by node (the equations in the header).
 Evaluation evaluate(const Instant& d, const Eigen::VectorXd& lambda) {
   Evaluation e{interfaceDisplacement(d, lambda), Eigen::VectorXd(lambda.size()),
                std::vector<ContactState>(d.nc()), std::vector<double>(d.nc(), 1.0)};
@@ -157,7 +160,7 @@ InstantOutcome solveInstant(const Instant& d, const Eigen::VectorXd& start, cons
   for (;; ++out.iterations) {
     const double scale = forceScale(d, out.lambda), r = e.F.lpNorm<Eigen::Infinity>();
     out.residual = scale > 0.0 ? r / scale : (r > 0.0 ? INFINITY : 0.0);
-    if (!std::isfinite(out.residual)) {
+    if (!e.F.allFinite() || !std::isfinite(out.residual)) {  // lpNorm's max can skip a NaN
       out.failure = "non-finite residual";
       break;
     }

@@ -5,7 +5,8 @@
 // Method. K_ff is factorised once and the problem condensed on the interface
 // (condensed_interface.hpp): v_k = v_0(:, k) + W λ_k, W = B K⁻¹ Bᵀ. Marching over k = 0 … m−1, the
 // contact law at instant k is written node-wise as the Alart–Curnier equations (Alart & Curnier,
-// CMAME 92, 1991, eqs. 3.12–3.13; implicit Coulomb with the slip increment of METHOD.md §1)
+// CMAME 92, 1991, augmented-Lagrangian contact operator; implicit Coulomb with the slip increment
+// of METHOD.md §1)
 //   F_n = λ_n − max(0, λ_n − ρ_n g),                 g = g0 + v_n,
 //   F_t = λ_t − clamp(λ_t − ρ_t s, −μ λ̂_n, μ λ̂_n),   s = v_t(t_k) − v_t(t_{k−1}), λ̂_n = max(0, λ_n − ρ_n g),
 // whose roots are exactly the solutions of the law (F = 0 ⇔ Signorini and Coulomb at the node), and
@@ -29,7 +30,8 @@
 // i.e. relative to the largest contact force, or, before any force builds up, to the force that would
 // push a node back by the instant's free motion. F_n = ρ_n g on closed nodes, so gaps and slips are
 // then resolved to tolerance · S_k / ρ (about tolerance × the displacement scale). The floor of
-// ‖F‖∞ / S_k set by round-off is ~1e-15 on the seed scene, below the default 1e-13.
+// ‖F‖∞ / S_k set by round-off is below 1e-15 on the seed scene (measured: 4e-16), under the
+// default 1e-13.
 //
 // Cost and size. 2n_C + (load terms) sparse solves to build W and v_0, then per Newton iteration
 // O(n_C · n_A) to evaluate F and O(n_A³) for the LU (n_A: closed nodes). W is dense 2n_C × 2n_C,

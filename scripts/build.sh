@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Configures and builds in Release into build/ (or $STC_BUILD_DIR), with the tests.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${STC_BUILD_DIR:-$root/build}
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSTC_BUILD_TESTS=ON >/dev/null
+cmake --build "$build" -j "$(nproc)"
