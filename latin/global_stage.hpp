@@ -16,7 +16,7 @@ namespace stc::latin {
 class GlobalStage {
  public:
   /// Factorises K_ff + Bᵀ k B with k = problem.contact.search_direction.
-  explicit GlobalStage(const Problem& problem, int block_size = 64);
+  explicit GlobalStage(const Problem& problem, int block_size = 32);
 
   /// s = global stage of ŝ (all instants). Adds m to the sparse-solve count.
   void solve(const InterfaceHistory& hat, InterfaceHistory& s);

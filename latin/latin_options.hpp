@@ -9,7 +9,8 @@ struct LatinOptions {
   double relaxation = 1.0;      ///< ω in (0, 1]: s ← ω s_new + (1 − ω) s_old (1: none)
   int stagnation_window = 500;  ///< stop as stagnated if η has not decreased by 1% over this many
                                 ///< iterations (0: never)
-  int block_size = 64;          ///< instants per multi-right-hand-side solve (memory n_free × block)
+  int block_size = 32;          ///< instants per multi-right-hand-side solve (memory n_free × block;
+                                ///< 16–32 measured fastest on the seed scene, see spd_factor.cpp)
 
   void validate() const;  ///< throws InputError
 };

@@ -1,0 +1,91 @@
+// LATIN local stage (METHOD.md §2): its output lies in Γ, follows the search direction exactly,
+// and leaves an admissible state unchanged.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "latin/local_stage.hpp"
+#include "src/problem/problem.hpp"
+#include "src/solver/contact_law_check.hpp"
+#include "solver/seed_scene.hpp"
+
+namespace {
+
+// A random interface state of the size of the problem, with forces and displacements at the
+// scales of the seed scene (gap 0.01, k ~ 100: forces ~ 1).
+stc::InterfaceHistory randomState(const stc::Problem& problem, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  auto s = stc::InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+  for (Eigen::Index j = 0; j < s.v.size(); ++j) {
+    s.v(j) = 0.01 * normal(rng);
+    s.lambda(j) = normal(rng);
+  }
+  return s;
+}
+
+class LocalStageTest : public ::testing::Test {
+ protected:
+  const stc::Problem problem = stc::buildProblem(stc::test::seedScene(31, 21));
+};
+
+}  // namespace
+
+TEST_F(LocalStageTest, OutputSatisfiesTheContactLawExactly) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    stc::InterfaceHistory hat;
+    stc::latin::localStage(problem.contact, randomState(problem, seed), hat);
+    // Exact up to one rounding of each arithmetic step: 1e-13 relative leaves a factor ~500 above ε.
+    EXPECT_LE(stc::checkContactLaw(problem, hat).max(), 1e-13) << "seed " << seed;
+  }
+}
+
+TEST_F(LocalStageTest, MovesAlongTheSearchDirection) {
+  const stc::InterfaceHistory s = randomState(problem, 7);
+  stc::InterfaceHistory hat;
+  stc::latin::localStage(problem.contact, s, hat);
+  const Eigen::VectorXd& k = problem.contact.search_direction;
+  // λ̂ − λ = k (v̂ − v), entry by entry.
+  const Eigen::MatrixXd mismatch = (hat.lambda - s.lambda) - k.asDiagonal() * (hat.v - s.v);
+  EXPECT_LE(mismatch.cwiseAbs().maxCoeff(), 1e-12 * s.lambda.cwiseAbs().maxCoeff());
+}
+
+TEST_F(LocalStageTest, LeavesAnAdmissibleStateUnchanged) {
+  stc::InterfaceHistory hat, again;
+  stc::latin::localStage(problem.contact, randomState(problem, 11), hat);
+  stc::latin::localStage(problem.contact, hat, again);  // a projection: applying it twice changes nothing
+  EXPECT_LE((again.v - hat.v).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_LE((again.lambda - hat.lambda).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST_F(LocalStageTest, OpenNodeKeepsNoForce) {
+  // Far from the obstacle with a pulling force: the node opens, λ̂ = 0 and v̂ = v − λ/k.
+  auto s = stc::InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+  s.lambda.setConstant(-1.0);
+  stc::InterfaceHistory hat;
+  stc::latin::localStage(problem.contact, s, hat);
+  EXPECT_EQ(hat.lambda.cwiseAbs().maxCoeff(), 0.0);
+  const double k0 = problem.contact.search_direction[0];
+  EXPECT_DOUBLE_EQ(hat.v(0, 0), 1.0 / k0);
+}
+
+TEST_F(LocalStageTest, SlipsWhenTrialLeavesConeAndSticksInside) {
+  // One node pressed hard (closed) at every instant; a tangential displacement that grows fast
+  // slips with λ̂_t = −μ λ̂_n sign(Δv̂_t), one that barely moves sticks.
+  const double mu = problem.contact.friction, kt = problem.contact.search_direction[1];
+  auto s = stc::InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+  s.v.row(0).setConstant(-problem.contact.initial_gap[0]);  // at the obstacle
+  s.lambda.row(0).setConstant(10.0);                          // pressed
+  for (int k = 0; k < problem.numSteps(); ++k) s.v(1, k) = 1.0 * k;  // large tangential motion
+  stc::InterfaceHistory hat;
+  stc::latin::localStage(problem.contact, s, hat);
+  for (int k = 1; k < problem.numSteps(); ++k) {
+    EXPECT_NEAR(std::abs(hat.lambda(1, k)), mu * hat.lambda(0, k), 1e-12) << "instant " << k;
+    EXPECT_LT(hat.lambda(1, k) * (hat.v(1, k) - hat.v(1, k - 1)), 0.0) << "friction opposes slip at " << k;
+  }
+  s.v.row(1).setConstant(0.0);
+  s.lambda.row(1).setConstant(0.5 * mu * 10.0);  // inside the cone, no motion: sticks
+  stc::latin::localStage(problem.contact, s, hat);
+  for (int k = 1; k < problem.numSteps(); ++k) EXPECT_EQ(hat.v(1, k), hat.v(1, k - 1));
+  EXPECT_GT(kt, 0.0);
+}
