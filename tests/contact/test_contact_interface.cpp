@@ -1,0 +1,92 @@
+// Contact interface of METHOD.md §1: frames, gaps, tributary lengths, B and the search direction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "src/core/input_error.hpp"
+#include "src/problem/problem.hpp"
+#include "solver/seed_scene.hpp"
+
+namespace {
+
+const stc::Problem& seed() {
+  static const stc::Problem problem = stc::buildProblem(stc::test::seedScene(101, 3));
+  return problem;
+}
+
+}  // namespace
+
+TEST(ContactInterface, SeedHasTheArcNodesWithoutTheDrivenCorners) {
+  const auto& c = seed().contact;
+  EXPECT_EQ(c.size(), 101);
+  for (int node : c.nodes) EXPECT_LT(seed().mesh.nodes(1, node), 0.0);  // corners (y = 0) excluded
+}
+
+TEST(ContactInterface, FrameIsTheObstacleNormalAndItsRotation) {
+  const auto& c = seed().contact;
+  for (int i = 0; i < c.size(); ++i) {
+    EXPECT_EQ(c.normals.col(i), Eigen::Vector2d(0.0, 1.0));
+    EXPECT_EQ(c.tangents.col(i), Eigen::Vector2d(1.0, 0.0));  // τ = (n_y, −n_x)
+  }
+}
+
+TEST(ContactInterface, InitialGapIsTheDistanceToThePlane) {
+  const auto& p = seed();
+  for (int i = 0; i < p.contact.size(); ++i)
+    EXPECT_NEAR(p.contact.initial_gap[i], p.mesh.nodes(1, p.contact.nodes[i]) + 1.01, 1e-15);
+  EXPECT_NEAR(p.contact.initial_gap.minCoeff(), 0.01, 1e-15);  // the lowest arc node at (0, −1)
+}
+
+TEST(ContactInterface, TributaryLengthsAddUpToTheArcMinusTheCornerHalves) {
+  // 102 equal chords of the arc; the two corner nodes are not contact nodes and keep half an edge each.
+  const auto& c = seed().contact;
+  const double chord = 2.0 * std::sin(std::numbers::pi / (2 * 102));
+  EXPECT_NEAR(c.tributary.sum(), 101 * chord, 1e-12);
+  EXPECT_NEAR(c.tributary.maxCoeff(), chord, 1e-12);
+}
+
+TEST(ContactInterface, BRestrictsAndRotatesTheNodalDisplacement) {
+  const auto& p = seed();
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(p.numFreeDofs());
+  const int i = 50, node = p.contact.nodes[i];
+  u[p.free_index[2 * node]] = 0.3;
+  u[p.free_index[2 * node + 1]] = -0.7;
+  const Eigen::VectorXd v = p.contact.B * u;
+  EXPECT_DOUBLE_EQ(v[2 * i], -0.7);  // n·u
+  EXPECT_DOUBLE_EQ(v[2 * i + 1], 0.3);  // τ·u
+  EXPECT_EQ(v.cwiseAbs().sum(), 1.0);
+}
+
+TEST(ContactInterface, SearchDirectionScalesWithTributaryLength) {
+  stc::Scene scene = stc::test::seedScene(31, 3);
+  scene.solver.search_scale = 2.5;
+  const stc::Problem p = stc::buildProblem(scene);
+  for (int i = 0; i < p.contact.size(); ++i) {
+    const double expected = 2.5 * 3000.0 * p.contact.tributary[i] / 1.0;  // κ E ℓ_i / L, L = radius
+    EXPECT_DOUBLE_EQ(p.contact.search_direction[2 * i], expected);
+    EXPECT_DOUBLE_EQ(p.contact.search_direction[2 * i + 1], expected);
+  }
+}
+
+TEST(ContactInterface, TiltedPlaneGivesRotatedFrame) {
+  stc::Scene scene = stc::test::seedScene(31, 3);
+  scene.obstacle.normal = Eigen::Vector2d(1.0, 1.0);
+  scene.obstacle.point = Eigen::Vector2d(-2.0, -2.0);
+  const stc::Problem p = stc::buildProblem(scene);
+  const double s = std::sqrt(0.5);
+  EXPECT_NEAR(p.contact.normals(0, 0), s, 1e-15);
+  EXPECT_NEAR(p.contact.tangents(0, 0), s, 1e-15);
+  EXPECT_NEAR(p.contact.tangents(1, 0), -s, 1e-15);
+}
+
+TEST(ContactInterface, PenetratingNodeIsAnInputError) {
+  stc::Scene scene = stc::test::seedScene(31, 3);
+  scene.obstacle.point = Eigen::Vector2d(0.0, -0.99);
+  try {
+    stc::buildProblem(scene);
+    FAIL() << "penetration accepted";
+  } catch (const stc::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("starts inside the obstacle"), std::string::npos) << e.what();
+  }
+}
