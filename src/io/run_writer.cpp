@@ -31,18 +31,14 @@ std::string frameName(int k) {
 void contactFields(const Problem& problem, const SolveResult& result, int k, Eigen::MatrixXd& force,
                    Eigen::MatrixXd& state) {
   const auto& c = problem.contact;
-  const auto& s = result.admissible();
+  const ContactStateTable states(problem, result.admissible());
   force = Eigen::MatrixXd::Zero(2, problem.mesh.numNodes());
   state = Eigen::MatrixXd::Constant(1, problem.mesh.numNodes(), -1.0);
-  const double force_scale = std::max(s.lambda.cwiseAbs().maxCoeff(), 1e-300);
-  const double length_scale = std::max(s.v.cwiseAbs().maxCoeff(), 1e-300);
   for (int i = 0; i < c.size(); ++i) {
     const int node = c.nodes[i];
     const double ln = result.interface.lambda(2 * i, k), lt = result.interface.lambda(2 * i + 1, k);
     force.col(node) = ln * c.normals.col(i) + lt * c.tangents.col(i);
-    const double slip = s.v(2 * i + 1, k) - (k > 0 ? s.v(2 * i + 1, k - 1) : 0.0);
-    state(0, node) = static_cast<double>(
-        classifyContact(s.lambda(2 * i, k), s.lambda(2 * i + 1, k), slip, c.friction, force_scale, length_scale));
+    state(0, node) = static_cast<double>(states.state(i, k));
   }
 }
 
