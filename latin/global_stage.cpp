@@ -16,12 +16,13 @@ GlobalStage::GlobalStage(const Problem& problem, int block_size)
       factor_(matrix_, "K + B^T k B"),
       block_size_(std::max(1, block_size)) {}
 
-void GlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s) {
+void GlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s, Eigen::MatrixXd* u_out) {
   const auto& B = problem_.contact.B;
   const Eigen::VectorXd& k = problem_.contact.search_direction;
   const int m = hat.numSteps();
   s.v.resize(hat.v.rows(), m);
   s.lambda.resize(hat.lambda.rows(), m);
+  if (u_out) u_out->resize(problem_.numFreeDofs(), m);
   for (int k0 = 0; k0 < m; k0 += block_size_) {
     const int count = std::min(block_size_, m - k0);
     const auto v_hat = hat.v.middleCols(k0, count);
@@ -31,6 +32,7 @@ void GlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s) {
     const Eigen::MatrixXd u = factor_.solve(rhs);
     s.v.middleCols(k0, count).noalias() = B * u;
     s.lambda.middleCols(k0, count) = l_hat - k.asDiagonal() * (s.v.middleCols(k0, count) - v_hat);
+    if (u_out) u_out->middleCols(k0, count) = u;
   }
   sparse_solves_ += m;
 }

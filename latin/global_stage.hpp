@@ -18,8 +18,9 @@ class GlobalStage {
   /// Factorises K_ff + Bᵀ k B with k = problem.contact.search_direction.
   explicit GlobalStage(const Problem& problem, int block_size = 32);
 
-  /// s = global stage of ŝ (all instants). Adds m to the sparse-solve count.
-  void solve(const InterfaceHistory& hat, InterfaceHistory& s);
+  /// s = global stage of ŝ (all instants). Adds m to the sparse-solve count. When `u` is given it
+  /// receives the free displacements (n_free × m; FAS builds its residual vectors from them).
+  void solve(const InterfaceHistory& hat, InterfaceHistory& s, Eigen::MatrixXd* u = nullptr);
 
   /// The operator K_ff + Bᵀ k B and its factor (the FAS coarse space and PGD use them).
   const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }

@@ -1,0 +1,29 @@
+#include "fas/coarse_step.hpp"
+
+#include "latin/local_stage.hpp"
+
+namespace stc::fas {
+
+void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const FasOptions& options,
+                const InterfaceHistory& s, InterfaceHistory& hat, Eigen::MatrixXd& xi) {
+  const Eigen::VectorXd& k = contact.search_direction;
+  const Eigen::MatrixXd& BY = space.interface();
+  const Eigen::MatrixXd lambda_tilde = hat.lambda;          // λ̃: forces of s̃ (local stage)
+  const Eigen::MatrixXd residual = lambda_tilde - s.lambda;  // res̃ = Bᵀ(λ̃ − λ)
+  Eigen::MatrixXd dv_hat = Eigen::MatrixXd::Zero(s.v.rows(), s.v.cols());
+  if (options.start == CoarseStart::InterfaceMismatch) dv_hat = hat.v - s.v;
+  Eigen::MatrixXd dl_hat = Eigen::MatrixXd::Zero(s.v.rows(), s.v.cols());
+  InterfaceHistory trial;
+  for (int it = 0; it < options.coarse_iterations; ++it) {
+    xi.noalias() = BY.transpose() * (residual + dl_hat + k.asDiagonal() * dv_hat);  // seed eq. (8), R A P = I
+    trial.v.noalias() = BY * xi;                                                 // BΔu, seed eq. (7)
+    trial.lambda = dl_hat - k.asDiagonal() * (trial.v - dv_hat);                 // Δλ, seed eq. (5)
+    trial.v += s.v;
+    trial.lambda += lambda_tilde;
+    latin::localStage(contact, trial, hat);
+    dv_hat = hat.v - s.v;
+    dl_hat = hat.lambda - lambda_tilde;
+  }
+}
+
+}  // namespace stc::fas

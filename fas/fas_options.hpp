@@ -1,0 +1,25 @@
+#pragma once
+// Options of the two-level FAS with LATIN as smoother (METHOD.md §4; seed paper §4.1–4.2).
+namespace stc::fas {
+
+/// How the coarse step starts from s̃ = (ũ, λ̃) (METHOD.md §4, "How the coarse step starts").
+enum class CoarseStart {
+  ZeroCorrection,     ///< (a) Δv̂ = 0, Δλ̂ = 0, taking v = Bũ (discards v̂ − Bũ)
+  InterfaceMismatch,  ///< (b) Δv̂ = v̂ − Bũ, Δλ̂ = 0 (exact when the coarse space is the whole space)
+};
+
+struct FasOptions {
+  double tolerance = 1e-6;        ///< on the fine-level LATIN indicator, tested after every relaxation
+  int max_relaxations = 5000;     ///< fine relaxations in all (the cost unit of the seed's Figs. 4–5)
+  int pre_relaxations = 1;        ///< ν1 >= 1: the seed's Figs. 4–5 use ν1 = ν2 = 1
+  int post_relaxations = 1;       ///< ν2 >= 0
+  int coarse_iterations = 15;     ///< i_C: coarse linear stage + fine local stage pairs (seed: 15)
+  int residual_vectors = 15;      ///< N_res, renewed every cycle (seed §4.3: 15)
+  CoarseStart start = CoarseStart::ZeroCorrection;
+  int stagnation_window = 500;    ///< relaxations without a 1% decrease of η before giving up (0: never)
+  int block_size = 32;            ///< instants per multi-right-hand-side solve
+
+  void validate() const;  ///< throws InputError naming the field
+};
+
+}  // namespace stc::fas

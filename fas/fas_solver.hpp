@@ -1,0 +1,21 @@
+#pragma once
+// Two-level FAS with LATIN as the smoother (seed §4; METHOD.md §4). One cycle:
+//   ν1 relaxations (global stage, then local stage) → coarse step (i_C coarse linear + fine local
+//   stages in the coarse space of the provider) → ν2 relaxations.
+// Convergence is tested on the fine level only, after every relaxation (its global stage).
+#include "fas/basis_provider.hpp"
+#include "fas/fas_options.hpp"
+#include "latin/global_stage.hpp"
+#include "src/problem/problem.hpp"
+#include "src/solver/error_reference.hpp"
+#include "src/solver/solve_result.hpp"
+
+namespace stc::fas {
+
+/// History: one record per relaxation (iteration = relaxations), rank = coarse-space size.
+/// `solver_name` is recorded in the summary ("fas-aposteriori", "fas-apriori").
+SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisProvider& provider,
+                     const FasOptions& options, const std::string& solver_name,
+                     const ErrorReference* reference = nullptr, const IterationCallback& callback = {});
+
+}  // namespace stc::fas
