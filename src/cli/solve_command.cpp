@@ -3,10 +3,11 @@
 #include <iostream>
 #include <memory>
 
-#include "latin/latin_solver.hpp"
+#include "fas/solve_by_name.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/progress.hpp"
 #include "src/core/input_error.hpp"
+#include "src/solver/condensed_interface.hpp"
 #include "src/io/atomic_file.hpp"
 #include "src/io/run_writer.hpp"
 #include "src/scene/scene_reader.hpp"
@@ -18,18 +19,6 @@ namespace {
 // Beyond this many contact nodes the dense Delassus operator of the reference (32 n_C² bytes)
 // and its per-iteration error evaluation become a noticeable cost: skip the reference.
 constexpr int kMaxReferenceContactNodes = 1000;
-
-const std::vector<std::string> kAvailable = {"latin", "incremental"};
-const std::vector<std::string> kPlanned = {"latin-pgd", "fas-aposteriori", "fas-apriori"};
-
-void requireAvailable(const std::string& name) {
-  for (const auto& s : kAvailable)
-    if (s == name) return;
-  for (const auto& s : kPlanned)
-    if (s == name)
-      throw InputError("solver '" + name + "' is not available in this version yet (available: latin, incremental)");
-  throw InputError("unknown solver '" + name + "' (known: latin, latin-pgd, fas-aposteriori, fas-apriori, incremental)");
-}
 
 std::unique_ptr<ErrorReference> computeReference(const Problem& problem, bool quiet) {
   Progress progress("reference (incremental)", !quiet);
@@ -45,16 +34,11 @@ std::unique_ptr<ErrorReference> computeReference(const Problem& problem, bool qu
 SolveResult runSolver(const std::string& name, const Problem& problem, const Scene& scene,
                       const ErrorReference* reference, bool quiet) {
   Progress progress(name, !quiet);
-  SolveResult result;
-  if (name == "incremental") {
-    result = solveIncremental(problem, {}, progress.callback());
-  } else {
-    latin::LatinOptions options;
-    options.tolerance = scene.solver.tolerance;
-    options.max_iterations = scene.solver.max_iterations;
-    options.relaxation = scene.solver.relaxation;
-    result = latin::solveLatin(problem, options, reference, progress.callback());
-  }
+  fas::StrategyInputs inputs;
+  inputs.reference = reference;
+  inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
+  inputs.callback = progress.callback();
+  SolveResult result = fas::solveByName(name, problem, scene.solver, inputs);
   progress.done();
   return result;
 }
@@ -64,7 +48,7 @@ SolveResult runSolver(const std::string& name, const Problem& problem, const Sce
 int runSolve(const SolveArgs& args) {
   Scene scene = readScene(args.scene, args.overrides);
   const std::string solver = args.solver.value_or(scene.solver.name);
-  requireAvailable(solver);
+  fas::requireAvailable(solver);
   if (args.tolerance) {
     if (!(*args.tolerance > 0.0)) throw InputError("--tol must be > 0");
     scene.solver.tolerance = *args.tolerance;

@@ -70,6 +70,17 @@ struct LoadSpec {
   History history;
 };
 
+/// [solver] keys of the two-level FAS (METHOD.md §4; defaults: the seed paper's §4.2 settings,
+/// except ν = 2: with ν1 = ν2 = 1 the error stalls near 1e-4, as the seed's Fig. 5 reports).
+struct FasSpec {
+  int pre_relaxations = 2;      ///< ν1 >= 1
+  int post_relaxations = 2;     ///< ν2 >= 0
+  int coarse_iterations = 15;   ///< i_C >= 1
+  int residual_vectors = 15;    ///< N_res >= 0
+  int svd_modes = 10;           ///< fas-aposteriori: leading energy-SVD modes of the converged solution (>= 0)
+  std::string coarse_start = "zero";  ///< "zero" (METHOD.md §4 option a) or "mismatch" (option b)
+};
+
 /// [solver]: choice and common options (each solver validates its own further options).
 struct SolverSpec {
   std::string name = "fas-apriori";  ///< latin, latin-pgd, fas-aposteriori, fas-apriori, incremental
@@ -77,6 +88,7 @@ struct SolverSpec {
   int max_iterations = 2000;         ///< >= 1
   double search_scale = 1.0;         ///< kappa of METHOD.md §2, > 0
   double relaxation = 1.0;           ///< omega in (0, 1]
+  FasSpec fas;                       ///< keys pre_relaxations … coarse_start of [solver]
 };
 
 /// [output]: what to write beside the CSV/JSON files.

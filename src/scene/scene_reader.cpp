@@ -220,10 +220,28 @@ std::vector<Spec> readHistories(const TableView& root, std::string_view key) {
   return specs;
 }
 
+/// Reads a non-negative (or >= minimum) integer key of [solver] into `value`.
+void readCount(const TableView& table, std::string_view key, int minimum, int& value) {
+  value = table.optionalInt(key).value_or(value);
+  requireRange(table, key, value, value >= minimum, minimum == 0 ? "must be >= 0" : "must be >= 1");
+}
+
+FasSpec readFas(const TableView& solver) {
+  FasSpec fas;
+  readCount(solver, "pre_relaxations", 1, fas.pre_relaxations);
+  readCount(solver, "post_relaxations", 0, fas.post_relaxations);
+  readCount(solver, "coarse_iterations", 1, fas.coarse_iterations);
+  readCount(solver, "residual_vectors", 0, fas.residual_vectors);
+  readCount(solver, "svd_modes", 0, fas.svd_modes);
+  if (solver.has("coarse_start")) fas.coarse_start = readKeyword(solver, "coarse_start", {"zero", "mismatch"});
+  return fas;
+}
+
 SolverSpec readSolver(const TableView& root) {
   SolverSpec spec;
   const auto solver = root.optionalTable(
-      "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation"});
+      "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
+                 "post_relaxations", "coarse_iterations", "residual_vectors", "svd_modes", "coarse_start"});
   if (!solver) return spec;
   if (solver->has("name")) {
     spec.name = readKeyword(
@@ -239,6 +257,7 @@ SolverSpec readSolver(const TableView& root) {
   spec.relaxation = solver->optionalNumber("relaxation").value_or(spec.relaxation);
   requireRange(*solver, "relaxation", spec.relaxation,
                spec.relaxation > 0.0 && spec.relaxation <= 1.0, "must be in (0, 1]");
+  spec.fas = readFas(*solver);
   return spec;
 }
 

@@ -1,0 +1,69 @@
+#include "fas/solve_by_name.hpp"
+
+#include <algorithm>
+
+#include "fas/aposteriori_basis.hpp"
+#include "fas/fas_solver.hpp"
+#include "latin/latin_solver.hpp"
+#include "src/core/input_error.hpp"
+#include "src/solver/incremental_solver.hpp"
+
+namespace stc::fas {
+namespace {
+
+FasOptions fasOptions(const SolverSpec& spec) {
+  FasOptions o;
+  o.tolerance = spec.tolerance;
+  o.max_relaxations = spec.max_iterations;
+  o.pre_relaxations = spec.fas.pre_relaxations;
+  o.post_relaxations = spec.fas.post_relaxations;
+  o.coarse_iterations = spec.fas.coarse_iterations;
+  o.residual_vectors = spec.fas.residual_vectors;
+  o.start = spec.fas.coarse_start == "mismatch" ? CoarseStart::InterfaceMismatch : CoarseStart::ZeroCorrection;
+  return o;
+}
+
+SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+  const SpdFactor K(problem.stiffness_free, "K_ff");
+  Eigen::MatrixXd lambda;
+  if (inputs.converged_lambda) lambda = *inputs.converged_lambda;
+  else lambda = solveIncremental(problem).interface.lambda;
+  const Eigen::MatrixXd modes = aposterioriModes(problem, K, lambda, spec.fas.svd_modes);
+  latin::GlobalStage global(problem);
+  FixedBasisProvider provider(modes, spec.fas.residual_vectors, global.matrix(), problem.contact.B);
+  return solveFas(problem, global, provider, fasOptions(spec), "fas-aposteriori", inputs.reference, inputs.callback);
+}
+
+}  // namespace
+
+const std::vector<std::string>& availableSolvers() {
+  static const std::vector<std::string> names = {"latin", "fas-aposteriori", "incremental"};
+  return names;
+}
+
+const std::vector<std::string>& knownSolvers() {
+  static const std::vector<std::string> names = {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori", "incremental"};
+  return names;
+}
+
+void requireAvailable(const std::string& name) {
+  auto has = [&](const std::vector<std::string>& list) { return std::find(list.begin(), list.end(), name) != list.end(); };
+  if (has(availableSolvers())) return;
+  if (has(knownSolvers()))
+    throw InputError("solver '" + name + "' is not available in this version yet (available: latin, fas-aposteriori, incremental)");
+  throw InputError("unknown solver '" + name + "' (known: latin, latin-pgd, fas-aposteriori, fas-apriori, incremental)");
+}
+
+SolveResult solveByName(const std::string& name, const Problem& problem, const SolverSpec& spec,
+                        const StrategyInputs& inputs) {
+  requireAvailable(name);
+  if (name == "incremental") return solveIncremental(problem, {}, inputs.callback);
+  if (name == "fas-aposteriori") return solveAposteriori(problem, spec, inputs);
+  latin::LatinOptions options;
+  options.tolerance = spec.tolerance;
+  options.max_iterations = spec.max_iterations;
+  options.relaxation = spec.relaxation;
+  return latin::solveLatin(problem, options, inputs.reference, inputs.callback);
+}
+
+}  // namespace stc::fas

@@ -1,0 +1,32 @@
+#pragma once
+// Every strategy behind one call, chosen by its INTERFACE.md name: `incremental`, `latin`,
+// `fas-aposteriori` (and, later, `latin-pgd`, `fas-apriori`). What the command line and the
+// comparison programs use.
+#include <string>
+#include <vector>
+
+#include "src/problem/problem.hpp"
+#include "src/scene/scene.hpp"
+#include "src/solver/error_reference.hpp"
+#include "src/solver/solve_result.hpp"
+
+namespace stc::fas {
+
+/// Names accepted today, and all the names of INTERFACE.md.
+const std::vector<std::string>& availableSolvers();
+const std::vector<std::string>& knownSolvers();
+/// Throws InputError for an unknown name or one not available yet.
+void requireAvailable(const std::string& name);
+
+struct StrategyInputs {
+  const ErrorReference* reference = nullptr;  ///< adds the true error to the history
+  /// A converged solution's contact forces (2n_C × m) for `fas-aposteriori`; computed with the
+  /// incremental solver when absent. Its cost is not part of the FAS summary's wall time.
+  const Eigen::MatrixXd* converged_lambda = nullptr;
+  IterationCallback callback;
+};
+
+SolveResult solveByName(const std::string& name, const Problem& problem, const SolverSpec& spec,
+                        const StrategyInputs& inputs = {});
+
+}  // namespace stc::fas
