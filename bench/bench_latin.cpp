@@ -74,6 +74,13 @@ void GlobalStage(benchmark::State& state) {
 }
 BENCHMARK(GlobalStage)->Unit(benchmark::kMillisecond);
 
+void Indicator(benchmark::State& state) {
+  Iterate it;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(stc::latin::indicator(seedProblem().contact.search_direction, it.s, it.hat));
+}
+BENCHMARK(Indicator)->Unit(benchmark::kMicrosecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -14,6 +14,7 @@ GlobalStage::GlobalStage(const Problem& problem, int block_size)
     : problem_(problem),
       matrix_(searchDirectionOperator(problem)),
       factor_(matrix_, "K + B^T k B"),
+      B_rows_(problem.contact.B),
       block_size_(std::max(1, block_size)) {}
 
 void GlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s, Eigen::MatrixXd* u_out) {
@@ -30,7 +31,7 @@ void GlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s, Eigen:
     Eigen::MatrixXd rhs = problem_.loadBlock(k0, count);
     rhs.noalias() += B.transpose() * (l_hat + k.asDiagonal() * v_hat);
     const Eigen::MatrixXd u = factor_.solve(rhs);
-    s.v.middleCols(k0, count).noalias() = B * u;
+    s.v.middleCols(k0, count).noalias() = B_rows_ * u;
     s.lambda.middleCols(k0, count) = l_hat - k.asDiagonal() * (s.v.middleCols(k0, count) - v_hat);
     if (u_out) u_out->middleCols(k0, count) = u;
   }

@@ -31,6 +31,7 @@ class GlobalStage {
   const Problem& problem_;
   Eigen::SparseMatrix<double> matrix_;
   SpdFactor factor_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> B_rows_;  ///< B by rows: v = B u 4x faster (measured)
   int block_size_;
   long sparse_solves_ = 0;
 };
