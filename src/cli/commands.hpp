@@ -22,9 +22,20 @@ struct SolveArgs {
   bool no_reference = false;
 };
 
+struct SvdArgs {
+  std::string scene;
+  std::vector<std::string> overrides;
+  std::optional<std::string> out;
+  int modes = 10;                       ///< pairs written to the per-mode files and tables
+  std::string solver = "incremental";   ///< the only one accepted: the analysis of the exact solution
+};
+
 /// Prints the model's sizes; returns the exit status.
 int runCheck(const CheckArgs& args);
 /// Solves and writes the outputs; returns 0 converged, 2 not converged.
 int runSolve(const SolveArgs& args);
+/// A posteriori space-time SVD of the incremental solution (METHOD.md §3); returns 0, or 2 if the
+/// solve did not converge (nothing written).
+int runSvd(const SvdArgs& args);
 
 }  // namespace stc::cli

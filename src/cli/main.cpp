@@ -48,6 +48,16 @@ int main(int argc, char** argv) {
   solve_cmd->add_flag("--no-reference", solve.no_reference,
                       "do not compute the incremental reference (no true error in history.csv)");
 
+  stc::cli::SvdArgs svd;
+  auto* svd_cmd = app.add_subcommand("svd", "space-time SVD of the solution in the energy product (verification)");
+  svd_cmd->add_option("scene", svd.scene, "scene file (TOML)")->required();
+  svd_cmd->add_option("--set", svd.overrides, "override a scene value: section.key=value")->take_all();
+  svd_cmd->add_option("--out", svd.out, "output folder (default results/<scene name>/svd)");
+  svd_cmd->add_option("--modes", svd.modes, "pairs written to time_functions.csv, modes.vtu, localisation.csv")
+      ->capture_default_str();
+  svd_cmd->add_option("--solver", svd.solver, "solver of the analysed solution (incremental only)")
+      ->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -57,6 +67,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (check_cmd->parsed()) return stc::cli::runCheck(check);
+    if (svd_cmd->parsed()) return stc::cli::runSvd(svd);
     return stc::cli::runSolve(solve);
   } catch (const stc::InputError& e) {
     return fail(1, e.what());
