@@ -1,0 +1,67 @@
+#include "src/report/run_environment.hpp"
+
+#include <sched.h>
+#include <sys/utsname.h>
+
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace stc {
+namespace {
+
+std::string cpuModel() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) != 0) continue;
+    const auto colon = line.find(':');
+    if (colon == std::string::npos) break;
+    const auto start = line.find_first_not_of(" \t", colon + 1);
+    return start == std::string::npos ? "unknown" : line.substr(start);
+  }
+  return "unknown";
+}
+
+int usableCores() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) != 0) return 0;
+  return CPU_COUNT(&set);
+}
+
+std::string kernel() {
+  utsname name{};
+  if (uname(&name) != 0) return "unknown";
+  return std::string(name.sysname) + " " + name.release;
+}
+
+std::string orUnknown(std::string text) { return text.empty() ? "unknown" : text; }
+
+}  // namespace
+
+std::string loadAverage() {
+  std::ifstream file("/proc/loadavg");
+  std::string one, five, fifteen;
+  if (!(file >> one >> five >> fifteen)) return "";
+  return one + " " + five + " " + fifteen;
+}
+
+RunEnvironment describeRunEnvironment(std::string build_type, std::string git_commit) {
+  RunEnvironment env;
+  env.cpu_model = cpuModel();
+  env.logical_cores = static_cast<int>(std::thread::hardware_concurrency());
+  env.usable_cores = usableCores();
+  env.kernel = kernel();
+#if defined(__clang__)
+  env.compiler = __VERSION__;  // "Clang 15.0.6 ..." already names the compiler
+#elif defined(__GNUC__)
+  env.compiler = "GCC " __VERSION__;
+#endif
+  env.build_type = orUnknown(std::move(build_type));
+  env.git_commit = orUnknown(std::move(git_commit));
+  env.load_average = loadAverage();
+  return env;
+}
+
+}  // namespace stc

@@ -1,0 +1,24 @@
+#pragma once
+// The machine and build a measurement ran on, for reports that quote times (house style 10).
+#include <string>
+
+namespace stc {
+
+struct RunEnvironment {
+  std::string cpu_model = "unknown";   ///< "model name" of /proc/cpuinfo
+  int logical_cores = 0;               ///< std::thread::hardware_concurrency
+  int usable_cores = 0;                ///< cores this process may run on (sched_getaffinity)
+  std::string kernel = "unknown";      ///< uname -sr
+  std::string compiler = "unknown";    ///< __VERSION__ of the compiler that built the library
+  std::string build_type = "unknown";  ///< CMAKE_BUILD_TYPE of the program
+  std::string git_commit = "unknown";  ///< commit of the sources at configure time
+  std::string load_average;            ///< /proc/loadavg's 1, 5, 15 min averages (shared machines)
+};
+
+/// Reads the machine's description; the build's is passed by the program that knows it.
+RunEnvironment describeRunEnvironment(std::string build_type, std::string git_commit);
+
+/// The current 1, 5 and 15 minute load averages ("1.02 0.80 0.51"), empty if unknown.
+std::string loadAverage();
+
+}  // namespace stc
