@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "src/cli/commands.hpp"
+#include "src/cli/compare_command.hpp"
 #include "src/core/input_error.hpp"
 #include "src/io/output_error.hpp"
 
@@ -58,6 +59,9 @@ int main(int argc, char** argv) {
   svd_cmd->add_option("--solver", svd.solver, "solver of the analysed solution (incremental only)")
       ->capture_default_str();
 
+  stc::cli::CompareArgs compare;
+  auto* compare_cmd = stc::cli::addCompareCommand(app, compare);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -68,6 +72,7 @@ int main(int argc, char** argv) {
   try {
     if (check_cmd->parsed()) return stc::cli::runCheck(check);
     if (svd_cmd->parsed()) return stc::cli::runSvd(svd);
+    if (compare_cmd->parsed()) return stc::cli::runCompare(compare);
     return stc::cli::runSolve(solve);
   } catch (const stc::InputError& e) {
     return fail(1, e.what());
