@@ -6,6 +6,7 @@
 #include <Eigen/SparseCore>
 
 #include "fas/coarse_space.hpp"
+#include "src/spacetime/interface_history.hpp"
 
 namespace stc::fas {
 
@@ -13,8 +14,9 @@ class BasisProvider {
  public:
   virtual ~BasisProvider() = default;
   /// The coarse space for the coming coarse step, given the current displacement history ũ
-  /// (n_free × m, the last global stage's).
-  virtual CoarseSpace coarseSpace(const Eigen::MatrixXd& u_tilde) = 0;
+  /// (n_free × m) and interface history s = (v, λ) of the last global stage (so A ũ_k = f_k +
+  /// Bᵀ(λ_k + k v_k) is known without a product with A).
+  virtual CoarseSpace coarseSpace(const Eigen::MatrixXd& u_tilde, const InterfaceHistory& s) = 0;
 };
 
 /// Fixed vectors (e.g. SVD modes restricted to the free dofs) + N_res residual vectors.
@@ -22,7 +24,7 @@ class FixedBasisProvider : public BasisProvider {
  public:
   FixedBasisProvider(const Eigen::MatrixXd& vectors, int residual_vectors, const Eigen::SparseMatrix<double>& A,
                      const Eigen::SparseMatrix<double>& B);
-  CoarseSpace coarseSpace(const Eigen::MatrixXd& u_tilde) override;
+  CoarseSpace coarseSpace(const Eigen::MatrixXd& u_tilde, const InterfaceHistory& s) override;
   const CoarseSpace& fixedSpace() const { return fixed_; }
 
  private:

@@ -52,7 +52,7 @@ SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisPr
   for (bool stop = false; !stop;) {
     for (int j = 0; j < options.pre_relaxations && !stop; ++j) stop = fine.relax(rank);
     if (stop) break;
-    const CoarseSpace space = provider.coarseSpace(fine.u);
+    const CoarseSpace space = provider.coarseSpace(fine.u, fine.s);
     rank = space.rank();
     if (rank > 0) coarseStep(problem.contact, space, options, fine.s, fine.hat, xi);
     for (int j = 0; j < options.post_relaxations && !stop; ++j) stop = fine.relax(rank);

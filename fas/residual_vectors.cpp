@@ -12,6 +12,11 @@ Eigen::MatrixXd residualVectors(const Eigen::MatrixXd& u_tilde, const Eigen::Mat
   if (count <= 0) return Eigen::MatrixXd(u_tilde.rows(), 0);
   Eigen::MatrixXd R = u_tilde;
   if (fixed.cols() > 0) R.noalias() -= fixed * (fixed.transpose() * (A * u_tilde));
+  return rangeOf(R, count);
+}
+
+Eigen::MatrixXd rangeOf(const Eigen::MatrixXd& R, int count) {
+  if (count <= 0 || R.cols() == 0) return Eigen::MatrixXd(R.rows(), 0);
   // Randomized range finder (Halko, Martinsson, Tropp 2011, alg. 4.1) with 5 extra samples.
   const int samples = std::min<int>(count + 5, static_cast<int>(R.cols()));
   std::mt19937 rng(20130513);

@@ -13,4 +13,8 @@ namespace stc::fas {
 Eigen::MatrixXd residualVectors(const Eigen::MatrixXd& u_tilde, const Eigen::MatrixXd& fixed,
                                 const Eigen::SparseMatrix<double>& A, int count);
 
+/// The leading min(count, rank R) left singular directions of R (orthonormal columns), by the
+/// randomized range finder that `residualVectors` applies to its R.
+Eigen::MatrixXd rangeOf(const Eigen::MatrixXd& R, int count);
+
 }  // namespace stc::fas

@@ -3,8 +3,10 @@
 #include <algorithm>
 
 #include "fas/aposteriori_basis.hpp"
+#include "fas/apriori_basis.hpp"
 #include "fas/fas_solver.hpp"
 #include "latin/latin_solver.hpp"
+#include "pgd/latin_pgd_solver.hpp"
 #include "src/core/input_error.hpp"
 #include "src/solver/incremental_solver.hpp"
 
@@ -34,10 +36,31 @@ SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, con
   return solveFas(problem, global, provider, fasOptions(spec), "fas-aposteriori", inputs.reference, inputs.callback);
 }
 
+SolveResult solveApriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+  latin::GlobalStage global(problem);
+  AprioriBasisOptions basis;
+  basis.residual_vectors = spec.fas.residual_vectors;
+  AprioriBasisProvider provider(problem, global.matrix(), basis);
+  return solveFas(problem, global, provider, fasOptions(spec), "fas-apriori", inputs.reference, inputs.callback);
+}
+
+SolveResult solveLatinPgd(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+  pgd::LatinPgdOptions options;
+  options.tolerance = spec.tolerance;
+  options.max_iterations = spec.max_iterations;
+  return pgd::solveLatinPgd(problem, options, inputs.reference, inputs.callback);
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
 }  // namespace
 
 const std::vector<std::string>& availableSolvers() {
-  static const std::vector<std::string> names = {"latin", "fas-aposteriori", "incremental"};
+  static const std::vector<std::string> names = {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori", "incremental"};
   return names;
 }
 
@@ -50,8 +73,9 @@ void requireAvailable(const std::string& name) {
   auto has = [&](const std::vector<std::string>& list) { return std::find(list.begin(), list.end(), name) != list.end(); };
   if (has(availableSolvers())) return;
   if (has(knownSolvers()))
-    throw InputError("solver '" + name + "' is not available in this version yet (available: latin, fas-aposteriori, incremental)");
-  throw InputError("unknown solver '" + name + "' (known: latin, latin-pgd, fas-aposteriori, fas-apriori, incremental)");
+    throw InputError("solver '" + name + "' is not available in this version yet (available: " +
+                     joined(availableSolvers()) + ")");
+  throw InputError("unknown solver '" + name + "' (known: " + joined(knownSolvers()) + ")");
 }
 
 SolveResult solveByName(const std::string& name, const Problem& problem, const SolverSpec& spec,
@@ -59,6 +83,8 @@ SolveResult solveByName(const std::string& name, const Problem& problem, const S
   requireAvailable(name);
   if (name == "incremental") return solveIncremental(problem, {}, inputs.callback);
   if (name == "fas-aposteriori") return solveAposteriori(problem, spec, inputs);
+  if (name == "fas-apriori") return solveApriori(problem, spec, inputs);
+  if (name == "latin-pgd") return solveLatinPgd(problem, spec, inputs);
   latin::LatinOptions options;
   options.tolerance = spec.tolerance;
   options.max_iterations = spec.max_iterations;

@@ -1,0 +1,48 @@
+#pragma once
+// The a priori coarse space of `fas-apriori` (METHOD.md §5; design card): PGD spatial modes built
+// during the iterations, plus residual vectors. Each cycle, the fine relaxation's displacement
+// history ũ (n_free × m: the exact global stage, ũ_k = A⁻¹ r_k with r_k = f_k + Bᵀ(λ_k + k v_k)) is
+// compared with the modes found so far; greedy rank-one enrichment (pgd/rank_one_enrichment.hpp,
+// alternating fixed point with the space problem x = ũ ψᵀ and the time problem ψ_k = Υᵀ r_k) adds
+// up to `modes_per_cycle` pairs for what the modes miss. The modes persist (up to `max_modes`);
+// N_res residual vectors of what they still miss are renewed every cycle (seed §4.3).
+// No SVD of a converged solution anywhere, and no product with A: r_k is known in separated form.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "fas/basis_provider.hpp"
+#include "pgd/energy_modes.hpp"
+#include "pgd/rank_one_enrichment.hpp"
+#include "pgd/separated_loads.hpp"
+#include "src/problem/problem.hpp"
+
+namespace stc::fas {
+
+struct AprioriBasisOptions {
+  int residual_vectors = 15;   ///< N_res, renewed every cycle
+  int modes_per_cycle = 4;     ///< rank-one pairs added per cycle at most
+  int max_modes = 30;          ///< PGD modes kept at most (then the modes stop growing)
+  /// A pair is kept only if its energy norm is above this fraction of ũ's (nothing left below).
+  double relative_energy_drop = 1e-8;
+  pgd::EnrichmentOptions enrichment;
+};
+
+class AprioriBasisProvider : public BasisProvider {
+ public:
+  /// `A` = K + Bᵀ k B (the global stage's operator).
+  AprioriBasisProvider(const Problem& problem, const Eigen::SparseMatrix<double>& A, AprioriBasisOptions options);
+  CoarseSpace coarseSpace(const Eigen::MatrixXd& u_tilde, const InterfaceHistory& s) override;
+  const pgd::EnergyModes& modes() const { return modes_; }
+
+ private:
+  /// Adds pairs for what the modes miss of ũ; returns ũ's coordinates c_k = Υᵀ A ũ_k on the modes.
+  Eigen::MatrixXd enrich(const Eigen::MatrixXd& u_tilde, const Eigen::MatrixXd& W);
+
+  const Problem& problem_;
+  const Eigen::SparseMatrix<double>& A_;
+  AprioriBasisOptions options_;
+  pgd::SeparatedLoads loads_;
+  pgd::EnergyModes modes_;
+};
+
+}  // namespace stc::fas
