@@ -111,7 +111,7 @@ TEST(SceneReader, ExampleSeedSceneHasEveryValueOfInterfaceMd) {
   EXPECT_EQ(s.solver.name, "fas-apriori");
   EXPECT_EQ(s.solver.tolerance, 1e-6);
   EXPECT_EQ(s.solver.max_iterations, 2000);
-  EXPECT_EQ(s.solver.search_scale, 1.0);
+  EXPECT_EQ(s.solver.search_scale, 4.0);
   EXPECT_EQ(s.solver.relaxation, 1.0);
   EXPECT_TRUE(s.output.vtu);
   EXPECT_EQ(s.output.vtu_stride, 1);
