@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The main job: install the dependencies, build in Release, solve the seed scene
-# (examples/scenes/hemicylinder.toml) with every available strategy, and draw the figures.
-# Results: results/hemicylinder/<solver>/ and results/hemicylinder/figures/*.png
+# (examples/scenes/hemicylinder.toml), draw the figures, then compare every available strategy
+# (work against precision, docs/compare.md).
+# Results: results/hemicylinder/<solver>/, results/hemicylinder/figures/*.png and the report
+# results/hemicylinder/compare/summary.md (with work_precision.csv, summary.csv, error_vs_*.png).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${STC_BUILD_DIR:-$root/build}
@@ -22,4 +24,7 @@ echo "== 4. figures"
 mkdir -p "$out/figures"
 gnuplot -e "run='$out'" scripts/plots/seed_figures.gp
 ls "$out"/figures/*.png
+echo "== 5. work against precision: every available strategy, 3 timed repeats, medians; --tol 1e-8 so that each runs past true error 1e-6 (docs/compare.md)"
+"$stc" compare "$scene" --repeats 3 --tol 1e-8 --out "$out/compare"
 echo "results in $root/$out/ (open solution.pvd in ParaView for the fields)"
+echo "work-precision report: $root/$out/compare/summary.md (plots: $root/$out/compare/error_vs_*.png)"
