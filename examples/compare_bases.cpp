@@ -1,51 +1,296 @@
 // Description
-//   A posteriori vs a priori coarse bases (design card; METHOD.md §4–5): on one scene, runs
-//   `latin`, `latin-pgd`, `fas-aposteriori`, `fas-apriori` (and `incremental`, the reference point),
-//   and prints per strategy the relaxations, sparse solves and wall time to reach true error 1e-2,
-//   1e-4, 1e-6. Work in progress (issue 6).
+//   A posteriori vs a priori coarse bases (design card; METHOD.md §4–5; issue 6). On one scene,
+//   runs `latin`, `latin-pgd`, `fas-aposteriori`, `fas-apriori` with the true error of every
+//   relaxation, and `incremental` as the reference point; times each strategy (median of --repeats
+//   runs without the error evaluation); counts the a posteriori SVD (and the solve it needs) apart;
+//   then checks the a priori basis against the SVD of the converged solution (principal angles,
+//   projection errors; the SVD is used here only, never on a solve path).
 // Sample run
-//   build/bin/compare_bases examples/scenes/hemicylinder.toml
+//   build/bin/compare_bases examples/scenes/hemicylinder.toml --out results/compare_bases
+//   build/bin/compare_bases examples/scenes/hemicylinder.toml --small --out /tmp/cb   (ctest case)
+// Options: SCENE, --out DIR, --set KEY=VALUE (repeatable), --small (mesh.arc_nodes=21,
+//   time.steps=21), --repeats N (timed runs per strategy, default 5).
+// Output in DIR: <strategy>.csv (relaxation,sparse_solves,indicator,error,wall_s,rank),
+//   summary.md (tables), compare_bases.gp and compare_bases.png (error against relaxations and
+//   against wall time).
+// Exit status: 0 ok, 1 bad input, 2 the check failed (fas-apriori must converge, agree with
+//   incremental to 1e-5 in energy, and reach 1e-4 in fewer relaxations than latin), 3 internal.
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
 #include <iostream>
-#include <optional>
+#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "fas/aposteriori_basis.hpp"
+#include "fas/apriori_basis.hpp"
+#include "fas/fas_solver.hpp"
 #include "fas/solve_by_name.hpp"
+#include "pgd/basis_verification.hpp"
+#include "pgd/displacement_history.hpp"
 #include "src/core/input_error.hpp"
 #include "src/scene/scene_reader.hpp"
 #include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
 
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+const std::vector<std::string> kStrategies = {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori"};
+const std::vector<double> kTargets = {1e-2, 1e-4, 1e-6};
+
+struct Options {
+  fs::path scene = "examples/scenes/hemicylinder.toml";
+  fs::path out = "results/compare_bases";
+  std::vector<std::string> overrides;
+  int repeats = 5;
+};
+
+Options parseArgs(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw stc::InputError(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--out") o.out = value();
+    else if (a == "--set") o.overrides.push_back(value());
+    else if (a == "--repeats") o.repeats = std::max(1, std::stoi(value()));
+    else if (a == "--small") o.overrides.insert(o.overrides.end(), {"mesh.arc_nodes=21", "time.steps=21"});
+    else if (!a.empty() && a[0] == '-') throw stc::InputError("unknown option " + a);
+    else o.scene = a;
+  }
+  return o;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+template <class F>
+double seconds(F&& f) {
+  const auto t0 = Clock::now();
+  f();
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+struct Setup {
+  stc::Scene scene;
+  stc::Problem problem;
+  stc::SolveResult incremental;
+  double incremental_s = 0.0;
+  std::unique_ptr<stc::SpdFactor> K;
+  std::unique_ptr<stc::ErrorReference> reference;
+};
+
+struct Run {
+  std::string name;
+  stc::SolveSummary summary;  ///< the run with the true error
+  double median_s = 0.0;      ///< median wall time of the timed runs (no error evaluation)
+};
+
+Run runStrategy(const Setup& st, const std::string& name, int repeats) {
+  stc::fas::StrategyInputs with_error;
+  with_error.reference = st.reference.get();
+  with_error.converged_lambda = &st.incremental.interface.lambda;
+  Run run{name, stc::fas::solveByName(name, st.problem, st.scene.solver, with_error).summary, 0.0};
+  stc::fas::StrategyInputs timed;
+  timed.converged_lambda = &st.incremental.interface.lambda;
+  std::vector<double> times;
+  for (int i = 0; i < repeats; ++i)
+    times.push_back(stc::fas::solveByName(name, st.problem, st.scene.solver, timed).summary.wall_s);
+  run.median_s = median(times);
+  return run;
+}
+
+// The first record at or below `target`, its wall time rescaled to the timed runs (the error run's
+// clock includes one true-error evaluation per record).
+const stc::IterationRecord* firstBelow(const Run& r, double target) {
+  for (const auto& h : r.summary.history)
+    if (h.error && *h.error <= target) return &h;
+  return nullptr;
+}
+double timedWall(const Run& r, const stc::IterationRecord& h) {
+  return r.summary.wall_s > 0 ? h.wall_s * r.median_s / r.summary.wall_s : h.wall_s;
+}
+
+void writeCsv(const fs::path& file, const Run& r) {
+  std::ofstream out(file);
+  out << "relaxation,sparse_solves,indicator,error,wall_s,rank\n" << std::setprecision(6);
+  for (const auto& h : r.summary.history)
+    out << h.relaxations << ',' << h.sparse_solves << ',' << h.indicator << ',' << h.error.value_or(NAN) << ','
+        << timedWall(r, h) << ',' << h.rank << '\n';
+}
+
+struct Verification {
+  std::vector<int> sizes;
+  std::vector<double> min_cosine, apriori_error, svd_error;
+  int apriori_rank = 0;
+  double full_apriori_error = 0.0;
+};
+
+// The a priori basis of one fas-apriori solve against the energy-SVD modes of the converged
+// solution, in the K_ff energy product.
+Verification verify(const Setup& st) {
+  stc::latin::GlobalStage global(st.problem);
+  stc::fas::AprioriBasisProvider provider(st.problem, global.matrix(), stc::fas::aprioriOptions(st.scene.solver));
+  stc::fas::solveFas(st.problem, global, provider, stc::fas::fasOptions(st.scene.solver), "fas-apriori");
+  const Eigen::MatrixXd& apriori = provider.modes().modes();
+  const Eigen::MatrixXd U = stc::displacementsFromForces(st.problem, *st.K, st.incremental.interface.lambda);
+  const Eigen::MatrixXd svd = stc::fas::aposterioriModes(st.problem, *st.K, st.incremental.interface.lambda, 20);
+  const auto& M = st.problem.stiffness_free;
+  Verification v;
+  v.apriori_rank = static_cast<int>(apriori.cols());
+  v.full_apriori_error = stc::pgd::projectionError(U, apriori, M);
+  for (int k : {2, 5, 10, 20}) {
+    if (k > svd.cols() || k > apriori.cols()) break;
+    v.sizes.push_back(k);
+    const Eigen::VectorXd c = stc::pgd::principalCosines(svd.leftCols(k), apriori, M);
+    v.min_cosine.push_back(c.size() ? c.minCoeff() : 0.0);
+    v.apriori_error.push_back(stc::pgd::projectionError(U, apriori.leftCols(k), M));
+    v.svd_error.push_back(stc::pgd::projectionError(U, svd.leftCols(k), M));
+  }
+  return v;
+}
+
+std::string cell(const Run& r, double target) {
+  const auto* h = firstBelow(r, target);
+  if (!h) return "·";
+  std::ostringstream s;
+  s << h->relaxations << " / " << h->sparse_solves << " / " << std::setprecision(3) << timedWall(r, *h);
+  return s.str();
+}
+
+void writeSummary(const fs::path& file, const Setup& st, const std::vector<Run>& runs, double svd_s,
+                  const Verification& v, const Options& o) {
+  std::ofstream md(file);
+  const auto& p = st.problem;
+  md << "# A posteriori vs a priori bases: " << p.name << "\n\n"
+     << p.numDofs() << " dofs, " << p.contact.size() << " contact nodes, " << p.numSteps()
+     << " instants, κ = " << st.scene.solver.search_scale << ", tolerance " << st.scene.solver.tolerance
+     << ", ν1 = ν2 = " << st.scene.solver.fas.pre_relaxations << ", i_C = " << st.scene.solver.fas.coarse_iterations
+     << ", N_res = " << st.scene.solver.fas.residual_vectors << ". Wall times: median of " << o.repeats
+     << " runs without the true-error evaluation.\n\n"
+     << "| strategy | status | relaxations | sparse solves | rank | final error | wall (s) |";
+  for (double t : kTargets) md << " to " << t << ": relax / solves / s |";
+  md << "\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  md << "| incremental | converged | · | · | · | 0 (reference) | " << std::setprecision(3) << st.incremental_s
+     << " | · | · | · |\n";
+  for (const auto& r : runs) {
+    const auto& last = r.summary.history.back();
+    md << "| " << r.name << " | " << toString(r.summary.termination) << " | " << r.summary.relaxations << " | "
+       << last.sparse_solves << " | " << last.rank << " | " << std::setprecision(2) << r.summary.error.value_or(NAN)
+       << " | " << std::setprecision(3) << r.median_s << " |";
+    for (double t : kTargets) md << ' ' << cell(r, t) << " |";
+    md << '\n';
+  }
+  md << "\nThe a posteriori SVD (energy SVD of the incremental solution, 20 modes) took " << std::setprecision(3)
+     << svd_s << " s, plus the incremental solve it needs (" << st.incremental_s
+     << " s); neither is in fas-aposteriori's wall time above.\n\n";
+  md << "## Ratios to LATIN (relaxations, wall time) to reach the true error\n\n| strategy |";
+  for (double t : kTargets) md << ' ' << t << " |";
+  md << "\n|---|---:|---:|---:|\n";
+  for (const auto& r : runs) {
+    md << "| " << r.name << " |";
+    for (double t : kTargets) {
+      const auto *h = firstBelow(r, t), *l = firstBelow(runs.front(), t);
+      if (!h || !l) md << " · |";
+      else md << ' ' << std::setprecision(2) << double(h->relaxations) / l->relaxations << ", "
+              << timedWall(r, *h) / timedWall(runs.front(), *l) << " |";
+    }
+    md << '\n';
+  }
+  md << "\n## The a priori basis against the SVD of the converged solution (K_ff energy)\n\n"
+     << "The fas-apriori basis has " << v.apriori_rank << " PGD modes (residual vectors excluded); "
+     << "projection error of the converged history on all of them: " << std::setprecision(2)
+     << v.full_apriori_error << ".\n\n| k | smallest cosine, SVD_k vs a priori basis | projection error on a priori modes 1..k"
+     << " | on SVD modes 1..k |\n|---:|---:|---:|---:|\n";
+  for (std::size_t i = 0; i < v.sizes.size(); ++i)
+    md << "| " << v.sizes[i] << " | " << std::setprecision(4) << v.min_cosine[i] << " | " << std::setprecision(2)
+       << v.apriori_error[i] << " | " << v.svd_error[i] << " |\n";
+  md << "\n![error against relaxations and wall time](compare_bases.png)\n";
+}
+
+void plot(const fs::path& dir) {
+  std::ofstream gp(dir / "compare_bases.gp");
+  gp << "set terminal pngcairo size 1200,480 font ',10'\nset output 'compare_bases.png'\n"
+     << "set datafile separator ','\nset logscale y\nset format y '10^{%L}'\nset key top right\n"
+     << "set multiplot layout 1,2\nset xlabel 'fine relaxations'\nset ylabel 'true error (energy, relative)'\n"
+     << "files = '" ;
+  for (const auto& s : kStrategies) gp << s << ' ';
+  gp << "'\nplot for [f in files] f.'.csv' using 1:4 with linespoints pt 7 ps 0.4 title f\n"
+     << "set xlabel 'wall time (s)'\nset logscale x\n"
+     << "plot for [f in files] f.'.csv' using 5:4 with linespoints pt 7 ps 0.4 title f\nunset multiplot\n";
+  gp.close();
+  const std::string cmd = "cd '" + dir.string() + "' && gnuplot compare_bases.gp";
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0 || std::system(cmd.c_str()) != 0)
+    std::cerr << "warning: no figure (gnuplot missing or failed); draw it later with: " << cmd << "\n";
+}
+
+Setup setUp(const Options& o) {
+  Setup st;
+  st.scene = stc::readScene(o.scene, o.overrides);
+  st.problem = stc::buildProblem(st.scene);
+  std::vector<double> times;
+  for (int i = 0; i < o.repeats; ++i) times.push_back(seconds([&] { st.incremental = stc::solveIncremental(st.problem); }));
+  st.incremental_s = median(times);
+  st.K = std::make_unique<stc::SpdFactor>(st.problem.stiffness_free, "K_ff");
+  const auto condensed = stc::CondensedInterface::build(st.problem, *st.K);
+  st.reference = std::make_unique<stc::ErrorReference>(st.problem, *st.K, condensed.delassus,
+                                                       st.incremental.interface.lambda);
+  return st;
+}
+
+bool check(const std::vector<Run>& runs) {
+  const Run& latin = runs.front();
+  const Run& apriori = runs.back();
+  const auto *a = firstBelow(apriori, 1e-4), *l = firstBelow(latin, 1e-4);
+  return apriori.summary.converged() && apriori.summary.error && *apriori.summary.error <= 1e-5 && a && l &&
+         a->relaxations < l->relaxations;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   try {
-    std::vector<std::string> overrides;
-    std::string scene_file = argc > 1 ? argv[1] : "examples/scenes/hemicylinder.toml";
-    for (int i = 2; i + 1 < argc; i += 2)
-      if (std::string(argv[i]) == "--set") overrides.push_back(argv[i + 1]);
-    const stc::Scene scene = stc::readScene(scene_file, overrides);
-    const stc::Problem problem = stc::buildProblem(scene);
-    const stc::SolveResult ref = stc::solveIncremental(problem);
-    const stc::SpdFactor K(problem.stiffness_free, "K_ff");
-    const auto condensed = stc::CondensedInterface::build(problem, K);
-    const stc::ErrorReference reference(problem, K, condensed.delassus, ref.interface.lambda);
-    for (const std::string name : {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori"}) {
-      stc::fas::StrategyInputs in;
-      in.reference = &reference;
-      in.converged_lambda = &ref.interface.lambda;
-      const auto r = stc::fas::solveByName(name, problem, scene.solver, in);
-      std::cout << name << ": " << toString(r.summary.termination) << " relax " << r.summary.relaxations
-                << " err " << r.summary.error.value_or(-1) << " wall " << r.summary.wall_s << "\n";
-      for (double target : {1e-2, 1e-4, 1e-6})
-        for (const auto& h : r.summary.history)
-          if (h.error && *h.error <= target) {
-            std::cout << "   to " << target << ": relax " << h.relaxations << " solves " << h.sparse_solves
-                      << " rank " << h.rank << " wall " << h.wall_s << "\n";
-            break;
-          }
+    const Options o = parseArgs(argc, argv);
+    const Setup st = setUp(o);
+    fs::create_directories(o.out);
+    std::vector<Run> runs;
+    for (const auto& name : kStrategies) {
+      runs.push_back(runStrategy(st, name, o.repeats));
+      writeCsv(o.out / (name + ".csv"), runs.back());
+      std::cout << name << ": " << toString(runs.back().summary.termination) << ", " << runs.back().summary.relaxations
+                << " relaxations, error " << runs.back().summary.error.value_or(NAN) << ", median "
+                << runs.back().median_s << " s\n";
     }
-  } catch (const std::exception& e) {
+    std::vector<double> svd_times;
+    for (int i = 0; i < o.repeats; ++i)
+      svd_times.push_back(seconds([&] { stc::fas::aposterioriModes(st.problem, *st.K, st.incremental.interface.lambda, 20); }));
+    const Verification v = verify(st);
+    writeSummary(o.out / "summary.md", st, runs, median(svd_times), v, o);
+    plot(o.out);
+    std::cout << "report: " << (o.out / "summary.md").string() << "\n";
+    if (!check(runs)) {
+      std::cerr << "check failed: fas-apriori must converge, agree with incremental to 1e-5 and beat latin to 1e-4\n";
+      return 2;
+    }
+    return 0;
+  } catch (const stc::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "internal error: " << e.what() << "\n";
+    return 3;
   }
 }

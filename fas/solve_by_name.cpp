@@ -11,7 +11,6 @@
 #include "src/solver/incremental_solver.hpp"
 
 namespace stc::fas {
-namespace {
 
 FasOptions fasOptions(const SolverSpec& spec) {
   FasOptions o;
@@ -24,6 +23,14 @@ FasOptions fasOptions(const SolverSpec& spec) {
   o.start = spec.fas.coarse_start == "mismatch" ? CoarseStart::InterfaceMismatch : CoarseStart::ZeroCorrection;
   return o;
 }
+
+AprioriBasisOptions aprioriOptions(const SolverSpec& spec) {
+  AprioriBasisOptions basis;
+  basis.residual_vectors = spec.fas.residual_vectors;
+  return basis;
+}
+
+namespace {
 
 SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
   const SpdFactor K(problem.stiffness_free, "K_ff");
@@ -38,9 +45,7 @@ SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, con
 
 SolveResult solveApriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
   latin::GlobalStage global(problem);
-  AprioriBasisOptions basis;
-  basis.residual_vectors = spec.fas.residual_vectors;
-  AprioriBasisProvider provider(problem, global.matrix(), basis);
+  AprioriBasisProvider provider(problem, global.matrix(), aprioriOptions(spec));
   return solveFas(problem, global, provider, fasOptions(spec), "fas-apriori", inputs.reference, inputs.callback);
 }
 

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "fas/apriori_basis.hpp"
+#include "fas/fas_options.hpp"
 #include "src/problem/problem.hpp"
 #include "src/scene/scene.hpp"
 #include "src/solver/error_reference.hpp"
@@ -25,6 +27,11 @@ struct StrategyInputs {
   const Eigen::MatrixXd* converged_lambda = nullptr;
   IterationCallback callback;
 };
+
+/// The FAS options and the a priori basis options a SolverSpec sets (for programs that build the
+/// FAS themselves, e.g. to inspect the basis).
+FasOptions fasOptions(const SolverSpec& spec);
+AprioriBasisOptions aprioriOptions(const SolverSpec& spec);
 
 SolveResult solveByName(const std::string& name, const Problem& problem, const SolverSpec& spec,
                         const StrategyInputs& inputs = {});

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "latin/global_stage.hpp"
+#include "pgd/basis_verification.hpp"
 #include "pgd/energy_modes.hpp"
 #include "pgd/rank_one_enrichment.hpp"
 #include "pgd/separated_loads.hpp"
@@ -79,4 +80,20 @@ TEST(RankOneEnrichment, UpdateIsExactWhenTheModesSpanTheSolutions) {
   const Eigen::MatrixXd exact = f.global.factor().solve(Eigen::MatrixXd(loads.F * loads.G + B.transpose() * W));
   const Eigen::MatrixXd updated = modes.modes() * stc::pgd::updateTimeFunctions(modes, loads.G, W);
   EXPECT_LE(f.energyNorm(updated - exact), 1e-10 * f.energyNorm(exact));
+}
+
+TEST(BasisVerification, AnglesAndProjectionErrorsOfKnownSubspaces) {
+  const auto& f = fixture();
+  const int n = f.problem.numFreeDofs();
+  const Eigen::MatrixXd X = Eigen::MatrixXd::Random(n, 3);
+  Eigen::MatrixXd Y(n, 3);  // shares two directions with X, the third is new
+  Y << X.col(0) + X.col(1), X.col(2), Eigen::VectorXd::Random(n);
+  const Eigen::VectorXd cosines = stc::pgd::principalCosines(X, Y, f.A());
+  ASSERT_EQ(cosines.size(), 3);
+  EXPECT_NEAR(cosines[0], 1.0, 1e-12);
+  EXPECT_NEAR(cosines[1], 1.0, 1e-12);
+  EXPECT_LT(cosines[2], 0.9);
+  const Eigen::MatrixXd U = X * Eigen::MatrixXd::Random(3, 7);
+  EXPECT_LE(stc::pgd::projectionError(U, X, f.A()), 1e-7);  // sqrt of a round-off difference
+  EXPECT_GT(stc::pgd::projectionError(U, Y, f.A()), 1e-3);
 }
