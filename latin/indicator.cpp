@@ -10,13 +10,18 @@ double searchNormSquared(const Eigen::VectorXd& k, const Eigen::MatrixXd& v, con
 
 double indicator(const Eigen::VectorXd& k, const InterfaceHistory& s, const InterfaceHistory& hat) {
   // One pass over the four histories (this runs every iteration; four temporaries cost 2x more).
+  // Terms as (√k v)² and (λ/√k)²: k v² and λ²/k are of one size, λ² alone overflows first
+  // (|λ| > 1e154, e.g. a scene with E = 1e300), which turned η into NaN.
+  const Eigen::ArrayXd sqrt_k = k.array().sqrt(), inv_sqrt_k = sqrt_k.inverse();
   double diff = 0.0, sum = 0.0;
   const Eigen::Index rows = s.v.rows();
   for (Eigen::Index col = 0; col < s.v.cols(); ++col)
     for (Eigen::Index r = 0; r < rows; ++r) {
       const double v0 = s.v(r, col), v1 = hat.v(r, col), l0 = s.lambda(r, col), l1 = hat.lambda(r, col);
-      diff += k[r] * (v0 - v1) * (v0 - v1) + (l0 - l1) * (l0 - l1) / k[r];
-      sum += k[r] * (v0 + v1) * (v0 + v1) + (l0 + l1) * (l0 + l1) / k[r];
+      const double dv = sqrt_k[r] * (v0 - v1), dl = (l0 - l1) * inv_sqrt_k[r];
+      const double sv = sqrt_k[r] * (v0 + v1), sl = (l0 + l1) * inv_sqrt_k[r];
+      diff += dv * dv + dl * dl;
+      sum += sv * sv + sl * sl;
     }
   if (sum == 0.0) return diff == 0.0 ? 0.0 : 1.0;
   return std::sqrt(diff) / (0.5 * std::sqrt(sum));

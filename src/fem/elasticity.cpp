@@ -1,5 +1,6 @@
 #include "src/fem/elasticity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -51,6 +52,20 @@ Eigen::SparseMatrix<double> assembleStiffness(const Mesh& mesh, const Eigen::Mat
   return K;
 }
 
+namespace {
+
+// σ_vm = sqrt(½((σxx − σyy)² + (σyy − σzz)² + (σzz − σxx)²) + 3 σxy²), computed on the stresses
+// divided by the largest |component| so that the squares cannot overflow where σ itself does not
+// (a scene with E = 1e300 has finite stresses, and its VTU output must stay finite).
+double vonMises(double sxx, double syy, double sxy, double szz) {
+  const double scale = std::max({std::abs(sxx), std::abs(syy), std::abs(sxy), std::abs(szz)});
+  if (!(scale > 0.0) || !std::isfinite(scale)) return scale == 0.0 ? 0.0 : scale;
+  const double a = sxx / scale, b = syy / scale, c = sxy / scale, d = szz / scale;
+  return scale * std::sqrt(0.5 * ((a - b) * (a - b) + (b - d) * (b - d) + (d - a) * (d - a)) + 3.0 * c * c);
+}
+
+}  // namespace
+
 Eigen::Matrix<double, 5, Eigen::Dynamic> elementStresses(const Mesh& mesh, const MaterialSpec& material,
                                                           PlaneModel plane, const Eigen::VectorXd& u) {
   const Eigen::Matrix3d D = hookeMatrix(material, plane);
@@ -60,9 +75,7 @@ Eigen::Matrix<double, 5, Eigen::Dynamic> elementStresses(const Mesh& mesh, const
     for (int a = 0; a < 3; ++a) ue.segment<2>(2 * a) = u.segment<2>(2 * mesh.triangles(a, e));
     const Eigen::Vector3d s = D * (strainDisplacement(mesh, e) * ue);
     const double szz = plane == PlaneModel::Strain ? material.poisson * (s(0) + s(1)) : 0.0;
-    const double vm = std::sqrt(0.5 * ((s(0) - s(1)) * (s(0) - s(1)) + (s(1) - szz) * (s(1) - szz) +
-                                       (szz - s(0)) * (szz - s(0))) + 3.0 * s(2) * s(2));
-    out.col(e) << s(0), s(1), s(2), szz, vm;
+    out.col(e) << s(0), s(1), s(2), szz, vonMises(s(0), s(1), s(2), szz);
   }
   return out;
 }

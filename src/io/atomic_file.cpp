@@ -182,6 +182,7 @@ void ensureWritableDirectory(const fs::path& dir) {
   if (dir.empty()) throw OutputError("output folder path is empty");
   const std::string quoted = "output folder '" + dir.string() + "'";
   std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw OutputError(quoted + " exists and is not a folder");
   fs::create_directories(dir, ec);
   if (ec) throw OutputError("cannot create " + quoted + ": " + ec.message());
   if (!fs::is_directory(dir, ec)) throw OutputError(quoted + " exists and is not a folder");

@@ -107,6 +107,10 @@ Problem buildProblem(const Scene& scene) {
   p.times = uniformGrid(scene.time);
   p.stiffness = assembleStiffness(p.mesh, hookeMatrix(p.material, p.plane));
 
+  for (std::size_t j = 0; j < scene.dirichlet.size(); ++j)  // name the entry whose boundary is missing
+    withContext(scene, "dirichlet[" + std::to_string(j) + "].boundary", [&] { p.mesh.group(scene.dirichlet[j].boundary); });
+  for (std::size_t j = 0; j < scene.loads.size(); ++j)
+    withContext(scene, "load[" + std::to_string(j) + "].boundary", [&] { p.mesh.group(scene.loads[j].boundary); });
   const std::vector<int> owner = withContext(scene, "dirichlet", [&] { return prescribedBy(p.mesh, scene.dirichlet); });
   p.free_index.assign(p.numDofs(), -1);
   for (int dof = 0; dof < p.numDofs(); ++dof)

@@ -17,8 +17,14 @@ class ErrorReference {
   ErrorReference(const Problem& problem, const SpdFactor& stiffness_free, Eigen::MatrixXd delassus,
                  Eigen::MatrixXd lambda_ref);
 
-  /// Relative energy error of an equilibrated iterate given by its contact forces.
+  /// Relative energy error of an equilibrated iterate given by its contact forces; NaN when
+  /// undefined (see defined()).
   double relativeError(const Eigen::MatrixXd& lambda) const;
+  /// False when the reference's strain energy is zero to round-off (a rigid motion without
+  /// contact): the relative error is then 0/0, and its value would be noise (e.g. 1e3 for a
+  /// correct iterate). Round-off: Σ uᵀKu has an absolute error up to γ_n Σ |u|ᵀ|K||u|,
+  /// γ_n ≈ n ε (Higham, Accuracy and Stability, §3.1), n the number of dofs.
+  bool defined() const { return defined_; }
   /// Σ_k u_ref,kᵀ K u_ref,k (full field, full K).
   double referenceEnergy() const { return reference_energy_; }
   const Eigen::MatrixXd& referenceForces() const { return lambda_ref_; }
@@ -27,6 +33,7 @@ class ErrorReference {
   Eigen::MatrixXd delassus_;
   Eigen::MatrixXd lambda_ref_;
   double reference_energy_ = 0.0;
+  bool defined_ = true;
 };
 
 /// Σ_k u_kᵀ K u_k for full displacements rebuilt from free ones (n_free × m).

@@ -21,7 +21,7 @@ bool IterationMonitor::record(int relaxations, double indicator, const Eigen::Ma
   r.iteration = static_cast<int>(summary_.history.size()) + 1;
   r.relaxations = relaxations;
   r.indicator = indicator;
-  if (reference_) r.error = reference_->relativeError(lambda);
+  if (reference_ && reference_->defined()) r.error = reference_->relativeError(lambda);
   r.rank = rank;
   r.sparse_solves = static_cast<int>(sparse_solves);
   r.wall_s = elapsed();
