@@ -126,6 +126,7 @@ struct GmshData {
   std::vector<long long> node_tags;
   std::vector<Eigen::Vector2d> coords;
   std::vector<std::array<int, 3>> triangles;
+  std::vector<std::pair<long long, int>> triangle_origin;  ///< (element tag, line) per triangle
   std::map<long long, std::vector<RawEdge>> curve_edges;  ///< curve -> its line elements
 };
 
@@ -289,7 +290,10 @@ long long readElementBlock(LineReader& r, GmshData& data) {
                ", which $Nodes does not list");
       nodes[a] = it->second;
     }
-    if (type == 2) data.triangles.push_back(nodes);
+    if (type == 2) {
+      data.triangles.push_back(nodes);
+      data.triangle_origin.emplace_back(tag, r.lineNumber());
+    }
     if (type == 1) data.curve_edges[entity].push_back({{nodes[0], nodes[1]}, tag, r.lineNumber()});
   }
   return n;
@@ -334,6 +338,24 @@ void buildNodesAndTriangles(const GmshData& data, std::vector<int>& index, Mesh&
   for (int e = 0; e < mesh.numElements() && all_clockwise; ++e)
     all_clockwise = mesh.twiceSignedArea(e) < 0;
   if (all_clockwise) mesh.triangles.row(1).swap(mesh.triangles.row(2));
+}
+
+/// After orientation: a triangle that is still clockwise (mixed orientation), or flat, is named by
+/// its Gmsh element tag and line, which a user can find in the file (Mesh::validate, which runs
+/// next, only knows the position in the mesh). Flat: |area| <= 1e-12 x the mean, as validate.
+void checkTriangles(const GmshData& data, const Mesh& mesh, const std::string& source) {
+  double mean = 0.0;
+  for (int e = 0; e < mesh.numElements(); ++e) mean += std::abs(mesh.twiceSignedArea(e));
+  mean /= std::max(1, mesh.numElements());
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const double area2 = mesh.twiceSignedArea(e);
+    const bool flat = !(std::abs(area2) > 1e-12 * mean);
+    if (!flat && area2 > 0.0) continue;
+    const auto [tag, line] = data.triangle_origin[static_cast<std::size_t>(e)];
+    throw InputError(source + ": line " + std::to_string(line) + ": triangle " + std::to_string(tag) +
+                     (flat ? " is degenerate (zero area)"
+                           : " is inverted (its nodes run clockwise, the other triangles' counter-clockwise)"));
+  }
 }
 
 /// Turns the line elements of every curve into edges of that curve's named physical groups.
@@ -392,6 +414,7 @@ Mesh parseGmsh(std::istream& in, const std::string& source_name) {
   Mesh mesh;
   std::vector<int> index;
   buildNodesAndTriangles(data, index, mesh);
+  checkTriangles(data, mesh, source_name);
   buildGroups(data, index, source_name, mesh);
   mesh.finalizeGroups();
   try {

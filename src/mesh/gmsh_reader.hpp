@@ -20,9 +20,9 @@
 //
 // Orientation: Gmsh writes the triangles of a plane surface with one orientation, that of the
 // surface's normal. If every triangle is clockwise (a surface whose normal is -z), all are
-// flipped to counter-clockwise. If only some are, nothing is flipped, so that Mesh::validate()
-// reports the first inverted element: a mixed orientation means a broken file, which no silent
-// repair should hide. Element numbers in such messages count the file's triangles from 0.
+// flipped to counter-clockwise. If only some are, nothing is flipped and the first inverted (or
+// flat) triangle is an InputError naming its element tag and line: a mixed orientation means a
+// broken file, which no silent repair should hide.
 //
 // Every error is an InputError whose message starts with the file name and, where it points at
 // a line, the line number: "part.msh: line 57: expected 3 numbers (x y z) for node 12, found 2",

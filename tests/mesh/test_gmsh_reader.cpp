@@ -129,7 +129,15 @@ TEST(GmshReader, FlipsMeshWhoseTrianglesAreAllClockwise) {
 TEST(GmshReader, ReportsInvertedElementOfMixedOrientationByName) {
   const std::string message = errorOf(replaced(kSquare, "\n5 1 3 4\n", "\n5 1 4 3\n"));
   EXPECT_EQ(message.rfind("square.msh: ", 0), 0u) << message;
-  EXPECT_NE(message.find("element 1 is inverted"), std::string::npos) << message;
+  // Named by the file's element tag (5) and its line, not by its position among the triangles.
+  EXPECT_NE(message.find(": triangle 5 is inverted"), std::string::npos) << message;
+  EXPECT_NE(message.find(": line "), std::string::npos) << message;
+}
+
+TEST(GmshReader, ReportsFlatTriangleByTag) {
+  // Node 3 moved onto the line through nodes 1 and 4 (x = 0): triangle 5 = (1, 3, 4) has no area.
+  const std::string message = errorOf(replaced(kSquare, "\n1 1 0\n", "\n0 0.5 0\n"));
+  EXPECT_NE(message.find("triangle 5 is degenerate"), std::string::npos) << message;
 }
 
 // Every cut at a line boundary (the complete text excepted) is refused as truncated, and so is
