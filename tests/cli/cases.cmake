@@ -34,3 +34,64 @@ set_tests_properties(cli.solve_writes_every_output PROPERTIES DEPENDS cli.solve_
 
 # A posteriori space-time SVD (METHOD.md §3): prints the modes for 99%, 99.9%, 99.99% of the energy.
 stc_cli_test(svd_small 0 "99.9" svd ${seed} ${small} --out ${out}/svd)
+
+# Bad input through `solve` (issue 8): exit 1, one "error:" line naming the key, file or entity and
+# the rule, and no output folder created: the refusal comes before anything is written.
+set(refused ${CMAKE_CURRENT_BINARY_DIR}/refused)
+function(stc_cli_refused name pattern scene)
+  add_test(NAME cli.refuse_${name}
+           COMMAND bash ${expect} --absent ${refused}/${name} 1 "${pattern}"
+                   ${cli} solve ${scene} --solver latin --out ${refused}/${name} ${ARGN})
+  set_tests_properties(cli.refuse_${name} PROPERTIES LABELS cli)
+endfunction()
+set(trunc ${bad}/truncated.toml)
+stc_cli_refused(malformed_toml "malformed\\.toml:2:[0-9]+: TOML syntax error" ${bad}/malformed.toml)
+stc_cli_refused(missing_scene "no_such_scene\\.toml: cannot open" ${bad}/no_such_scene.toml)
+stc_cli_refused(unknown_key "unknown key 'contact\\.frction'" ${seed} ${small} --set contact.frction=0.3)
+stc_cli_refused(unknown_table "unknown key 'solvers'" ${seed} ${small} --set solvers.name=latin)
+stc_cli_refused(wrong_type_float_for_int "key 'time\\.steps' must be an integer, got a float" ${seed} --set time.steps=2.5)
+stc_cli_refused(wrong_type_string_for_number "key 'material\\.young' must be a number, got a string" ${seed}
+                --set material.young=abc)
+stc_cli_refused(wrong_type_number_for_array "key 'obstacle\\.normal' must be an array" ${seed} --set obstacle.normal=1.0)
+stc_cli_refused(nan_young "key 'material\\.young' = nan is not a finite number" ${seed} --set material.young=nan)
+stc_cli_refused(inf_friction "key 'contact\\.friction' = inf is not a finite number" ${seed} --set contact.friction=inf)
+stc_cli_refused(nan_in_history "key 'dirichlet\\[0\\]\\.values\\[1\\]' = nan is not a finite number" ${seed}
+                "--set" "dirichlet[0].values=[0.0, nan, 0.05]")
+stc_cli_refused(young_zero "key 'material\\.young' = 0 is out of range: must be > 0" ${seed} --set material.young=0)
+stc_cli_refused(young_negative "key 'material\\.young' = -3000 is out of range: must be > 0" ${seed}
+                --set material.young=-3000)
+stc_cli_refused(poisson_half "key 'material\\.poisson' = 0\\.5 is out of range: must be in \\(-1, 0\\.5\\)" ${seed}
+                --set material.poisson=0.5)
+stc_cli_refused(poisson_above_half "key 'material\\.poisson' = 0\\.6 is out of range" ${seed} --set material.poisson=0.6)
+stc_cli_refused(friction_negative "key 'contact\\.friction' = -0\\.1 is out of range: must be >= 0" ${seed}
+                --set contact.friction=-0.1)
+stc_cli_refused(one_step "key 'time\\.steps' = 1 is out of range: must be >= 2" ${seed} --set time.steps=1)
+stc_cli_refused(times_repeated "key 'dirichlet\\[0\\]\\.times' must be strictly increasing, but entry 2 = 0\\.2 follows 0\\.2"
+                ${seed} "--set" "dirichlet[0].times=[0.0, 0.2, 0.2]")
+stc_cli_refused(times_decreasing "key 'dirichlet\\[1\\]\\.times' must be strictly increasing, but entry 2 = 0\\.1 follows 0\\.2"
+                ${seed} "--set" "dirichlet[1].times=[0.0, 0.2, 0.1]")
+stc_cli_refused(empty_boundary "key 'contact\\.boundary' must not be empty" ${seed} "--set" "contact.boundary=\"\"")
+stc_cli_refused(unknown_contact_boundary "key 'contact\\.boundary': boundary 'rim' is not in the mesh \\(it has: 'arc' 'top'\\)"
+                ${seed} --set contact.boundary=rim)
+stc_cli_refused(unknown_dirichlet_boundary "key 'dirichlet\\[1\\]\\.boundary': boundary 'rim' is not in the mesh" ${seed}
+                "--set" "dirichlet[1].boundary=rim")
+stc_cli_refused(inverted_element "inverted\\.msh: line 36: triangle 4 is inverted" ${bad}/inverted.toml)
+stc_cli_refused(initial_penetration "contact node [0-9]+ at \\(.*\\) starts inside the obstacle \\(initial gap -[0-9.e-]+ < 0"
+                ${seed} "--set" "obstacle.point=[0.0, -0.99]")
+stc_cli_refused(missing_mesh "cannot open mesh file '.*no_such\\.msh'" ${trunc} --set mesh.file=no_such.msh)
+stc_cli_refused(empty_mesh "empty\\.msh: empty file" ${trunc} --set mesh.file=empty.msh)
+stc_cli_refused(truncated_mesh "truncated\\.msh: line 1123: expected 3 numbers \\(x y z\\) for node 455" ${trunc})
+stc_cli_refused(tol_nan "--tol must be > 0" ${seed} ${small} --tol nan)
+stc_cli_refused(max_iterations_zero "--max-iterations must be >= 1" ${seed} ${small} --max-iterations 0)
+
+# Unwritable output folders: refused before the solve, and nothing created or changed.
+stc_cli_test(refuse_out_in_proc 1 "cannot create output folder '/proc/stcontact-out'" solve ${seed} ${small}
+             --solver latin --out /proc/stcontact-out)
+# --out names an existing file: refused, and the file keeps its content (no temporary left beside it).
+set(out_file ${refused}/out_is_a_file/file)
+add_test(NAME cli.refuse_out_is_a_file
+         COMMAND bash -c "rm -rf ${refused}/out_is_a_file && mkdir -p ${refused}/out_is_a_file && echo keep >${out_file} \
+           && bash ${expect} 1 \"output folder '${out_file}' exists and is not a folder\" ${cli} solve ${seed} \
+                --solver latin --out ${out_file} \
+           && [ \"$(cat ${out_file})\" = keep ] && [ \"$(ls -A ${refused}/out_is_a_file)\" = file ]")
+set_tests_properties(cli.refuse_out_is_a_file PROPERTIES LABELS cli)
