@@ -27,6 +27,8 @@ FasOptions fasOptions(const SolverSpec& spec) {
 AprioriBasisOptions aprioriOptions(const SolverSpec& spec) {
   AprioriBasisOptions basis;
   basis.residual_vectors = spec.fas.residual_vectors;
+  basis.max_modes = spec.fas.pgd_max_modes;
+  basis.modes_per_cycle = spec.fas.pgd_modes_per_cycle;
   return basis;
 }
 

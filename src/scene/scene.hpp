@@ -79,6 +79,8 @@ struct FasSpec {
   int coarse_iterations = 15;   ///< i_C >= 1
   int residual_vectors = 15;    ///< N_res >= 0
   int svd_modes = 10;           ///< fas-aposteriori: leading energy-SVD modes of the converged solution (>= 0)
+  int pgd_max_modes = 30;       ///< fas-apriori: PGD modes kept at most (>= 0; 0: residual vectors only)
+  int pgd_modes_per_cycle = 4;  ///< fas-apriori: rank-one pairs added per cycle at most (>= 1)
   std::string coarse_start = "zero";  ///< "zero" (METHOD.md §4 option a) or "mismatch" (option b)
 };
 

@@ -233,6 +233,8 @@ FasSpec readFas(const TableView& solver) {
   readCount(solver, "coarse_iterations", 1, fas.coarse_iterations);
   readCount(solver, "residual_vectors", 0, fas.residual_vectors);
   readCount(solver, "svd_modes", 0, fas.svd_modes);
+  readCount(solver, "pgd_max_modes", 0, fas.pgd_max_modes);
+  readCount(solver, "pgd_modes_per_cycle", 1, fas.pgd_modes_per_cycle);
   if (solver.has("coarse_start")) fas.coarse_start = readKeyword(solver, "coarse_start", {"zero", "mismatch"});
   return fas;
 }
@@ -241,7 +243,8 @@ SolverSpec readSolver(const TableView& root) {
   SolverSpec spec;
   const auto solver = root.optionalTable(
       "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
-                 "post_relaxations", "coarse_iterations", "residual_vectors", "svd_modes", "coarse_start"});
+                 "post_relaxations", "coarse_iterations", "residual_vectors", "svd_modes", "coarse_start",
+                 "pgd_max_modes", "pgd_modes_per_cycle"});
   if (!solver) return spec;
   if (solver->has("name")) {
     spec.name = readKeyword(
