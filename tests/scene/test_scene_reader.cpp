@@ -335,6 +335,30 @@ TEST(SceneReaderErrors, OtherRangesAreChecked) {
               HasSubstr("'contact.length_scale' = -1"));
 }
 
+TEST(SceneReader, FasKeysAreRead) {
+  const Scene s = parseScene(kSeed + "pre_relaxations = 2\npost_relaxations = 0\ncoarse_iterations = 7\n"
+                                     "residual_vectors = 5\nsvd_modes = 4\npgd_max_modes = 12\n"
+                                     "pgd_modes_per_cycle = 2\ncoarse_start = \"mismatch\"\n",
+                             kSource);
+  EXPECT_EQ(s.solver.fas.pre_relaxations, 2);
+  EXPECT_EQ(s.solver.fas.post_relaxations, 0);
+  EXPECT_EQ(s.solver.fas.coarse_iterations, 7);
+  EXPECT_EQ(s.solver.fas.residual_vectors, 5);
+  EXPECT_EQ(s.solver.fas.svd_modes, 4);
+  EXPECT_EQ(s.solver.fas.pgd_max_modes, 12);
+  EXPECT_EQ(s.solver.fas.pgd_modes_per_cycle, 2);
+  EXPECT_EQ(s.solver.fas.coarse_start, "mismatch");
+}
+
+TEST(SceneReaderErrors, FasRangesAreChecked) {
+  EXPECT_THAT(errorOf(kSeed + "pre_relaxations = 0\n"), HasSubstr("'solver.pre_relaxations' = 0"));
+  EXPECT_THAT(errorOf(kSeed + "post_relaxations = -1\n"), HasSubstr("'solver.post_relaxations' = -1"));
+  EXPECT_THAT(errorOf(kSeed + "coarse_iterations = 0\n"), HasSubstr("'solver.coarse_iterations' = 0"));
+  EXPECT_THAT(errorOf(kSeed + "pgd_max_modes = -1\n"), HasSubstr("'solver.pgd_max_modes' = -1"));
+  EXPECT_THAT(errorOf(kSeed + "pgd_modes_per_cycle = 0\n"), HasSubstr("'solver.pgd_modes_per_cycle' = 0"));
+  EXPECT_THAT(errorOf(kSeed + "coarse_start = \"middle\"\n"), HasSubstr("solver.coarse_start"));
+}
+
 TEST(SceneReaderErrors, TimesNotStrictlyIncreasingAreNamed) {
   const std::string text = seedWith("times  = [0.0, 0.2, 1.0]\nvalues = [0.0, -0.01",
                                     "times  = [0.0, 0.2, 0.2]\nvalues = [0.0, -0.01");
