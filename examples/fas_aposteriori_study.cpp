@@ -14,7 +14,8 @@
 // Options: [SCENE] (default: the seed scene), --out DIR (default results/fas_aposteriori),
 //   --set KEY=VALUE (repeatable, passed to readScene), --small (mesh.arc_nodes=21, time.steps=21,
 //   four runs: the ctest case examples.fas_aposteriori_study_small), --max-relaxations N (cap per
-//   run, default 600).
+//   run, default 600), --safeguard (FAS with the coarse-step safeguard of FasOptions, the library
+//   default; without it the seed's plain cycle, which its figures show).
 // Steps: 1 scene · 2 reference, true-error measure, SVD modes · 3 runs (one CSV each) ·
 //   4 coarse-step cost · 5 figures (gnuplot) · 6 summary.md · 7 check: FAS (10 SVD + 15 RES,
 //   ν = 2) reaches true error 1e-4 in fewer relaxations than LATIN.
@@ -62,6 +63,7 @@ struct Options {
   std::vector<std::string> overrides;
   bool small = false;
   bool help = false;
+  bool safeguard = false;  ///< --safeguard: FAS with the coarse-step safeguard (library default)
   int max_relaxations = 600;
   int repeats = 31;  ///< timing repeats of step 4 (median)
 };
@@ -80,6 +82,8 @@ Options parseArgs(int argc, char** argv) {
       o.overrides.push_back(value(i));
     else if (a == "--small")
       o.small = true;
+    else if (a == "--safeguard")
+      o.safeguard = true;
     else if (a == "--max-relaxations") {
       const std::string v = value(i);
       try {
@@ -145,6 +149,7 @@ struct Study {
   std::unique_ptr<stc::ErrorReference> reference;
   Eigen::MatrixXd modes;  ///< n_free × (≤ kMaxModes) energy-SVD modes of the converged solution
   double incremental_s = 0.0, svd_s = 0.0;
+  bool safeguard = false;  ///< FasOptions::safeguard (off: the seed's plain cycle, as in its figures)
 };
 
 stc::SolveResult runOne(const Study& st, const RunSpec& r, stc::latin::GlobalStage& global, int cap) {
@@ -168,6 +173,7 @@ stc::SolveResult runOne(const Study& st, const RunSpec& r, stc::latin::GlobalSta
   o.residual_vectors = r.res;
   o.start = r.start;
   o.stagnation_window = 150;
+  o.safeguard = st.safeguard;
   const int m = std::min<int>(r.modes, static_cast<int>(st.modes.cols()));
   stc::fas::FixedBasisProvider provider(st.modes.leftCols(m), r.res, global.matrix(), st.problem.contact.B);
   return stc::fas::solveFas(st.problem, global, provider, o, "fas-aposteriori", st.reference.get(), stop);
@@ -336,7 +342,8 @@ void writeSummary(const fs::path& file, const Options& opt, const Study& st, con
   md << ": " << st.problem.numDofs() << " dofs, " << st.problem.contact.size() << " contact nodes, "
      << st.problem.numSteps() << " instants, kappa = " << st.scene.solver.search_scale << ". Relaxation cap "
      << opt.max_relaxations << ", runs stop at true error <= 1e-8 or indicator <= 1e-9, "
-     << "stagnation window 150; i_C = 15.\n\n"
+     << "stagnation window 150; i_C = 15; FAS cycle "
+     << (opt.safeguard ? "with the coarse-step safeguard" : "plain (the seed's, no safeguard)") << ".\n\n"
      << "Incremental reference: " << sci(st.incremental_s, 3)
      << " s. Energy SVD modes (a posteriori cost): " << sci(st.svd_s, 3) << " s. Whole study: " << sci(total_s, 3)
      << " s.\n\n"
@@ -448,6 +455,7 @@ void drawFigures(const fs::path& out, const std::vector<Figure>& figs, const std
 
 Study prepare(const Options& opt) {
   Study st;
+  st.safeguard = opt.safeguard;
   st.scene = stc::readScene(opt.scene, opt.overrides);
   st.problem = stc::buildProblem(st.scene);
   std::cout << "1. Scene " << opt.scene.string() << ": " << st.problem.numDofs() << " dofs, "
@@ -500,7 +508,7 @@ bool check(const std::vector<Outcome>& all) {
 int run(const Options& opt) {
   const auto t0 = Clock::now();
   std::cout << "Options: scene " << opt.scene.string() << ", --out " << opt.out.string()
-            << (opt.small ? ", --small" : "") << ", --max-relaxations " << opt.max_relaxations;
+            << (opt.small ? ", --small" : "") << (opt.safeguard ? ", --safeguard" : "") << ", --max-relaxations " << opt.max_relaxations;
   for (const auto& s : opt.overrides) std::cout << ", --set " << s;
   std::cout << "\n";
   fs::create_directories(opt.out);
@@ -530,7 +538,7 @@ int main(int argc, char** argv) {
     const Options options = parseArgs(argc, argv);
     if (options.help) {
       std::cout << "usage: fas_aposteriori_study [SCENE] [--out DIR] [--set KEY=VALUE]... [--small] "
-                   "[--max-relaxations N]\n";
+                   "[--max-relaxations N] [--safeguard]\n";
       return 0;
     }
     return run(options);

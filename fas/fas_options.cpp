@@ -19,6 +19,7 @@ void FasOptions::validate() const {
   require(post_relaxations >= 0, "post_relaxations", post_relaxations, "must be >= 0");
   require(coarse_iterations >= 1, "coarse_iterations", coarse_iterations, "must be >= 1");
   require(residual_vectors >= 0, "residual_vectors", residual_vectors, "must be >= 0");
+  require(max_skip >= 1, "max_skip", max_skip, "must be >= 1");
   require(stagnation_window >= 0, "stagnation_window", stagnation_window, "must be >= 0");
   require(block_size >= 1, "block_size", block_size, "must be >= 1");
 }

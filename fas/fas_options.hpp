@@ -16,6 +16,13 @@ struct FasOptions {
   int coarse_iterations = 15;     ///< i_C: coarse linear stage + fine local stage pairs (seed: 15)
   int residual_vectors = 15;      ///< N_res, renewed every cycle (seed §4.3: 15)
   CoarseStart start = CoarseStart::ZeroCorrection;
+  /// Safeguard: a coarse correction after which the next relaxation's indicator exceeds the one
+  /// before the coarse step is rejected (the pre-coarse local stage is restored) and the next
+  /// coarse steps are skipped for 1, 2, 4, … up to max_skip cycles while rejections repeat. Without
+  /// it a poor coarse space (e.g. 10 modes + 5 residual vectors on the seed scene) can lock FAS in
+  /// a 2-cycle at true error 0.1-0.2 (docs/compare_bases.md). Off: the seed's plain cycle.
+  bool safeguard = true;
+  int max_skip = 8;               ///< >= 1, longest run of skipped coarse steps
   int stagnation_window = 500;    ///< relaxations without a 1% decrease of η before giving up (0: never)
   int block_size = 32;            ///< instants per multi-right-hand-side solve
 

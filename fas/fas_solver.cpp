@@ -1,5 +1,8 @@
 #include "fas/fas_solver.hpp"
 
+#include <algorithm>
+#include <string>
+
 #include "fas/coarse_step.hpp"
 #include "latin/indicator.hpp"
 #include "latin/local_stage.hpp"
@@ -21,7 +24,7 @@ class FineLevel {
   bool relax(int rank) {
     global_.solve(hat, s, &u);
     ++relaxations;
-    const double eta = latin::indicator(problem_.contact.search_direction, s, hat);
+    eta = latin::indicator(problem_.contact.search_direction, s, hat);
     const bool stop = monitor_.record(relaxations, eta, s.lambda, rank, global_.sparseSolves() - solves_before_);
     latin::localStage(problem_.contact, s, hat);
     return stop;
@@ -30,12 +33,55 @@ class FineLevel {
   InterfaceHistory s, hat;  ///< last global-stage and local-stage iterates
   Eigen::MatrixXd u;        ///< free displacements of the last global stage
   int relaxations = 0;
+  double eta = 0.0;         ///< indicator of the last relaxation
 
  private:
   const Problem& problem_;
   latin::GlobalStage& global_;
   IterationMonitor& monitor_;
   long solves_before_;
+};
+
+// FasOptions::safeguard: the first relaxation after a coarse step judges it. A correction that
+// raised the indicator is undone (the pre-coarse local stage comes back; the relaxation spent on
+// the test stays counted) and the coarse step is skipped for a while, doubling while it fails.
+class CoarseGuard {
+ public:
+  explicit CoarseGuard(const FasOptions& options) : enabled_(options.safeguard), max_skip_(options.max_skip) {}
+
+  bool skipThisCycle() {
+    if (skip_ == 0) return false;
+    --skip_;
+    return true;
+  }
+  void arm(const FineLevel& fine) {
+    if (!enabled_) return;
+    saved_ = fine.hat;
+    eta_before_ = fine.eta;
+    pending_ = true;
+  }
+  void judge(FineLevel& fine) {
+    if (!pending_) return;
+    pending_ = false;
+    if (fine.eta <= eta_before_) {
+      backoff_ = 1;
+      return;
+    }
+    fine.hat = std::move(saved_);
+    ++rejected;
+    skip_ = backoff_;
+    backoff_ = std::min(2 * backoff_, max_skip_);
+  }
+
+  int rejected = 0;
+
+ private:
+  bool enabled_;
+  int max_skip_;
+  bool pending_ = false;
+  InterfaceHistory saved_;
+  double eta_before_ = 0.0;
+  int skip_ = 0, backoff_ = 1;
 };
 
 }  // namespace
@@ -47,20 +93,33 @@ SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisPr
   IterationMonitor monitor(solver_name, {options.tolerance, options.max_relaxations, options.stagnation_window},
                            reference, callback);
   FineLevel fine(problem, global, monitor);
+  CoarseGuard guard(options);
   int rank = 0;
   Eigen::MatrixXd xi;
+  const auto relax = [&] {
+    const bool stop = fine.relax(rank);
+    if (!stop) guard.judge(fine);
+    return stop;
+  };
   for (bool stop = false; !stop;) {
-    for (int j = 0; j < options.pre_relaxations && !stop; ++j) stop = fine.relax(rank);
+    for (int j = 0; j < options.pre_relaxations && !stop; ++j) stop = relax();
     if (stop) break;
-    const CoarseSpace space = provider.coarseSpace(fine.u, fine.s);
-    rank = space.rank();
-    if (rank > 0) coarseStep(problem.contact, space, options, fine.s, fine.hat, xi);
-    for (int j = 0; j < options.post_relaxations && !stop; ++j) stop = fine.relax(rank);
+    if (!guard.skipThisCycle()) {
+      const CoarseSpace space = provider.coarseSpace(fine.u, fine.s);
+      rank = space.rank();
+      if (rank > 0) {
+        guard.arm(fine);
+        coarseStep(problem.contact, space, options, fine.s, fine.hat, xi);
+      }
+    }
+    for (int j = 0; j < options.post_relaxations && !stop; ++j) stop = relax();
   }
   // The equilibrated iterate is the last global stage; its local stage is in Γ.
   InterfaceHistory admissible;
   latin::localStage(problem.contact, fine.s, admissible);
-  return {std::move(fine.s), monitor.finish(), std::move(admissible)};
+  SolveSummary summary = monitor.finish();
+  if (guard.rejected > 0) summary.message += "; " + std::to_string(guard.rejected) + " coarse corrections rejected";
+  return {std::move(fine.s), std::move(summary), std::move(admissible)};
 }
 
 }  // namespace stc::fas
