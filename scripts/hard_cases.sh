@@ -4,10 +4,10 @@
 # indicator, true error against the incremental solution, solve wall time.
 # A solver that answers "not available" (exit 1) is skipped, so new solvers join by themselves.
 # Sample run:
-#   scripts/hard_cases.sh                       # full settings -> docs/hard_cases.md
+#   scripts/hard_cases.sh                       # full settings -> results/hard/table.md (docs/hard_cases.md quotes it)
 #   scripts/hard_cases.sh --small --report -    # the ctest settings, table on stdout
 # Options: --small, --cases "a b", --solvers "x y", --out DIR (results, default
-# results/hard[_small]), --report FILE ('-': stdout), --bin PATH (default build/bin/stcontact).
+# results/hard[_small]), --report FILE (default DIR/table.md) ('-': stdout), --bin PATH (default build/bin/stcontact).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=$root/build/bin/stcontact
@@ -28,7 +28,8 @@ done
 [ -x "$bin" ] || { echo "error: $bin not found: build first (scripts/build.sh)" >&2; exit 1; }
 suffix=$([ $small = 1 ] && echo _small || echo "")
 out=${out:-$root/results/hard$suffix}
-report=${report:-$root/docs/hard_cases$suffix.md}
+report=${report:-$out/table.md}
+mkdir -p "$out"
 cases_file=$root/examples/scenes/hard/cases.txt
 
 # json_value FILE KEY: a top-level scalar of summary.json (our writer: one '  "key": value,' per line).
@@ -41,7 +42,7 @@ while IFS="|" read -r name scene full small_sets _bound; do
   case $name in ''|'#'*) continue ;; esac
   if [ -n "$only_cases" ] && ! grep -qw -- "$name" <<<"$only_cases"; then continue; fi
   sets=$([ $small = 1 ] && trim "$small_sets" || trim "$full")
-  args=()
+  args=(--set output.vtu=false)  # the suite reads summaries and CSVs; no ParaView fields
   for s in $sets; do args+=(--set "$s"); done
   for solver in $solvers; do
     dir=$out/$name/$solver

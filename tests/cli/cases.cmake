@@ -28,6 +28,13 @@ stc_cli_test(solve_incremental_small 0 "incremental: converged" solve ${seed} ${
              --out ${out}/incremental)
 stc_cli_test(solve_not_converged_exits_2 2 "max_iterations" solve ${seed} ${small} --solver latin
              --max-iterations 3 --out ${out}/latin3)
+# Every iterative strategy stops at the iteration limit with exit 2, its summary saying why.
+foreach(solver latin-pgd fas-aposteriori fas-apriori)
+  stc_cli_test(solve_${solver}_limit_exits_2 2 "${solver}: max_iterations" solve ${seed} ${small} --solver ${solver}
+               --max-iterations 3 --out ${out}/${solver}_limit)
+endforeach()
+# The default solver (the scene's [solver] name, fas-apriori) converges without --solver.
+stc_cli_test(solve_default_is_fas_apriori 0 "fas-apriori: converged" solve ${seed} ${small} --out ${out}/default)
 add_test(NAME cli.solve_writes_every_output
          COMMAND bash -c "for f in reactions.csv contact.csv history.csv summary.json solution.pvd vtu/step_00020.vtu; do test -s ${out}/latin3/$f || { echo missing $f; exit 1; }; done; grep -q '\"termination\": \"max_iterations\"' ${out}/latin3/summary.json")
 set_tests_properties(cli.solve_writes_every_output PROPERTIES DEPENDS cli.solve_not_converged_exits_2 LABELS cli)
