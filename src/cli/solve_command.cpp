@@ -1,7 +1,9 @@
 // stcontact solve SCENE: choose the solver, compute the incremental reference for the true error
 // (scenes small enough, unless --no-reference), solve, write every output file.
 #include <iostream>
+#include <iomanip>
 #include <memory>
+#include <sstream>
 
 #include "fas/solve_by_name.hpp"
 #include "src/cli/commands.hpp"
@@ -50,18 +52,31 @@ SolveResult runSolver(const std::string& name, const Problem& problem, const Sce
 
 }  // namespace
 
-int runSolve(const SolveArgs& args) {
-  Scene scene = readScene(args.scene, args.overrides);
-  const std::string solver = args.solver.value_or(scene.solver.name);
-  fas::requireAvailable(solver);
+/// --solver, --tol and --max-iterations as scene overrides, so that summary.json's "parameters"
+/// says what was solved (not what the scene file named).
+std::vector<std::string> effectiveOverrides(const SolveArgs& args) {
+  std::vector<std::string> overrides = args.overrides;
+  if (args.solver) {
+    fas::requireAvailable(*args.solver);
+    overrides.push_back("solver.name=" + *args.solver);
+  }
   if (args.tolerance) {
     if (!(*args.tolerance > 0.0)) throw InputError("--tol must be > 0");
-    scene.solver.tolerance = *args.tolerance;
+    std::ostringstream value;
+    value << std::setprecision(17) << *args.tolerance;
+    overrides.push_back("solver.tolerance=" + value.str());
   }
   if (args.max_iterations) {
     if (*args.max_iterations < 1) throw InputError("--max-iterations must be >= 1");
-    scene.solver.max_iterations = *args.max_iterations;
+    overrides.push_back("solver.max_iterations=" + std::to_string(*args.max_iterations));
   }
+  return overrides;
+}
+
+int runSolve(const SolveArgs& args) {
+  const Scene scene = readScene(args.scene, effectiveOverrides(args));
+  const std::string solver = scene.solver.name;
+  fas::requireAvailable(solver);
   const std::filesystem::path out = args.out ? std::filesystem::path(*args.out)
                                              : std::filesystem::path("results") / scene.name / solver;
   const Problem problem = buildProblem(scene);  // bad input stops here, before anything is created

@@ -28,6 +28,10 @@ stc_cli_test(solve_incremental_small 0 "incremental: converged" solve ${seed} ${
              --out ${out}/incremental)
 stc_cli_test(solve_not_converged_exits_2 2 "max_iterations" solve ${seed} ${small} --solver latin
              --max-iterations 3 --out ${out}/latin3)
+# summary.json's "parameters" say what was solved: --solver and --max-iterations appear in it.
+add_test(NAME cli.parameters_record_the_solver_used
+         COMMAND bash -c "grep -Eq '\"name\" *: *\"latin-pgd\"' ${out}/latin-pgd_limit/summary.json && grep -Eq '\"max_iterations\" *: *3' ${out}/latin-pgd_limit/summary.json")
+set_tests_properties(cli.parameters_record_the_solver_used PROPERTIES DEPENDS cli.solve_latin-pgd_limit_exits_2 LABELS cli)
 # Every iterative strategy stops at the iteration limit with exit 2, its summary saying why.
 foreach(solver latin-pgd fas-aposteriori fas-apriori)
   stc_cli_test(solve_${solver}_limit_exits_2 2 "${solver}: max_iterations" solve ${seed} ${small} --solver ${solver}
