@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "fas/residual_vectors.hpp"
+#include "src/solver/warm_start.hpp"
 
 namespace stc::fas {
 
@@ -13,6 +14,12 @@ AprioriBasisProvider::AprioriBasisProvider(const Problem& problem, const Eigen::
       options_(options),
       loads_(pgd::separatedLoads(problem)),
       modes_(A, problem.contact.B, loads_.F) {}
+
+int AprioriBasisProvider::seed(const Eigen::MatrixXd& vectors) {
+  requireFits(vectors, problem_);
+  for (Eigen::Index j = 0; j < vectors.cols() && modes_.rank() < options_.max_modes; ++j) modes_.add(vectors.col(j));
+  return modes_.rank();
+}
 
 Eigen::MatrixXd AprioriBasisProvider::enrich(const Eigen::MatrixXd& u_tilde, const Eigen::MatrixXd& W) {
   const pgd::SpaceProblem space = [&](const Eigen::RowVectorXd& psi) {

@@ -31,6 +31,10 @@ class AprioriBasisProvider : public BasisProvider {
  public:
   /// `A` = K + Bᵀ k B (the global stage's operator).
   AprioriBasisProvider(const Problem& problem, const Eigen::SparseMatrix<double>& A, AprioriBasisOptions options);
+  /// Starts the modes from `vectors` (n_free × r, e.g. a neighbouring problem's modes: a warm start),
+  /// A-orthonormalised in order, dependent ones dropped, at most `max_modes`; enrichment goes on from
+  /// there. Returns the number of modes kept.
+  int seed(const Eigen::MatrixXd& vectors);
   CoarseSpace coarseSpace(const Eigen::MatrixXd& u_tilde, const InterfaceHistory& s) override;
   const pgd::EnergyModes& modes() const { return modes_; }
 

@@ -7,6 +7,7 @@
 #include "latin/indicator.hpp"
 #include "latin/local_stage.hpp"
 #include "src/solver/iteration_monitor.hpp"
+#include "src/solver/warm_start.hpp"
 
 namespace stc::fas {
 namespace {
@@ -14,9 +15,9 @@ namespace {
 // The fine level: relaxations from the current local-stage iterate `hat`.
 class FineLevel {
  public:
-  FineLevel(const Problem& problem, latin::GlobalStage& global, IterationMonitor& monitor)
-      : problem_(problem), global_(global), monitor_(monitor), solves_before_(global.sparseSolves()) {
-    s = InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+  FineLevel(const Problem& problem, latin::GlobalStage& global, const InterfaceHistory& start,
+            IterationMonitor& monitor)
+      : s(start), problem_(problem), global_(global), monitor_(monitor), solves_before_(global.sparseSolves()) {
     latin::localStage(problem.contact, s, hat);
   }
 
@@ -89,10 +90,18 @@ class CoarseGuard {
 SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisProvider& provider,
                      const FasOptions& options, const std::string& solver_name, const ErrorReference* reference,
                      const IterationCallback& callback) {
+  return solveFas(problem, global, provider, InterfaceHistory::zeros(problem.contact.size(), problem.numSteps()),
+                  options, solver_name, reference, callback);
+}
+
+SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisProvider& provider,
+                     const InterfaceHistory& start, const FasOptions& options, const std::string& solver_name,
+                     const ErrorReference* reference, const IterationCallback& callback) {
   options.validate();
+  requireFits(start, problem);
   IterationMonitor monitor(solver_name, {options.tolerance, options.max_relaxations, options.stagnation_window},
                            reference, callback);
-  FineLevel fine(problem, global, monitor);
+  FineLevel fine(problem, global, start, monitor);
   CoarseGuard guard(options);
   int rank = 0;
   Eigen::MatrixXd xi;
@@ -119,7 +128,7 @@ SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisPr
   latin::localStage(problem.contact, fine.s, admissible);
   SolveSummary summary = monitor.finish();
   if (guard.rejected > 0) summary.message += "; " + std::to_string(guard.rejected) + " coarse corrections rejected";
-  return {std::move(fine.s), std::move(summary), std::move(admissible)};
+  return {std::move(fine.s), std::move(summary), std::move(admissible), {}};
 }
 
 }  // namespace stc::fas

@@ -34,6 +34,16 @@ AprioriBasisOptions aprioriOptions(const SolverSpec& spec) {
 
 namespace {
 
+InterfaceHistory startOf(const Problem& problem, const StrategyInputs& inputs) {
+  if (inputs.start) return *inputs.start;
+  return InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+}
+
+Eigen::MatrixXd seedOf(const Problem& problem, const StrategyInputs& inputs) {
+  if (inputs.basis_seed) return *inputs.basis_seed;
+  return Eigen::MatrixXd(problem.numFreeDofs(), 0);
+}
+
 SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
   const SpdFactor K(problem.stiffness_free, "K_ff");
   Eigen::MatrixXd lambda;
@@ -42,20 +52,36 @@ SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, con
   const Eigen::MatrixXd modes = aposterioriModes(problem, K, lambda, spec.fas.svd_modes);
   latin::GlobalStage global(problem);
   FixedBasisProvider provider(modes, spec.fas.residual_vectors, global.matrix(), problem.contact.B);
-  return solveFas(problem, global, provider, fasOptions(spec), "fas-aposteriori", inputs.reference, inputs.callback);
+  return solveFas(problem, global, provider, startOf(problem, inputs), fasOptions(spec), "fas-aposteriori",
+                  inputs.reference, inputs.callback);
 }
 
 SolveResult solveApriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
   latin::GlobalStage global(problem);
   AprioriBasisProvider provider(problem, global.matrix(), aprioriOptions(spec));
-  return solveFas(problem, global, provider, fasOptions(spec), "fas-apriori", inputs.reference, inputs.callback);
+  provider.seed(seedOf(problem, inputs));
+  SolveResult result = solveFas(problem, global, provider, startOf(problem, inputs), fasOptions(spec), "fas-apriori",
+                                inputs.reference, inputs.callback);
+  result.spatial_modes = provider.modes().modes();
+  return result;
 }
 
 SolveResult solveLatinPgd(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
   pgd::LatinPgdOptions options;
   options.tolerance = spec.tolerance;
   options.max_iterations = spec.max_iterations;
-  return pgd::solveLatinPgd(problem, options, inputs.reference, inputs.callback);
+  const latin::GlobalStage global(problem);
+  return pgd::solveLatinPgd(problem, global, startOf(problem, inputs), seedOf(problem, inputs), options,
+                            inputs.reference, inputs.callback);
+}
+
+SolveResult solveLatinFrom(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+  latin::LatinOptions options;
+  options.tolerance = spec.tolerance;
+  options.max_iterations = spec.max_iterations;
+  options.relaxation = spec.relaxation;
+  latin::GlobalStage global(problem, options.block_size);
+  return latin::solveLatin(problem, global, startOf(problem, inputs), options, inputs.reference, inputs.callback);
 }
 
 std::string joined(const std::vector<std::string>& names) {
@@ -92,11 +118,7 @@ SolveResult solveByName(const std::string& name, const Problem& problem, const S
   if (name == "fas-aposteriori") return solveAposteriori(problem, spec, inputs);
   if (name == "fas-apriori") return solveApriori(problem, spec, inputs);
   if (name == "latin-pgd") return solveLatinPgd(problem, spec, inputs);
-  latin::LatinOptions options;
-  options.tolerance = spec.tolerance;
-  options.max_iterations = spec.max_iterations;
-  options.relaxation = spec.relaxation;
-  return latin::solveLatin(problem, options, inputs.reference, inputs.callback);
+  return solveLatinFrom(problem, spec, inputs);
 }
 
 }  // namespace stc::fas

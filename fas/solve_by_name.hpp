@@ -1,7 +1,7 @@
 #pragma once
 // Every strategy behind one call, chosen by its INTERFACE.md name: `incremental`, `latin`,
-// `fas-aposteriori` (and, later, `latin-pgd`, `fas-apriori`). What the command line and the
-// comparison programs use.
+// `latin-pgd`, `fas-aposteriori`, `fas-apriori`. What the command line and the comparison and sweep
+// programs use.
 #include <string>
 #include <vector>
 
@@ -26,6 +26,14 @@ struct StrategyInputs {
   /// incremental solver when absent. Its cost is not part of the FAS summary's wall time.
   const Eigen::MatrixXd* converged_lambda = nullptr;
   IterationCallback callback;
+  /// Warm start (src/solver/warm_start.hpp): the interface history the iterative strategies start
+  /// from instead of s = 0, e.g. a neighbouring problem's SolveResult::interface (2n_C × m).
+  /// Ignored by `incremental`, which marches in time from the unloaded state.
+  const InterfaceHistory* start = nullptr;
+  /// Warm start of an a priori basis: the spatial modes `fas-apriori` and `latin-pgd` begin with
+  /// (n_free × r), e.g. a neighbouring problem's SolveResult::spatial_modes; they enrich from there.
+  /// Ignored by the others (`fas-aposteriori` takes its modes from `converged_lambda`).
+  const Eigen::MatrixXd* basis_seed = nullptr;
 };
 
 /// The FAS options and the a priori basis options a SolverSpec sets (for programs that build the

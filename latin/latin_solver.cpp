@@ -3,6 +3,7 @@
 #include "latin/indicator.hpp"
 #include "latin/local_stage.hpp"
 #include "src/solver/iteration_monitor.hpp"
+#include "src/solver/warm_start.hpp"
 
 namespace stc::latin {
 
@@ -18,6 +19,7 @@ SolveResult solveLatin(const Problem& problem, GlobalStage& global, const Interf
                        const LatinOptions& options, const ErrorReference* reference,
                        const IterationCallback& callback) {
   options.validate();
+  requireFits(start, problem);
   IterationMonitor monitor("latin", {options.tolerance, options.max_iterations, options.stagnation_window},
                            reference, callback);
   const Eigen::VectorXd& k = problem.contact.search_direction;
@@ -35,7 +37,7 @@ SolveResult solveLatin(const Problem& problem, GlobalStage& global, const Interf
     }
     if (monitor.record(iteration, eta, s.lambda, 0, global.sparseSolves() - solves_before)) break;
   }
-  return {std::move(s), monitor.finish(), std::move(hat)};
+  return {std::move(s), monitor.finish(), std::move(hat), {}};
 }
 
 }  // namespace stc::latin

@@ -15,7 +15,8 @@ namespace stc::latin {
 SolveResult solveLatin(const Problem& problem, const LatinOptions& options, const ErrorReference* reference = nullptr,
                        const IterationCallback& callback = {});
 
-/// The same with a global stage built by the caller (reused across solves or by FAS), from `start`.
+/// The same with a global stage built by the caller (reused across solves or by FAS), from `start`
+/// (2n_C × m; e.g. a neighbouring problem's solution: a warm start, src/solver/warm_start.hpp).
 SolveResult solveLatin(const Problem& problem, GlobalStage& global, const InterfaceHistory& start,
                        const LatinOptions& options, const ErrorReference* reference = nullptr,
                        const IterationCallback& callback = {});

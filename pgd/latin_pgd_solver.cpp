@@ -7,6 +7,7 @@
 #include "latin/local_stage.hpp"
 #include "pgd/separated_global_stage.hpp"
 #include "src/solver/iteration_monitor.hpp"
+#include "src/solver/warm_start.hpp"
 
 namespace stc::pgd {
 namespace {
@@ -45,17 +46,26 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
 
 SolveResult solveLatinPgd(const Problem& problem, const latin::GlobalStage& global, const LatinPgdOptions& options,
                           const ErrorReference* reference, const IterationCallback& callback) {
+  return solveLatinPgd(problem, global, InterfaceHistory::zeros(problem.contact.size(), problem.numSteps()),
+                       Eigen::MatrixXd(problem.numFreeDofs(), 0), options, reference, callback);
+}
+
+SolveResult solveLatinPgd(const Problem& problem, const latin::GlobalStage& global, const InterfaceHistory& start,
+                          const Eigen::MatrixXd& seed_modes, const LatinPgdOptions& options,
+                          const ErrorReference* reference, const IterationCallback& callback) {
   options.validate();
+  requireFits(start, problem);
   IterationMonitor monitor("latin-pgd", {options.tolerance, options.max_iterations, options.stagnation_window},
                            reference, callback);
   SeparatedGlobalStage stage(problem, global);
-  InterfaceHistory s = InterfaceHistory::zeros(problem.contact.size(), problem.numSteps()), hat;
+  stage.seed(seed_modes, options.max_rank);
+  InterfaceHistory s = start, hat;
   double previous_eta = std::numeric_limits<double>::infinity(), last_estimate = 0.0;
   for (int iteration = 1;; ++iteration) {
     latin::localStage(problem.contact, s, hat);
     stage.update(hat, s);
     double eta = latin::indicator(problem.contact.search_direction, s, hat);
-    const bool check = stage.modes().rank() == 0 || eta > options.stagnation_ratio * previous_eta ||
+    const bool check = iteration == 1 || stage.modes().rank() == 0 || eta > options.stagnation_ratio * previous_eta ||
                        eta <= options.tolerance || eta < last_estimate;
     double recorded = eta;
     if (check) {
@@ -67,7 +77,7 @@ SolveResult solveLatinPgd(const Problem& problem, const latin::GlobalStage& glob
   }
   InterfaceHistory admissible;
   latin::localStage(problem.contact, s, admissible);
-  return {std::move(s), monitor.finish(), std::move(admissible)};
+  return {std::move(s), monitor.finish(), std::move(admissible), stage.modes().modes()};
 }
 
 }  // namespace stc::pgd

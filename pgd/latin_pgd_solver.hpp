@@ -24,4 +24,11 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
 SolveResult solveLatinPgd(const Problem& problem, const latin::GlobalStage& global, const LatinPgdOptions& options,
                           const ErrorReference* reference = nullptr, const IterationCallback& callback = {});
 
+/// A warm start: from `start` (2n_C × m) with the spatial modes begun from `seed_modes` (n_free × r,
+/// may have no column; e.g. a neighbouring problem's SolveResult::spatial_modes). The global stage
+/// is checked at the first iteration as when there is no mode.
+SolveResult solveLatinPgd(const Problem& problem, const latin::GlobalStage& global, const InterfaceHistory& start,
+                          const Eigen::MatrixXd& seed_modes, const LatinPgdOptions& options,
+                          const ErrorReference* reference = nullptr, const IterationCallback& callback = {});
+
 }  // namespace stc::pgd

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "src/solver/warm_start.hpp"
+
 namespace stc::pgd {
 
 SeparatedGlobalStage::SeparatedGlobalStage(const Problem& problem, const latin::GlobalStage& global)
@@ -9,6 +11,12 @@ SeparatedGlobalStage::SeparatedGlobalStage(const Problem& problem, const latin::
       global_(global),
       loads_(separatedLoads(problem)),
       modes_(global.matrix(), problem.contact.B, loads_.F) {}
+
+int SeparatedGlobalStage::seed(const Eigen::MatrixXd& vectors, int max_rank) {
+  requireFits(vectors, problem_);
+  for (Eigen::Index j = 0; j < vectors.cols() && modes_.rank() < max_rank; ++j) modes_.add(vectors.col(j));
+  return modes_.rank();
+}
 
 void SeparatedGlobalStage::update(const InterfaceHistory& hat, InterfaceHistory& s) {
   const Eigen::VectorXd& k = problem_.contact.search_direction;

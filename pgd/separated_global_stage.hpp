@@ -24,6 +24,9 @@ class SeparatedGlobalStage {
   double interfaceNorm(const RankOnePair& pair) const;
   /// Appends the pair's space mode; false when it is already spanned.
   bool add(const RankOnePair& pair) { return modes_.add(pair.space); }
+  /// Starts the modes from `vectors` (n_free × r, a neighbouring problem's modes: a warm start),
+  /// A-orthonormalised in order, dependent ones dropped, at most `max_rank`. Returns the rank.
+  int seed(const Eigen::MatrixXd& vectors, int max_rank);
 
   const EnergyModes& modes() const { return modes_; }
   long sparseSolves() const { return sparse_solves_; }

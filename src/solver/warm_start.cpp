@@ -1,0 +1,36 @@
+#include "src/solver/warm_start.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace stc {
+namespace {
+
+std::string size(Eigen::Index rows, Eigen::Index cols) { return std::to_string(rows) + " × " + std::to_string(cols); }
+
+}  // namespace
+
+bool fitsProblem(const InterfaceHistory& history, const Problem& problem) {
+  const Eigen::Index rows = 2 * problem.contact.size(), cols = problem.numSteps();
+  return history.v.rows() == rows && history.v.cols() == cols && history.lambda.rows() == rows &&
+         history.lambda.cols() == cols;
+}
+
+bool fitsProblem(const Eigen::MatrixXd& spatial_modes, const Problem& problem) {
+  return spatial_modes.rows() == problem.numFreeDofs();
+}
+
+void requireFits(const InterfaceHistory& start, const Problem& problem) {
+  if (fitsProblem(start, problem)) return;
+  throw std::invalid_argument("start history is " + size(start.v.rows(), start.v.cols()) + " (v) and " +
+                              size(start.lambda.rows(), start.lambda.cols()) + " (λ), the problem's interface " +
+                              size(2 * problem.contact.size(), problem.numSteps()));
+}
+
+void requireFits(const Eigen::MatrixXd& spatial_modes, const Problem& problem) {
+  if (fitsProblem(spatial_modes, problem)) return;
+  throw std::invalid_argument("basis seed has " + std::to_string(spatial_modes.rows()) +
+                              " rows, the problem " + std::to_string(problem.numFreeDofs()) + " free dofs");
+}
+
+}  // namespace stc
