@@ -64,4 +64,16 @@ RunEnvironment describeRunEnvironment(std::string build_type, std::string git_co
   return env;
 }
 
+std::string machineMarkdown(const RunEnvironment& e, const std::string& load_after) {
+  std::ostringstream out;
+  out << "## Machine and build\n\n"
+      << "- CPU: " << e.cpu_model << "; " << e.logical_cores << " logical cores, " << e.usable_cores
+      << " usable by this process\n"
+      << "- kernel: " << e.kernel << "\n- compiler: " << e.compiler << "; build type " << e.build_type
+      << "; commit " << e.git_commit << "\n"
+      << "- load average (1, 5, 15 min) at the start: " << (e.load_average.empty() ? "unknown" : e.load_average)
+      << "; at the end: " << (load_after.empty() ? "unknown" : load_after) << "\n";
+  return out.str();
+}
+
 }  // namespace stc

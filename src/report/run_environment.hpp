@@ -18,6 +18,10 @@ struct RunEnvironment {
 /// Reads the machine's description; the build's is passed by the program that knows it.
 RunEnvironment describeRunEnvironment(std::string build_type, std::string git_commit);
 
+/// The "## Machine and build" section of a report: CPU, cores, kernel, compiler, build, commit and
+/// the load averages at the start (`e.load_average`) and at the end (`load_after`) of the runs.
+std::string machineMarkdown(const RunEnvironment& e, const std::string& load_after);
+
 /// The current 1, 5 and 15 minute load averages ("1.02 0.80 0.51"), empty if unknown.
 std::string loadAverage();
 
