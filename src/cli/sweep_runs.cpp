@@ -1,0 +1,96 @@
+#include "src/cli/sweep_runs.hpp"
+
+#include <chrono>
+#include <iostream>
+
+#include "fas/solve_by_name.hpp"
+#include "src/cli/compare_runs.hpp"
+#include "src/cli/progress.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/io/run_writer.hpp"
+#include "src/report/number_format.hpp"
+#include "src/solver/warm_start.hpp"
+
+namespace stc::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct TimedSolve {
+  SolveResult result;
+  SolveCost cost;
+};
+
+/// One solve through solveByName, timed from the call to its return (set-up included), its true
+/// error measured afterwards on the returned solution (the solve itself does not pay for it).
+TimedSolve timedSolve(const Problem& problem, const Scene& scene, const fas::StrategyInputs& base,
+                      const ReferenceSolution& reference, const std::string& label, const SweepSettings& settings) {
+  Progress progress(label, !settings.quiet);
+  fas::StrategyInputs inputs = base;
+  inputs.converged_lambda = &reference.reference->referenceForces();  // fas-aposteriori's modes, not timed
+  inputs.callback = progress.callback();
+  const auto start = Clock::now();
+  TimedSolve out;
+  out.result = fas::solveByName(settings.solver, problem, scene.solver, inputs);
+  out.cost = costOf(out.result.summary, std::chrono::duration<double>(Clock::now() - start).count());
+  progress.done();
+  out.cost.error = reference.reference->relativeError(out.result.interface.lambda);
+  return out;
+}
+
+std::string costLine(const SolveCost& c) {
+  std::string line = std::string(toString(c.termination)) + ", " + std::to_string(c.relaxations) + " relaxations, " +
+                     shortNumber(c.wall_s, 3) + " s";
+  if (c.error) line += ", true error " + shortNumber(*c.error, 2);
+  return line;
+}
+
+void printPoint(const SweepPoint& p, const std::string& key) {
+  std::cout << "  " << key << "=" << p.text << ": warm (from " << toString(p.start) << ") "
+            << costLine(p.warm);
+  if (p.cold) std::cout << "; cold " << costLine(*p.cold);
+  std::cout << std::endl;
+}
+
+void writeSolution(const std::filesystem::path& dir, const Problem& problem, const Scene& scene,
+                   const SolveResult& result) {
+  ensureWritableDirectory(dir);
+  writeRunOutputs(dir, problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
+}
+
+}  // namespace
+
+SweepPoint WarmChain::solveValue(const Scene& scene, const SweepRange& range, std::size_t index,
+                                 const SweepSettings& settings) {
+  const Problem problem = buildProblem(scene);  // K + BᵀkB and its factor may depend on the value
+  const ReferenceSolution reference = computeReference(problem, settings.quiet);
+  const std::string label = range.override(index) + " (" + std::to_string(index + 1) + "/" +
+                            std::to_string(range.values.size()) + ") ";
+  SweepPoint point;
+  point.text = range.texts[index];
+  point.value = range.values[index];
+  point.reference_s = reference.total_s;
+
+  fas::StrategyInputs warm;
+  if (interface_ && fitsProblem(*interface_, problem)) {
+    warm.start = &*interface_;
+    point.start = WarmStart::Previous;
+    if (modes_.cols() > 0 && fitsProblem(modes_, problem)) {
+      warm.basis_seed = &modes_;
+      point.seed_modes = static_cast<int>(modes_.cols());
+    }
+  }
+  TimedSolve solved = timedSolve(problem, scene, warm, reference, label + "warm", settings);
+  point.warm = solved.cost;
+  point.forces = endForces(solved.result.interface);
+  if (settings.independent) point.cold = timedSolve(problem, scene, {}, reference, label + "cold", settings).cost;
+  if (settings.solutions_dir)
+    writeSolution(*settings.solutions_dir / ("value_" + point.text), problem, scene, solved.result);
+  if (!settings.quiet) printPoint(point, range.key);
+
+  interface_ = std::move(solved.result.interface);
+  modes_ = std::move(solved.result.spatial_modes);
+  return point;
+}
+
+}  // namespace stc::cli
