@@ -1,5 +1,6 @@
 #include "fas/apriori_basis.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "fas/residual_vectors.hpp"
@@ -17,7 +18,8 @@ AprioriBasisProvider::AprioriBasisProvider(const Problem& problem, const Eigen::
 
 int AprioriBasisProvider::seed(const Eigen::MatrixXd& vectors) {
   requireFits(vectors, problem_);
-  for (Eigen::Index j = 0; j < vectors.cols() && modes_.rank() < options_.max_modes; ++j) modes_.add(vectors.col(j));
+  const int most = static_cast<int>(std::clamp(options_.seed_share, 0.0, 1.0) * options_.max_modes);
+  for (Eigen::Index j = 0; j < vectors.cols() && modes_.rank() < most; ++j) modes_.add(vectors.col(j));
   return modes_.rank();
 }
 

@@ -22,6 +22,11 @@ struct AprioriBasisOptions {
   int residual_vectors = 15;   ///< N_res, renewed every cycle
   int modes_per_cycle = 4;     ///< rank-one pairs added per cycle at most
   int max_modes = 30;          ///< PGD modes kept at most (then the modes stop growing)
+  /// A warm start's seed (seed()) fills at most this share of `max_modes`, the leading seed modes;
+  /// the rest is left to this problem's own enrichment. Warm relaxations over the seed friction
+  /// sweep 0.05:0.5:10 for shares 0, 8/30, 1/2, 2/3, 26/30, 1: 176, 150, 147, 199, 217, 245 (cold
+  /// 272; docs/sweep.md): a full seed leaves no room to adapt, none throws the previous basis away.
+  double seed_share = 0.5;
   /// A pair is kept only if its energy norm is above this fraction of ũ's (nothing left below).
   double relative_energy_drop = 1e-8;
   pgd::EnrichmentOptions enrichment;
@@ -31,9 +36,10 @@ class AprioriBasisProvider : public BasisProvider {
  public:
   /// `A` = K + Bᵀ k B (the global stage's operator).
   AprioriBasisProvider(const Problem& problem, const Eigen::SparseMatrix<double>& A, AprioriBasisOptions options);
-  /// Starts the modes from `vectors` (n_free × r, e.g. a neighbouring problem's modes: a warm start),
-  /// A-orthonormalised in order, dependent ones dropped, at most `max_modes`; enrichment goes on from
-  /// there. Returns the number of modes kept.
+  /// Starts the modes from `vectors` (n_free × r, e.g. a neighbouring problem's modes, leading ones
+  /// first: a warm start), A-orthonormalised in order, dependent ones dropped, at most
+  /// seed_share · max_modes of them; enrichment goes on from there up to `max_modes`. Call before
+  /// the solve. Returns the number of modes kept.
   int seed(const Eigen::MatrixXd& vectors);
   CoarseSpace coarseSpace(const Eigen::MatrixXd& u_tilde, const InterfaceHistory& s) override;
   const pgd::EnergyModes& modes() const { return modes_; }
