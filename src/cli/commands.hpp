@@ -30,6 +30,12 @@ struct SvdArgs {
   std::string solver = "incremental";   ///< the only one accepted: the analysis of the exact solution
 };
 
+/// `overrides` followed by --solver, --tol and --max-iterations as scene overrides (each checked:
+/// a known solver, tol > 0, max-iterations >= 1), so that a scene's parameters say what was solved.
+std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, const std::optional<std::string>& solver,
+                                           const std::optional<double>& tolerance,
+                                           const std::optional<int>& max_iterations = std::nullopt);
+
 /// Prints the model's sizes; returns the exit status.
 int runCheck(const CheckArgs& args);
 /// Solves and writes the outputs; returns 0 converged, 2 not converged.

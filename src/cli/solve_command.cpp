@@ -52,29 +52,28 @@ SolveResult runSolver(const std::string& name, const Problem& problem, const Sce
 
 }  // namespace
 
-/// --solver, --tol and --max-iterations as scene overrides, so that summary.json's "parameters"
-/// says what was solved (not what the scene file named).
-std::vector<std::string> effectiveOverrides(const SolveArgs& args) {
-  std::vector<std::string> overrides = args.overrides;
-  if (args.solver) {
-    fas::requireAvailable(*args.solver);
-    overrides.push_back("solver.name=" + *args.solver);
+std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, const std::optional<std::string>& solver,
+                                           const std::optional<double>& tolerance,
+                                           const std::optional<int>& max_iterations) {
+  if (solver) {
+    fas::requireAvailable(*solver);
+    overrides.push_back("solver.name=" + *solver);
   }
-  if (args.tolerance) {
-    if (!(*args.tolerance > 0.0)) throw InputError("--tol must be > 0");
+  if (tolerance) {
+    if (!(*tolerance > 0.0)) throw InputError("--tol must be > 0");
     std::ostringstream value;
-    value << std::setprecision(17) << *args.tolerance;
+    value << std::setprecision(17) << *tolerance;
     overrides.push_back("solver.tolerance=" + value.str());
   }
-  if (args.max_iterations) {
-    if (*args.max_iterations < 1) throw InputError("--max-iterations must be >= 1");
-    overrides.push_back("solver.max_iterations=" + std::to_string(*args.max_iterations));
+  if (max_iterations) {
+    if (*max_iterations < 1) throw InputError("--max-iterations must be >= 1");
+    overrides.push_back("solver.max_iterations=" + std::to_string(*max_iterations));
   }
   return overrides;
 }
 
 int runSolve(const SolveArgs& args) {
-  const Scene scene = readScene(args.scene, effectiveOverrides(args));
+  const Scene scene = readScene(args.scene, withSolverOptions(args.overrides, args.solver, args.tolerance, args.max_iterations));
   const std::string solver = scene.solver.name;
   fas::requireAvailable(solver);
   const std::filesystem::path out = args.out ? std::filesystem::path(*args.out)

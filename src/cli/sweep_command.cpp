@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "fas/solve_by_name.hpp"
+#include "src/cli/commands.hpp"
 #include "src/cli/gnuplot_plots.hpp"
 #include "src/cli/sweep_runs.hpp"
 #include "src/core/input_error.hpp"
@@ -36,13 +37,12 @@ std::vector<Scene> valueScenes(const SweepArgs& args, const SweepRange& range, S
     if (keyOf(o) == range.key) throw InputError("--set " + o + " conflicts with --set-range " + range.key);
   if (args.tolerance && range.key == "solver.tolerance")
     throw InputError("--tol conflicts with --set-range solver.tolerance");
-  if (args.tolerance && !(*args.tolerance > 0.0)) throw InputError("--tol must be > 0");
+  const std::vector<std::string> common = withSolverOptions(args.overrides, args.solver, args.tolerance);
   std::vector<Scene> scenes;
   for (std::size_t i = 0; i < range.values.size(); ++i) {
-    std::vector<std::string> overrides = args.overrides;
+    std::vector<std::string> overrides = common;
     overrides.push_back(range.override(i));
     scenes.push_back(readScene(args.scene, overrides));
-    if (args.tolerance) scenes.back().solver.tolerance = *args.tolerance;
     const Problem problem = buildProblem(scenes.back());
     if (i > 0) continue;
     sweep.n_dofs = problem.numDofs();
@@ -52,8 +52,8 @@ std::vector<Scene> valueScenes(const SweepArgs& args, const SweepRange& range, S
   return scenes;
 }
 
-std::string solverOf(const SweepArgs& args, const Scene& first) {
-  const std::string solver = args.solver.value_or(first.solver.name);
+std::string solverOf(const Scene& first) {
+  const std::string solver = first.solver.name;
   fas::requireAvailable(solver);
   if (solver == "incremental")
     throw InputError("--solver incremental: a sweep compares warm and cold starts of an iterative strategy, "
@@ -120,7 +120,7 @@ int runSweep(const SweepArgs& args) {
   const SweepRange range = parseSweepRange(args.range);
   Sweep sweep;
   const std::vector<Scene> scenes = valueScenes(args, range, sweep);
-  const std::string solver = solverOf(args, scenes.front());
+  const std::string solver = solverOf(scenes.front());
   const fs::path out =
       args.out ? fs::path(*args.out) : fs::path("results") / scenes.front().name / ("sweep_" + range.key);
   ensureWritableDirectory(out);  // every input checked: now the folder may be created
