@@ -23,9 +23,10 @@ struct AprioriBasisOptions {
   int modes_per_cycle = 4;     ///< rank-one pairs added per cycle at most
   int max_modes = 30;          ///< PGD modes kept at most (then the modes stop growing)
   /// A warm start's seed (seed()) fills at most this share of `max_modes`, the leading seed modes;
-  /// the rest is left to this problem's own enrichment. Warm relaxations over the seed friction
-  /// sweep 0.05:0.5:10 for shares 0, 8/30, 1/2, 2/3, 26/30, 1: 176, 150, 147, 199, 217, 245 (cold
-  /// 272; docs/sweep.md): a full seed leaves no room to adapt, none throws the previous basis away.
+  /// the rest is left to this problem's own enrichment. Warm relaxations over the seed scene's
+  /// friction sweep 0.05:0.5:10 for shares 0, 0.25, 0.5, 0.75, 1: 176, 155, 147, 190, 245 (cold 272;
+  /// docs/sweep.md, scene key solver.pgd_seed_share): a full seed leaves no room to adapt to the new
+  /// value, an empty one throws the previous basis away.
   double seed_share = 0.5;
   /// A pair is kept only if its energy norm is above this fraction of ũ's (nothing left below).
   double relative_energy_drop = 1e-8;

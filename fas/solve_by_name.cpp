@@ -29,6 +29,7 @@ AprioriBasisOptions aprioriOptions(const SolverSpec& spec) {
   basis.residual_vectors = spec.fas.residual_vectors;
   basis.max_modes = spec.fas.pgd_max_modes;
   basis.modes_per_cycle = spec.fas.pgd_modes_per_cycle;
+  basis.seed_share = spec.fas.pgd_seed_share;
   return basis;
 }
 

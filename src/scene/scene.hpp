@@ -81,6 +81,8 @@ struct FasSpec {
   int svd_modes = 10;           ///< fas-aposteriori: leading energy-SVD modes of the converged solution (>= 0)
   int pgd_max_modes = 30;       ///< fas-apriori: PGD modes kept at most (>= 0; 0: residual vectors only)
   int pgd_modes_per_cycle = 4;  ///< fas-apriori: rank-one pairs added per cycle at most (>= 1)
+  double pgd_seed_share = 0.5;  ///< fas-apriori warm start: share of pgd_max_modes a seed may fill, in
+                                ///< [0, 1] (fas::AprioriBasisOptions::seed_share, docs/sweep.md)
   std::string coarse_start = "zero";  ///< "zero" (METHOD.md §4 option a) or "mismatch" (option b)
 };
 

@@ -235,6 +235,9 @@ FasSpec readFas(const TableView& solver) {
   readCount(solver, "svd_modes", 0, fas.svd_modes);
   readCount(solver, "pgd_max_modes", 0, fas.pgd_max_modes);
   readCount(solver, "pgd_modes_per_cycle", 1, fas.pgd_modes_per_cycle);
+  fas.pgd_seed_share = solver.optionalNumber("pgd_seed_share").value_or(fas.pgd_seed_share);
+  requireRange(solver, "pgd_seed_share", fas.pgd_seed_share, fas.pgd_seed_share >= 0.0 && fas.pgd_seed_share <= 1.0,
+               "must be in [0, 1]");
   if (solver.has("coarse_start")) fas.coarse_start = readKeyword(solver, "coarse_start", {"zero", "mismatch"});
   return fas;
 }
@@ -244,7 +247,7 @@ SolverSpec readSolver(const TableView& root) {
   const auto solver = root.optionalTable(
       "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
                  "post_relaxations", "coarse_iterations", "residual_vectors", "svd_modes", "coarse_start",
-                 "pgd_max_modes", "pgd_modes_per_cycle"});
+                 "pgd_max_modes", "pgd_modes_per_cycle", "pgd_seed_share"});
   if (!solver) return spec;
   if (solver->has("name")) {
     spec.name = readKeyword(

@@ -338,7 +338,7 @@ TEST(SceneReaderErrors, OtherRangesAreChecked) {
 TEST(SceneReader, FasKeysAreRead) {
   const Scene s = parseScene(kSeed + "pre_relaxations = 2\npost_relaxations = 0\ncoarse_iterations = 7\n"
                                      "residual_vectors = 5\nsvd_modes = 4\npgd_max_modes = 12\n"
-                                     "pgd_modes_per_cycle = 2\ncoarse_start = \"mismatch\"\n",
+                                     "pgd_modes_per_cycle = 2\npgd_seed_share = 0.25\ncoarse_start = \"mismatch\"\n",
                              kSource);
   EXPECT_EQ(s.solver.fas.pre_relaxations, 2);
   EXPECT_EQ(s.solver.fas.post_relaxations, 0);
@@ -347,6 +347,7 @@ TEST(SceneReader, FasKeysAreRead) {
   EXPECT_EQ(s.solver.fas.svd_modes, 4);
   EXPECT_EQ(s.solver.fas.pgd_max_modes, 12);
   EXPECT_EQ(s.solver.fas.pgd_modes_per_cycle, 2);
+  EXPECT_EQ(s.solver.fas.pgd_seed_share, 0.25);
   EXPECT_EQ(s.solver.fas.coarse_start, "mismatch");
 }
 
@@ -356,6 +357,8 @@ TEST(SceneReaderErrors, FasRangesAreChecked) {
   EXPECT_THAT(errorOf(kSeed + "coarse_iterations = 0\n"), HasSubstr("'solver.coarse_iterations' = 0"));
   EXPECT_THAT(errorOf(kSeed + "pgd_max_modes = -1\n"), HasSubstr("'solver.pgd_max_modes' = -1"));
   EXPECT_THAT(errorOf(kSeed + "pgd_modes_per_cycle = 0\n"), HasSubstr("'solver.pgd_modes_per_cycle' = 0"));
+  EXPECT_THAT(errorOf(kSeed + "pgd_seed_share = 1.5\n"), HasSubstr("'solver.pgd_seed_share' = 1.5"));
+  EXPECT_THAT(errorOf(kSeed + "pgd_seed_share = -0.1\n"), HasSubstr("'solver.pgd_seed_share' = -0.1"));
   EXPECT_THAT(errorOf(kSeed + "coarse_start = \"middle\"\n"), HasSubstr("solver.coarse_start"));
 }
 
