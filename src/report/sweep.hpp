@@ -46,7 +46,8 @@ struct SweepPoint {
   std::string text;          ///< the value as written into the override
   double value = 0.0;
   WarmStart start = WarmStart::Zero;
-  int seed_modes = 0;        ///< spatial modes handed to the warm solve as its starting basis
+  int seed_modes = 0;        ///< spatial modes offered to the warm solve as its starting basis (it keeps
+                             ///< at most solver.pgd_seed_share × pgd_max_modes for fas-apriori)
   SolveCost warm;
   std::optional<SolveCost> cold;  ///< absent with --no-independent
   EndForces forces;          ///< of the warm solve's solution
