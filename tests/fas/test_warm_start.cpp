@@ -61,7 +61,7 @@ const std::vector<std::string>& iterativeSolvers() {
 // At indicator tolerance 1e-6 the true error must be ~1e-5 or below. The indicator is a step size,
 // not a distance to the solution: it understates the true error by a factor that the friction
 // sweeps of docs/sweep.md measured, over every converged warm solve, up to 11 at these small
-// settings (latin; 10.7 fas-apriori) and 8.3 on the full seed scene; 2e-5 leaves a factor 1.8.
+// settings (latin; 10.8 the others); 2e-5 leaves a factor 1.8. (The full seed scene: up to 14.)
 constexpr double kAgreement = 2e-5;
 
 TEST(WarmStart, FromANeighbouringFrictionReachesTheIncrementalSolution) {
