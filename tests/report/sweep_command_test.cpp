@@ -15,40 +15,15 @@
 #include <string>
 #include <vector>
 
+#include "report/csv_table.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
 using Row = std::map<std::string, std::string>;
-
-struct Table {
-  std::vector<std::string> header;
-  std::vector<Row> rows;
-};
-
-std::vector<std::string> cellsOf(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  std::string cell;
-  while (std::getline(in, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
-Table readCsv(const fs::path& file) {
-  Table t;
-  std::ifstream in(file);
-  std::string line;
-  if (!std::getline(in, line)) return t;
-  t.header = cellsOf(line);
-  while (std::getline(in, line)) {
-    const auto cells = cellsOf(line);
-    Row row;
-    for (std::size_t i = 0; i < t.header.size() && i < cells.size(); ++i) row[t.header[i]] = cells[i];
-    t.rows.push_back(std::move(row));
-  }
-  return t;
-}
+using Table = stc::test::CsvTable;
+using stc::test::readCsv;
 
 std::string readText(const fs::path& file) {
   std::ifstream in(file);
