@@ -11,6 +11,7 @@
 #include "src/core/input_error.hpp"
 #include "src/scene/detail/scene_errors.hpp"
 #include "src/scene/detail/scene_overrides.hpp"
+#include "src/scene/detail/table_header_guard.hpp"
 #include "src/scene/detail/table_view.hpp"
 
 namespace stc {
@@ -276,6 +277,7 @@ OutputSpec readOutput(const TableView& root) {
 
 /// Parses TOML; a syntax error becomes "FILE:LINE:COLUMN: TOML syntax error: ..." on one line.
 toml::table parseToml(const std::string& text, const ErrorReporter& errors) {
+  detail::refuseMalformedTableHeaders(text, errors);  // a toml++ 3.3.0 defect: see the header
   try {
     return toml::parse(std::string_view(text), std::string_view(errors.file()));
   } catch (const toml::parse_error& error) {

@@ -421,5 +421,29 @@ TEST(SceneReaderErrors, MalformedTomlGivesOneLineMessageWithLineAndColumn) {
   EXPECT_THAT(unclosed, StartsWith("hemicylinder.toml:1"));
 }
 
+// Found by fuzzing (tests/fuzz/fuzz_scene.cpp): toml++ 3.3.0 breaks an assumption of its parser on
+// such a header (an abort, or undefined behaviour); the reader refuses it first
+// (src/scene/detail/table_header_guard.hpp).
+TEST(SceneReaderErrors, TableNameThatCannotStartAKeyIsASyntaxErrorWithLineAndColumn) {
+  EXPECT_EQ(errorOf(seedWith("[material]", "[.material]")),
+            "hemicylinder.toml:8:2: TOML syntax error: a table name cannot start with '.' "
+            "(expected a bare or quoted key)");
+  EXPECT_THAT(errorOf(seedWith("[material]", "[[ +material]]")),
+              StartsWith("hemicylinder.toml:8:4: TOML syntax error: a table name cannot start with '+'"));
+  for (const std::string header : {"[=]", "[[=", "[[[1]]]", "[ #", "[\t", "[\xC2\xA0]"}) {
+    EXPECT_THAT(errorOf(kSeed + header + "\n"), HasSubstr("a table name cannot start with")) << header;
+  }
+  EXPECT_THAT(errorOf(kSeed + "[\n"), HasSubstr("cannot start with the end of the line"));
+}
+
+TEST(SceneReader, BracketLinesInsideMultiLineValuesAreNotTableHeaders) {
+  // In a multi-line array, "[+1.0]" is a nested array (which the reader then refuses as one)...
+  EXPECT_THAT(errorOf(seedWith("point = [0.0, -1.01]", "point = [\n[+1.0], -1.01]")),
+              HasSubstr("key 'obstacle.point[0]' must be a number, got an array"));
+  // ... and in a multi-line string, "[.x" is text.
+  const Scene scene = parseScene(seedWith("name = \"hemicylinder\"", "name = \"\"\"\n[.x\"\"\""), kSource);
+  EXPECT_EQ(scene.name, "[.x");
+}
+
 }  // namespace
 }  // namespace stc
