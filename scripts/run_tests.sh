@@ -1,8 +1,29 @@
 #!/usr/bin/env bash
-# Builds (Release) and runs the whole test suite with ctest.
+# The test command (README "Set-up", CI): builds in Release and runs the whole ctest suite, then
+#   scripts/sanitize.sh  the same suite built with AddressSanitizer + UndefinedBehaviorSanitizer
+#   scripts/fuzz.sh      the scene and Gmsh fuzz targets, 60 s each
+# and prints each stage's wall time. STC_QUICK_TESTS=1 stops after the Release suite (for local
+# edit-test loops; CI always runs every stage).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${STC_BUILD_DIR:-$root/build}
-"$root/scripts/build.sh"
-cd "$build"
-ctest --output-on-failure -j "$(nproc)" --timeout 900
+times=()
+stage() {  # stage NAME COMMAND...: runs COMMAND, records its wall time
+  local start=$SECONDS
+  echo "=== $1"
+  "${@:2}"
+  times+=("$1: $((SECONDS - start)) s")
+}
+release() {
+  "$root/scripts/build.sh"
+  (cd "$build" && ctest --output-on-failure -j "$(nproc)" --timeout 900)
+}
+stage "release build + tests" release
+if [ "${STC_QUICK_TESTS:-0}" = 1 ]; then
+  echo "STC_QUICK_TESTS=1: sanitizer and fuzz stages skipped"
+else
+  stage "sanitizers (ASan+UBSan build + tests)" "$root/scripts/sanitize.sh"
+  stage "fuzzing (build + bounded runs)" "$root/scripts/fuzz.sh"
+fi
+echo "=== stage times"
+printf '  %s\n' "${times[@]}"

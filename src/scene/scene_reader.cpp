@@ -9,8 +9,10 @@
 #include <utility>
 
 #include "src/core/input_error.hpp"
+#include "src/scene/detail/non_ascii_guard.hpp"
 #include "src/scene/detail/scene_errors.hpp"
 #include "src/scene/detail/scene_overrides.hpp"
+#include "src/scene/detail/table_header_guard.hpp"
 #include "src/scene/detail/table_view.hpp"
 
 namespace stc {
@@ -279,6 +281,10 @@ OutputSpec readOutput(const TableView& root) {
 
 /// Parses TOML; a syntax error becomes "FILE:LINE:COLUMN: TOML syntax error: ..." on one line.
 toml::table parseToml(const std::string& text, const ErrorReporter& errors) {
+  // Two defects of toml++ 3.3.0, each refused first (see the headers); this order, so that the
+  // second, which parses parts of the text, meets no misplaced non-ASCII character.
+  detail::refuseMisplacedNonAscii(text, errors);
+  detail::refuseMalformedTableHeaders(text, errors);
   try {
     return toml::parse(std::string_view(text), std::string_view(errors.file()));
   } catch (const toml::parse_error& error) {

@@ -58,6 +58,10 @@ endfunction()
 set(trunc ${bad}/truncated.toml)
 stc_cli_refused(malformed_toml "malformed\\.toml:2:[0-9]+: TOML syntax error" ${bad}/malformed.toml)
 stc_cli_refused(missing_scene "no_such_scene\\.toml: cannot open" ${bad}/no_such_scene.toml)
+stc_cli_refused(bad_table_header "bad_table_header\\.toml:3:2: TOML syntax error: a table name cannot start with '\\.'"
+                ${bad}/bad_table_header.toml)
+stc_cli_refused(set_index_overflow "--set dirichlet\\[9+\\]\\.values=\\[1\\]: malformed key" ${seed}
+                "--set" "dirichlet[99999999999999999999999].values=[1]")
 stc_cli_refused(unknown_key "unknown key 'contact\\.frction'" ${seed} ${small} --set contact.frction=0.3)
 stc_cli_refused(unknown_table "unknown key 'solvers'" ${seed} ${small} --set solvers.name=latin)
 stc_cli_refused(wrong_type_float_for_int "key 'time\\.steps' must be an integer, got a float" ${seed} --set time.steps=2.5)

@@ -122,5 +122,12 @@ TEST(SceneOverrides, MalformedOverridesAreErrors) {
   EXPECT_THAT(errorOf({"name.first=x"}), HasSubstr("'name' is not a table"));
 }
 
+// An index too large for size_t made std::stoul throw std::out_of_range, which escaped the reader
+// as an internal failure (exit 3) instead of an input error (found with the fuzz target's "#set").
+TEST(SceneOverrides, IndexTooLargeForAnyArrayIsAMalformedKey) {
+  EXPECT_THAT(errorOf({"dirichlet[99999999999999999999999].values=[1]"}),
+              HasSubstr("dirichlet[99999999999999999999999].values=[1]: malformed key"));
+}
+
 }  // namespace
 }  // namespace stc

@@ -448,5 +448,54 @@ TEST(SceneReaderErrors, MalformedTomlGivesOneLineMessageWithLineAndColumn) {
   EXPECT_THAT(unclosed, StartsWith("hemicylinder.toml:1"));
 }
 
+// Found by fuzzing (tests/fuzz/fuzz_scene.cpp): toml++ 3.3.0 breaks an assumption of its parser on
+// such a header (an abort, or undefined behaviour); the reader refuses it first
+// (src/scene/detail/table_header_guard.hpp).
+TEST(SceneReaderErrors, TableNameThatCannotStartAKeyIsASyntaxErrorWithLineAndColumn) {
+  EXPECT_EQ(errorOf(seedWith("[material]", "[.material]")),
+            "hemicylinder.toml:8:2: TOML syntax error: a table name cannot start with '.' "
+            "(expected a bare or quoted key)");
+  EXPECT_THAT(errorOf(seedWith("[material]", "[[ +material]]")),
+              StartsWith("hemicylinder.toml:8:4: TOML syntax error: a table name cannot start with '+'"));
+  for (const std::string header : {"[=]", "[[=", "[[[1]]]", "[ #", "[\t"}) {
+    EXPECT_THAT(errorOf(kSeed + header + "\n"), HasSubstr("a table name cannot start with")) << header;
+  }
+  EXPECT_THAT(errorOf(kSeed + "[\n"), HasSubstr("cannot start with the end of the line"));
+}
+
+TEST(SceneReader, BracketLinesInsideMultiLineValuesAreNotTableHeaders) {
+  // In a multi-line array, "[+1.0]" is a nested array (which the reader then refuses as one)...
+  EXPECT_THAT(errorOf(seedWith("point = [0.0, -1.01]", "point = [\n[+1.0], -1.01]")),
+              HasSubstr("key 'obstacle.point[0]' must be a number, got an array"));
+  // ... and in a multi-line string, "[.x" is text.
+  const Scene scene = parseScene(seedWith("name = \"hemicylinder\"", "name = \"\"\"\n[.x\"\"\""), kSource);
+  EXPECT_EQ(scene.name, "[.x");
+}
+
+// Found by fuzzing: toml++ 3.3.0 reaches undefined behaviour when it asks whether some non-ASCII
+// characters are whitespace; the reader refuses them first (src/scene/detail/non_ascii_guard.hpp).
+TEST(SceneReaderErrors, NonAsciiOutsideStringsAndCommentsIsASyntaxErrorWithLineAndColumn) {
+  EXPECT_EQ(errorOf(seedWith("young = 3000.0", "young = 3000.0 \u00b0")),
+            "hemicylinder.toml:9:16: TOML syntax error: a non-ASCII character is allowed only in a "
+            "string or a comment");
+  EXPECT_THAT(errorOf(seedWith("young", "young\u00b5")), HasSubstr(":9:6: TOML syntax error: a non-ASCII"));
+  EXPECT_THAT(errorOf(kSeed + "[\u00a0a]\n"), HasSubstr(":33:2: TOML syntax error: a non-ASCII"));
+  EXPECT_THAT(errorOf(seedWith("name = \"hemicylinder\"", "name = \"hemi\\\u00b0\"")),
+              HasSubstr("a backslash must not escape a non-ASCII character"));
+  EXPECT_THAT(errorOf(seedWith("name = \"hemicylinder\"", "name = \"\"\"hemi\\\n  \u00a7\"\"\"")),
+              HasSubstr(":2:3: TOML syntax error: a line continued with a backslash"));
+}
+
+TEST(SceneReader, NonAsciiInStringsAndCommentsIsRead) {
+  // An escaped quote and a continued line in a multi-line string, a literal string, comments.
+  std::string text = seedWith("boundary = \"arc\"", "boundary = '\u0393_c' # '\u00b5'");
+  const std::string name = "name = \"hemicylinder\"";
+  text.replace(text.find(name), name.size(),
+               "name = \"\"\"h\\\"\u00e9\\\n  ok \u00b0\"\"\"  # \u00bd \"\u00b5");
+  const Scene scene = parseScene(text, kSource);
+  EXPECT_EQ(scene.name, "h\"\u00e9ok \u00b0");
+  EXPECT_EQ(scene.contact.boundary, "\u0393_c");
+}
+
 }  // namespace
 }  // namespace stc

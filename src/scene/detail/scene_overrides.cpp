@@ -1,6 +1,7 @@
 #include "src/scene/detail/scene_overrides.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <optional>
 #include <string_view>
 
@@ -25,7 +26,7 @@ bool isBareKeyChar(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-';
 }
 
-/// Parses "a.b[2].c" into steps; nullopt when malformed.
+/// Parses "a.b[2].c" into steps; nullopt when malformed (an index too large for size_t too).
 std::optional<std::vector<Step>> parsePath(std::string_view text) {
   std::vector<Step> steps;
   std::size_t i = 0;
@@ -38,7 +39,10 @@ std::optional<std::vector<Step>> parsePath(std::string_view text) {
       const std::size_t digits = ++i;
       while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) != 0) ++i;
       if (i == digits || i >= text.size() || text[i] != ']') return std::nullopt;
-      steps.push_back({{}, std::stoul(std::string(text.substr(digits, i - digits)))});
+      std::size_t index = 0;  // from_chars, not stoul: an index past size_t is no exception
+      if (std::from_chars(text.data() + digits, text.data() + i, index).ec != std::errc())
+        return std::nullopt;
+      steps.push_back({{}, index});
       ++i;
     }
     if (i == text.size()) return steps;

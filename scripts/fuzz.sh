@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Description: builds the libFuzzer targets of tests/fuzz (clang++-14, with AddressSanitizer and
+#   UndefinedBehaviorSanitizer, in build-fuzz/) and runs each for a bounded time, side by side,
+#   from the seed corpus: the shipped scenes and meshes, tests/cli/bad/*, tests/fuzz/seeds/*.
+#     scene  TOML text (+ "#set" overrides) -> Scene, with every check (tests/fuzz/fuzz_scene.cpp)
+#     gmsh   MSH 4.1 text -> Mesh (tests/fuzz/fuzz_gmsh.cpp)
+#   A finding (crash, exception other than InputError, sanitizer report, leak, timeout, memory
+#   blow-up) fails the run; the log then shows the fuzzer's report and the input that caused it
+#   (base64 and as text), which also stays in build-fuzz/artifacts/<target>/.
+# Sample run:
+#   bash scripts/fuzz.sh                          # both targets, 60 s each (build ~3 min)
+#   STC_FUZZ_SECONDS=600 bash scripts/fuzz.sh gmsh  # one target, 10 minutes
+#   build-fuzz/bin/fuzz_gmsh build-fuzz/artifacts/gmsh/crash-*   # replays a finding
+# Options: the targets to run as arguments (default: scene gmsh); environment:
+#   STC_FUZZ_SECONDS  time per target (default 60)
+#   STC_FUZZ_DIR      build folder (default: build-fuzz/ in the repository); its corpus/ keeps
+#                     what earlier local runs found, so they start from there
+#   STC_FUZZ_CXX      compiler (default clang++-14)
+#   STC_JOBS          parallel compile jobs (default: nproc)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${STC_FUZZ_DIR:-$root/build-fuzz}
+seconds=${STC_FUZZ_SECONDS:-60}
+cxx=${STC_FUZZ_CXX:-clang++-14}
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(scene gmsh)
+for target in "${targets[@]}"; do
+  [ -f "$root/tests/fuzz/fuzz_$target.cpp" ] || { echo "fuzz.sh: no target '$target' (scene, gmsh)"; exit 1; }
+done
+command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)"; exit 1; }
+
+cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Debug \
+  -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DCMAKE_CXX_FLAGS="-D_GLIBCXX_ASSERTIONS" \
+  -DSTC_BUILD_FUZZERS=ON -DSTC_BUILD_TESTS=OFF >/dev/null
+cmake --build "$build" -j "${STC_JOBS:-$(nproc)}" --target "${targets[@]/#/fuzz_}"
+
+# seeds TARGET: the shipped inputs of the target's kind, copied afresh into one folder.
+seeds() {
+  local dir=$build/seeds/$1
+  rm -rf "$dir" && mkdir -p "$dir"
+  case $1 in
+    scene) cp "$root"/examples/scenes/*.toml "$root"/examples/scenes/hard/*.toml \
+              "$root"/tests/cli/bad/*.toml "$root"/tests/fuzz/seeds/scene/* "$dir" ;;
+    gmsh) cp "$root"/examples/meshes/*.msh "$root"/tests/cli/bad/*.msh \
+             "$root"/tests/fuzz/seeds/gmsh/* "$dir" ;;
+  esac
+  echo "$dir"
+}
+
+# run TARGET: fuzzes for $seconds into build-fuzz/corpus/TARGET; its output goes to TARGET.log.
+# -max_len 8192: long enough for every section of a small mesh, short enough to keep inputs fast
+# (punch.msh is read truncated); -timeout 25 s for one input, far above any sane parse.
+run() {
+  local corpus=$build/corpus/$1 artifacts=$build/artifacts/$1
+  rm -rf "$artifacts" && mkdir -p "$corpus" "$artifacts"
+  "$build/bin/fuzz_$1" -max_total_time="$seconds" -max_len=8192 -timeout=25 -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus" "$(seeds "$1")" \
+    >"$build/$1.log" 2>&1
+}
+
+# report TARGET STATUS: the end of the log; on failure the whole report and the inputs.
+report() {
+  local log=$build/$1.log
+  if [ "$2" -eq 0 ]; then
+    echo "fuzz $1: no finding in $seconds s, from $(find "$build/seeds/$1" -type f | wc -l) seeds"
+    grep -E '^(Done|stat::(average_exec_per_sec|new_units_added|slowest_unit_time_sec|peak_rss_mb))' \
+      "$log" || tail -n 3 "$log"
+    return
+  fi
+  echo "fuzz $1: FINDING (libFuzzer exit status $2); its report:"
+  grep -vE '^#[0-9]+' "$log" | tail -n 80
+  for input in "$build/artifacts/$1"/*; do
+    [ -f "$input" ] || continue
+    echo "--- input $input ($(wc -c <"$input") bytes), base64 (base64 -d > input to replay):"
+    base64 "$input"
+    echo "--- the same as text (first 40 lines, cat -v):"
+    head -n 40 "$input" | cat -v
+  done
+}
+
+# file:line in the stack traces of a report (llvm-14's symbolizer; else addr2line).
+sym=/usr/lib/llvm-14/bin/llvm-symbolizer
+if [ -x "$sym" ]; then export ASAN_OPTIONS="external_symbolizer_path=$sym${ASAN_OPTIONS:+:$ASAN_OPTIONS}"; fi
+declare -A pids
+for target in "${targets[@]}"; do
+  run "$target" & pids[$target]=$!
+done
+failed=0
+for target in "${targets[@]}"; do
+  status=0
+  wait "${pids[$target]}" || status=$?
+  report "$target" "$status"
+  [ "$status" -eq 0 ] || failed=1
+done
+exit "$failed"
