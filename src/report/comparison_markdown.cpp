@@ -115,18 +115,19 @@ void notes(std::ostream& out, const Comparison& c) {
   out << "\n";
 }
 
-void machine(std::ostream& out, const Comparison& c) {
-  const RunEnvironment& e = c.environment;
+}  // namespace
+
+std::string machineMarkdown(const RunEnvironment& e, const std::string& load_after) {
+  std::ostringstream out;
   out << "## Machine and build\n\n"
       << "- CPU: " << e.cpu_model << "; " << e.logical_cores << " logical cores, " << e.usable_cores
       << " usable by this process\n"
       << "- kernel: " << e.kernel << "\n- compiler: " << e.compiler << "; build type " << e.build_type
       << "; commit " << e.git_commit << "\n"
       << "- load average (1, 5, 15 min) at the start: " << (e.load_average.empty() ? "unknown" : e.load_average)
-      << "; at the end: " << (c.load_after.empty() ? "unknown" : c.load_after) << "\n";
+      << "; at the end: " << (load_after.empty() ? "unknown" : load_after) << "\n";
+  return out.str();
 }
-
-}  // namespace
 
 std::string summaryMarkdown(const Comparison& comparison) {
   const std::vector<StrategySummary> all = summarizeAll(comparison);
@@ -137,7 +138,7 @@ std::string summaryMarkdown(const Comparison& comparison) {
   ratioTable(out, comparison, all);
   memoryTable(out, comparison);
   notes(out, comparison);
-  machine(out, comparison);
+  out << machineMarkdown(comparison.environment, comparison.load_after);
   return out.str();
 }
 

@@ -13,6 +13,9 @@ namespace stc {
 std::string workPrecisionCsv(const Comparison& comparison);
 std::string summaryCsv(const Comparison& comparison);
 std::string summaryMarkdown(const Comparison& comparison);
+/// The "Machine and build" section of a report: CPU, cores, kernel, compiler, build type, commit,
+/// load averages at the start (in `environment`) and at the end.
+std::string machineMarkdown(const RunEnvironment& environment, const std::string& load_after);
 
 /// Writes the three files into `dir` (which must exist), each atomically.
 void writeComparison(const std::filesystem::path& dir, const Comparison& comparison);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "fas/solve_by_name.hpp"
+#include "report/csv_table.hpp"
 #include "src/report/comparison.hpp"
 #include "src/report/number_format.hpp"
 #include "src/report/work_precision.hpp"
@@ -26,40 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A CSV file as rows of named cells.
-struct Table {
-  std::vector<std::string> header;
-  std::vector<std::map<std::string, std::string>> rows;
-};
-
-std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  std::string cell;
-  while (std::getline(in, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
-Table readCsv(const fs::path& file) {
-  Table t;
-  std::ifstream in(file);
-  std::string line;
-  if (!std::getline(in, line)) return t;
-  t.header = splitCsvLine(line);
-  while (std::getline(in, line)) {
-    const auto cells = splitCsvLine(line);
-    std::map<std::string, std::string> row;
-    for (std::size_t i = 0; i < t.header.size() && i < cells.size(); ++i) row[t.header[i]] = cells[i];
-    t.rows.push_back(std::move(row));
-  }
-  return t;
-}
-
-std::optional<double> number(const std::string& cell) {
-  if (cell.empty()) return std::nullopt;
-  return std::stod(cell);
-}
+using test::number;
+using test::readCsv;
+using test::Table;
 
 class CompareCommand : public ::testing::Test {
  protected:
