@@ -5,6 +5,7 @@
 
 #include "src/cli/commands.hpp"
 #include "src/cli/compare_command.hpp"
+#include "src/cli/scaling_command.hpp"
 #include "src/core/input_error.hpp"
 #include "src/io/output_error.hpp"
 
@@ -62,6 +63,9 @@ int main(int argc, char** argv) {
   stc::cli::CompareArgs compare;
   auto* compare_cmd = stc::cli::addCompareCommand(app, compare);
 
+  stc::cli::ScalingArgs scaling;
+  auto* scaling_cmd = stc::cli::addScalingCommand(app, scaling);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -73,6 +77,7 @@ int main(int argc, char** argv) {
     if (check_cmd->parsed()) return stc::cli::runCheck(check);
     if (svd_cmd->parsed()) return stc::cli::runSvd(svd);
     if (compare_cmd->parsed()) return stc::cli::runCompare(compare);
+    if (scaling_cmd->parsed()) return stc::cli::runScaling(scaling);
     return stc::cli::runSolve(solve);
   } catch (const stc::InputError& e) {
     return fail(1, e.what());
