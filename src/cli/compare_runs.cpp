@@ -112,6 +112,13 @@ void describeResult(StrategyMeasurement& m, const SolveSummary& s) {
   m.final_error = s.error;
 }
 
+std::optional<double> smallestError(const std::vector<WorkPoint>& points) {
+  std::optional<double> best;
+  for (const WorkPoint& p : points)
+    if (p.error && (!best || *p.error < *best)) best = p.error;
+  return best;
+}
+
 std::string repeatLabel(const std::string& solver, int repeat, int repeats) {
   return solver + " " + std::to_string(repeat) + "/" + std::to_string(repeats);
 }
@@ -149,6 +156,7 @@ StrategyMeasurement measureStrategy(const std::string& solver, const CompareCont
     measured = runOnce(solver, c, true, solver + " (error run)", errorRunStop(c.stop, why));
     m.error_run_s = measured->total_s;
     describeResult(m, measured->result.summary);
+    m.best_error = smallestError(measured->points);
     if (!why.empty()) m.message = why;
     timed_stop = timedRunStop(c.stop, m.iterations);
   }

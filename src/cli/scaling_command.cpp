@@ -104,7 +104,8 @@ void printStrategy(const ScalingStudy& study, const ScalingPoint& p, const Strat
   const Reach r = reachAt(study, p, m.solver);
   std::cout << "    " << m.solver << ": "
             << (r.wall_s ? targetLabel(study.target_error) + " in " + shortNumber(*r.wall_s, 3) + " s"
-                         : "not reached (" + reachStatus(study, p, m.solver) + ")")
+                         : "not reached (" + reachStatus(study, p, m.solver) + ", best error " +
+                               shortNumber(m.best_error, 2) + ")")
             << ", peak " << shortNumber(m.memory.peak_mb, 4) << " MB";
   if (m.error_run_s) std::cout << ", error run " << shortNumber(*m.error_run_s, 3) << " s";
   std::cout << std::endl;

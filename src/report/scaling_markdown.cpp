@@ -40,7 +40,9 @@ void introduction(std::ostream& out, const ScalingStudy& s) {
 std::string reachCell(const ScalingStudy& s, const ScalingPoint& p, const std::string& solver) {
   const Reach r = reachAt(s, p, solver);
   if (r.wall_s) return shortNumber(*r.wall_s, 3) + " s";
-  return "not reached (" + reachStatus(s, p, solver) + ")";
+  const StrategyMeasurement* m = p.strategy(solver);
+  const std::string best = m && m->best_error ? "; best error " + shortNumber(*m->best_error, 2) : "";
+  return "not reached (" + reachStatus(s, p, solver) + best + ")";
 }
 
 std::string workCell(const ScalingStudy& s, const ScalingPoint& p, const std::string& solver) {
@@ -96,13 +98,13 @@ void exponentTable(std::ostream& out, const ScalingStudy& s) {
   out << "\n";
 }
 
-std::string crossingText(const Crossover& c, Series series) {
+std::string crossingText(const Crossover& c, Series series, double largest) {
   if (c.first_faster) return "faster from " + sizeName(series) + " = " + shortNumber(*c.first_faster, 6);
-  if (!c.fitted_crossing) return "never faster in range; no fitted crossing (a fit is missing or the exponents are equal)";
+  if (!c.fitted_crossing) return "never faster; no fit to extrapolate (fewer than two sizes reached)";
+  if (!c.faster_beyond) return "never faster; the fitted lines diverge (larger exponent): no crossover beyond the sizes";
   const std::string at = sizeName(series) + " ≈ " + shortNumber(*c.fitted_crossing, 3);
-  return c.faster_beyond ? "never faster in range; the fitted lines cross at " + at + " (extrapolated)"
-                         : "never faster in range; the fitted lines diverge (they cross at " + at +
-                               ", below which it would be the faster)";
+  return *c.fitted_crossing > largest ? "never faster in range; the fitted lines cross at " + at + " (extrapolated)"
+                                      : "never faster; the fitted lines cross at " + at + ", inside the range (scatter)";
 }
 
 void crossoverTable(std::ostream& out, const ScalingStudy& s, Series series) {
@@ -116,7 +118,7 @@ void crossoverTable(std::ostream& out, const ScalingStudy& s, Series series) {
     const Crossover c = crossoverAgainstIncremental(s, solver, series);
     out << "| " << solver << " |";
     for (double r : c.time_ratio) out << " " << (std::isfinite(r) ? shortNumber(r, 3) : "—") << " |";
-    out << " " << crossingText(c, series) << " |\n";
+    out << " " << crossingText(c, series, points.back()->size(series)) << " |\n";
   }
   out << "\n";
 }
@@ -147,16 +149,19 @@ void memoryTable(std::ostream& out, const ScalingStudy& s) {
 void estimateTable(std::ostream& out, const ScalingStudy& s) {
   out << "\nWhat the sizes predict, in MB of 8-byte doubles: the Cholesky factor of K_ff (K + BᵀkB has the same "
          "pattern), one interface history (2n_C × m: the LATIN iterates s, ŝ are a few of them), one "
-         "displacement history (n_free × m), the dense Delassus matrix (2n_C)² that the incremental solver "
-         "and the error measure hold, one dense m × m matrix.\n\n"
-      << "| arc nodes | m | n_free | n_C | factor | interface history | displacement history | Delassus | m × m |\n"
-      << separator(9);
+         "displacement history (n_free × m), the dense Delassus matrix W = B K⁻¹ Bᵀ (2n_C)² that the "
+         "incremental solver and the error measure hold, the dense Bᵀ and K⁻¹ Bᵀ (n_free × 2n_C each) it is "
+         "formed from, one dense m × m matrix.\n\n"
+      << "| arc nodes | m | n_free | n_C | factor | interface history | displacement history | Delassus | "
+         "Bᵀ and K⁻¹Bᵀ | m × m |\n"
+      << separator(10);
   for (const ScalingPoint& p : s.points) {
     const MemoryEstimate e = estimateMemory(p);
     out << "| " << p.arc_nodes << " | " << p.comparison.n_steps << " | " << p.free_dofs << " | "
         << p.comparison.n_contact_nodes << " | " << shortNumber(e.factor_mb, 3) << " | "
         << shortNumber(e.interface_history_mb, 3) << " | " << shortNumber(e.displacement_history_mb, 3) << " | "
-        << shortNumber(e.delassus_mb, 3) << " | " << shortNumber(e.time_matrix_mb, 3) << " |\n";
+        << shortNumber(e.delassus_mb, 3) << " | " << shortNumber(e.condensation_mb, 3) << " | "
+        << shortNumber(e.time_matrix_mb, 3) << " |\n";
   }
 }
 
@@ -187,6 +192,20 @@ void memorySection(std::ostream& out, const ScalingStudy& s) {
   out << "\n";
 }
 
+void notReachedNotes(std::ostream& out, const ScalingStudy& s) {
+  std::ostringstream notes;
+  for (const ScalingPoint& p : s.points)
+    for (const StrategyMeasurement& m : p.comparison.strategies)
+      if (!reachAt(s, p, m.solver).wall_s)
+        notes << "- " << m.solver << " at " << p.arc_nodes << " arc nodes, m = " << p.comparison.n_steps << ": "
+              << m.message << " (" << m.iterations << " iterations, " << m.relaxations << " relaxations, error run "
+              << shortNumber(m.error_run_s, 3) << " s; final true error " << shortNumber(m.final_error, 2)
+              << ", best " << shortNumber(m.best_error, 2) << ").\n";
+  if (notes.str().empty()) return;
+  out << "## Targets not reached\n\nWhy each run without a time ended (the solver's message of its error run):\n\n"
+      << notes.str() << "\n";
+}
+
 }  // namespace
 
 std::string scalingMarkdown(const ScalingStudy& study) {
@@ -197,6 +216,7 @@ std::string scalingMarkdown(const ScalingStudy& study) {
   exponentTable(out, study);
   crossoverSection(out, study);
   memorySection(out, study);
+  notReachedNotes(out, study);
   out << machineMarkdown(study.environment, study.load_after);
   return out.str();
 }

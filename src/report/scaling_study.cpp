@@ -123,6 +123,7 @@ MemoryEstimate estimateMemory(const ScalingPoint& point) {
   e.interface_history_mb = interface * c.n_steps * kDouble / kMb;
   e.displacement_history_mb = static_cast<double>(point.free_dofs) * c.n_steps * kDouble / kMb;
   e.delassus_mb = interface * interface * kDouble / kMb;
+  e.condensation_mb = 2.0 * point.free_dofs * interface * kDouble / kMb;
   e.time_matrix_mb = static_cast<double>(c.n_steps) * c.n_steps * kDouble / kMb;
   return e;
 }

@@ -101,6 +101,9 @@ struct MemoryEstimate {
   double interface_history_mb = 0.0;   ///< one 2 n_C × m history
   double displacement_history_mb = 0.0;  ///< one n_free × m history
   double delassus_mb = 0.0;            ///< dense (2 n_C)² Delassus matrix (incremental, error measure)
+  /// The dense Bᵀ and K_ff⁻¹ Bᵀ (n_free × 2 n_C each) that the Delassus matrix W = B K_ff⁻¹ Bᵀ is
+  /// formed from (CondensedInterface::build, incremental solver and error measure).
+  double condensation_mb = 0.0;
   double time_matrix_mb = 0.0;         ///< one dense m × m matrix
 };
 

@@ -15,8 +15,8 @@ std::string ratioCell(double ratio) { return std::isfinite(ratio) ? shortNumber(
 void csvHeader(std::ostream& out) {
   out << "series,arc_nodes,dofs,free_dofs,contact_nodes,steps,solver,status,time_to_target_s,"
          "relaxations_to_target,sparse_solves_to_target,repeats_reaching,time_ratio_to_incremental,"
-         "error_at_stop,iterations,peak_rss_mb,rss_growth_mb,baseline_mb,reference_s,error_run_s,"
-         "factor_mb,interface_history_mb,displacement_history_mb,delassus_mb\n";
+         "error_at_stop,best_error,iterations,peak_rss_mb,rss_growth_mb,baseline_mb,reference_s,error_run_s,"
+         "factor_mb,interface_history_mb,displacement_history_mb,delassus_mb,condensation_mb\n";
 }
 
 void csvRow(std::ostream& out, const ScalingStudy& study, Series series, const ScalingPoint& p,
@@ -30,11 +30,11 @@ void csvRow(std::ostream& out, const ScalingStudy& study, Series series, const S
       << c.n_contact_nodes << ',' << c.n_steps << ',' << m.solver << ',' << reachStatus(study, p, m.solver) << ','
       << shortNumber(r.wall_s, 6) << ',' << shortNumber(r.relaxations, 8) << ',' << shortNumber(r.sparse_solves, 12)
       << ',' << r.repeats_reached << ',' << ratioCell(ratio) << ',' << shortNumber(m.final_error, 4) << ','
-      << m.iterations << ',' << shortNumber(m.memory.peak_mb, 5) << ',' << shortNumber(m.memory.growthMb(), 4)
+      << shortNumber(m.best_error, 4) << ',' << m.iterations << ',' << shortNumber(m.memory.peak_mb, 5) << ',' << shortNumber(m.memory.growthMb(), 4)
       << ',' << shortNumber(m.memory.baseline_mb, 5) << ',' << shortNumber(c.reference_s, 4) << ','
       << shortNumber(m.error_run_s, 4) << ',' << shortNumber(e.factor_mb, 4) << ','
       << shortNumber(e.interface_history_mb, 4) << ',' << shortNumber(e.displacement_history_mb, 4) << ','
-      << shortNumber(e.delassus_mb, 4) << '\n';
+      << shortNumber(e.delassus_mb, 4) << ',' << shortNumber(e.condensation_mb, 4) << '\n';
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ stc_cli_test(scaling_mesh_series_of_a_file_mesh 1 "--arc-nodes needs a scene wit
              ${scenes}/punch.toml --out ${out}/scaling_bad)
 stc_cli_test(scaling_unknown_solver 1 "unknown solver 'fast'" scaling ${seed} --solvers latin,fast
              --out ${out}/scaling_bad)
-stc_cli_test(scaling_time_cap_not_reached 0 "latin: not reached \\(time cap\\)" scaling ${seed} ${tiny}
+stc_cli_test(scaling_time_cap_not_reached 0 "latin: not reached \\(time cap, best error [0-9.e+-]+\\)" scaling ${seed} ${tiny}
              --solvers latin,incremental --arc-nodes 11 --steps 11,21 --time-cap 1e-9 --out ${out}/scaling_cap)
 stc_cli_test(scaling_time_series_only 0 "report: .*summary\\.md" scaling ${scenes}/punch.toml --repeats 1
              --solvers incremental --arc-nodes none --steps 11,21 --out ${out}/scaling_punch)

@@ -117,6 +117,7 @@ TEST(ScalingStudy, EstimatesMemoryFromTheSizes) {
   EXPECT_NEAR(e.interface_history_mb, 200.0 * 100 * 8 / mb, 1e-12);
   EXPECT_NEAR(e.displacement_history_mb, 1000.0 * 100 * 8 / mb, 1e-12);
   EXPECT_NEAR(e.delassus_mb, 200.0 * 200 * 8 / mb, 1e-12);
+  EXPECT_NEAR(e.condensation_mb, 2.0 * 1000 * 200 * 8 / mb, 1e-12);
   EXPECT_NEAR(e.time_matrix_mb, 100.0 * 100 * 8 / mb, 1e-12);
 }
 
