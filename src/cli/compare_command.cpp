@@ -27,23 +27,6 @@ std::string trimmed(const std::string& text) {
   return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
-/// The comma-separated list, each name checked (InputError for unknown, unavailable, repeated).
-std::vector<std::string> solverList(const std::string& list) {
-  if (trimmed(list).empty()) return fas::availableSolvers();
-  std::vector<std::string> names;
-  std::stringstream items(list);
-  std::string item;
-  while (std::getline(items, item, ',')) {
-    const std::string name = trimmed(item);
-    if (name.empty()) throw InputError("--solvers: empty name in '" + list + "'");
-    fas::requireAvailable(name);
-    if (std::find(names.begin(), names.end(), name) != names.end())
-      throw InputError("--solvers: '" + name + "' is listed twice");
-    names.push_back(name);
-  }
-  return names;
-}
-
 std::string commandLine(const CompareArgs& a, const std::vector<std::string>& solvers,
                         const std::filesystem::path& out) {
   std::string joined;
@@ -64,22 +47,38 @@ void printStrategy(const StrategyMeasurement& m) {
   std::cout << std::endl;
 }
 
-Comparison describe(const CompareArgs& args, const Scene& scene, const Problem& problem,
-                    const std::vector<std::string>& solvers, const std::filesystem::path& out) {
+}  // namespace
+
+std::vector<std::string> solverList(const std::string& list) {
+  if (trimmed(list).empty()) return fas::availableSolvers();
+  std::vector<std::string> names;
+  std::stringstream items(list);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    const std::string name = trimmed(item);
+    if (name.empty()) throw InputError("--solvers: empty name in '" + list + "'");
+    fas::requireAvailable(name);
+    if (std::find(names.begin(), names.end(), name) != names.end())
+      throw InputError("--solvers: '" + name + "' is listed twice");
+    names.push_back(name);
+  }
+  return names;
+}
+
+Comparison describeComparison(const std::string& scene_file, const std::string& command, const Scene& scene,
+                              const Problem& problem, int repeats) {
   Comparison c;
   c.scene_name = scene.name;
-  c.scene_file = args.scene;
-  c.command = commandLine(args, solvers, out);
+  c.scene_file = scene_file;
+  c.command = command;
   c.n_dofs = problem.numDofs();
   c.n_contact_nodes = problem.contact.size();
   c.n_steps = problem.numSteps();
   c.tolerance = scene.solver.tolerance;
-  c.repeats = args.repeats;
+  c.repeats = repeats;
   c.environment = describeRunEnvironment(STC_BUILD_TYPE, STC_GIT_COMMIT);
   return c;
 }
-
-}  // namespace
 
 CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args) {
   auto* cmd = app.add_subcommand("compare", "work-precision comparison of strategies (docs/compare.md)");
@@ -105,7 +104,7 @@ int runCompare(const CompareArgs& args) {
       args.out ? std::filesystem::path(*args.out) : std::filesystem::path("results") / scene.name / "compare";
   ensureWritableDirectory(out);  // fail before the runs, not after
   const Problem problem = buildProblem(scene);
-  Comparison comparison = describe(args, scene, problem, solvers, out);
+  Comparison comparison = describeComparison(args.scene, commandLine(args, solvers, out), scene, problem, args.repeats);
 
   const ReferenceSolution reference = computeReference(problem, args.quiet);
   comparison.reference_s = reference.total_s;

@@ -4,6 +4,10 @@
 #include <string>
 #include <vector>
 
+#include "src/problem/problem.hpp"
+#include "src/report/comparison.hpp"
+#include "src/scene/scene.hpp"
+
 namespace CLI {
 class App;
 }
@@ -19,6 +23,14 @@ struct CompareArgs {
   std::optional<double> tolerance;     ///< on the indicator; default the scene's
   bool quiet = false;
 };
+
+/// The comma-separated strategy names of --solvers (empty: fas::availableSolvers()); InputError for
+/// an empty, unknown, unavailable or repeated name.
+std::vector<std::string> solverList(const std::string& list);
+
+/// The comparison's description before its runs: scene, sizes, command, machine and build.
+Comparison describeComparison(const std::string& scene_file, const std::string& command, const Scene& scene,
+                              const Problem& problem, int repeats);
 
 /// Declares the sub-command and its options on `app`, filling `args`.
 CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args);

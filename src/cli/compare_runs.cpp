@@ -7,6 +7,7 @@
 
 #include "fas/solve_by_name.hpp"
 #include "src/cli/progress.hpp"
+#include "src/report/number_format.hpp"
 #include "src/report/peak_memory.hpp"
 #include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
@@ -42,8 +43,9 @@ std::vector<WorkPoint> pointsOf(const SolveSummary& summary, double setup_s) {
 // The solvers call the callback after every record but the last (IterationMonitor stops first), so
 // the set-up time is measured at the first callback: time since the call minus the record's wall_s.
 // A run that stops at its first record never calls it: its set-up is bounded by the time outside
-// the solver's clock (set-up and return).
-RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool measure_error, const std::string& label) {
+// the solver's clock (set-up and return). `go_on`, when set, stops the run by returning false.
+RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool measure_error, const std::string& label,
+                   const IterationCallback& go_on = {}) {
   Progress progress(label, !c.quiet);
   const IterationCallback show = progress.callback();
   fas::StrategyInputs inputs;
@@ -53,7 +55,8 @@ RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool meas
   const auto start = Clock::now();
   inputs.callback = [&](const IterationRecord& r) {
     if (!setup_s) setup_s = secondsSince(start) - r.wall_s;
-    return show(r);
+    const bool shown = show(r);
+    return shown && (!go_on || go_on(r));
   };
   RunOutcome out;
   out.result = fas::solveByName(solver, c.problem, c.spec, inputs);
@@ -62,6 +65,31 @@ RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool meas
   const SolveSummary& s = out.result.summary;
   out.points = pointsOf(s, setup_s.value_or(std::max(0.0, out.total_s - s.wall_s)));
   return out;
+}
+
+/// The EarlyStop test of an error run: false (stop) at the first record that reaches the target, or
+/// once the solver's clock passes the cap; `why` then says which, for the report.
+IterationCallback errorRunStop(const EarlyStop& stop, std::string& why) {
+  if (!stop.target_error && !stop.time_cap_s) return {};
+  return [&stop, &why](const IterationRecord& r) {
+    if (stop.target_error && r.error && *r.error <= *stop.target_error) {
+      why = "stopped at iteration " + std::to_string(r.iteration) + ", the first with true error <= " +
+            shortNumber(*stop.target_error, 3);
+      return false;
+    }
+    if (stop.time_cap_s && r.wall_s >= *stop.time_cap_s) {
+      why = "time cap of " + shortNumber(*stop.time_cap_s, 3) + " s reached at iteration " +
+            std::to_string(r.iteration) + " (true error " + shortNumber(r.error, 3) + ")";
+      return false;
+    }
+    return true;
+  };
+}
+
+/// With a target error, the timed runs stop where the error run did; without one, they run to the end.
+IterationCallback timedRunStop(const EarlyStop& stop, int last_iteration) {
+  if (!stop.target_error) return {};
+  return [last_iteration](const IterationRecord& r) { return r.iteration < last_iteration; };
 }
 
 WorkPoint referencePoint(const RunOutcome& run, const ErrorReference& reference) {
@@ -84,6 +112,13 @@ void describeResult(StrategyMeasurement& m, const SolveSummary& s) {
   m.final_error = s.error;
 }
 
+std::optional<double> smallestError(const std::vector<WorkPoint>& points) {
+  std::optional<double> best;
+  for (const WorkPoint& p : points)
+    if (p.error && (!best || *p.error < *best)) best = p.error;
+  return best;
+}
+
 std::string repeatLabel(const std::string& solver, int repeat, int repeats) {
   return solver + " " + std::to_string(repeat) + "/" + std::to_string(repeats);
 }
@@ -102,6 +137,7 @@ ReferenceSolution computeReference(const Problem& problem, bool quiet) {
   const SpdFactor factor(problem.stiffness_free, "K_ff");
   const CondensedInterface condensed = CondensedInterface::build(problem, factor);
   out.reference = std::make_unique<ErrorReference>(problem, factor, condensed.delassus, ref.interface.lambda);
+  out.factor_nonzeros = factor.factorNonZeros();
   out.total_s = secondsSince(start);
   return out;
 }
@@ -114,13 +150,19 @@ StrategyMeasurement measureStrategy(const std::string& solver, const CompareCont
   PeakMemoryProbe probe;
   probe.reset();
   std::optional<RunOutcome> measured;
+  IterationCallback timed_stop;
   if (!m.reference_point) {
-    measured = runOnce(solver, c, true, solver + " (error run)");
+    std::string why;
+    measured = runOnce(solver, c, true, solver + " (error run)", errorRunStop(c.stop, why));
     m.error_run_s = measured->total_s;
     describeResult(m, measured->result.summary);
+    m.best_error = smallestError(measured->points);
+    if (!why.empty()) m.message = why;
+    timed_stop = timedRunStop(c.stop, m.iterations);
   }
-  for (int r = 1; r <= c.repeats; ++r) {
-    RunOutcome timed = runOnce(solver, c, false, repeatLabel(solver, r, c.repeats));
+  const bool nothing_to_time = measured && c.stop.target_error && !firstReaching(measured->points, *c.stop.target_error);
+  for (int r = 1; r <= c.repeats && !nothing_to_time; ++r) {
+    RunOutcome timed = runOnce(solver, c, false, repeatLabel(solver, r, c.repeats), timed_stop);
     TimedRun run{r, {}, timed.total_s};
     if (m.reference_point) {
       run.points = {referencePoint(timed, *c.reference.reference)};

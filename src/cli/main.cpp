@@ -6,6 +6,7 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/compare_command.hpp"
 #include "src/cli/sweep_command.hpp"
+#include "src/cli/scaling_command.hpp"
 #include "src/core/input_error.hpp"
 #include "src/io/output_error.hpp"
 
@@ -65,6 +66,8 @@ int main(int argc, char** argv) {
 
   stc::cli::SweepArgs sweep;
   auto* sweep_cmd = stc::cli::addSweepCommand(app, sweep);
+  stc::cli::ScalingArgs scaling;
+  auto* scaling_cmd = stc::cli::addScalingCommand(app, scaling);
 
   try {
     app.parse(argc, argv);
@@ -78,6 +81,7 @@ int main(int argc, char** argv) {
     if (svd_cmd->parsed()) return stc::cli::runSvd(svd);
     if (compare_cmd->parsed()) return stc::cli::runCompare(compare);
     if (sweep_cmd->parsed()) return stc::cli::runSweep(sweep);
+    if (scaling_cmd->parsed()) return stc::cli::runScaling(scaling);
     return stc::cli::runSolve(solve);
   } catch (const stc::InputError& e) {
     return fail(1, e.what());

@@ -39,5 +39,6 @@ Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B) const {
 }
 Eigen::VectorXd SpdFactor::solve(const Eigen::VectorXd& b) const { return impl_->llt.solve(b); }
 int SpdFactor::size() const { return impl_->n; }
+double SpdFactor::factorNonZeros() const { return impl_->llt.cholmod().lnz; }
 
 }  // namespace stc

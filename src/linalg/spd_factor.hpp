@@ -21,6 +21,9 @@ class SpdFactor {
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   int size() const;
+  /// Entries of the Cholesky factor L as CHOLMOD's analysis counts them (cholmod_common::lnz:
+  /// without the explicit zeros of supernodal amalgamation): its memory is about 8 bytes each.
+  double factorNonZeros() const;
 
  private:
   struct Impl;

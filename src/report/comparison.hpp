@@ -27,6 +27,8 @@ struct StrategyMeasurement {
   int relaxations = 0;
   double indicator = 0.0;
   std::optional<double> final_error;
+  /// Smallest true error of the error run (how close a strategy came to a target it did not reach).
+  std::optional<double> best_error;
   /// The extra run that measured the true error at every iteration (its time is not in the report's).
   std::optional<double> error_run_s;
   /// False when a timed run did not repeat the error run's iterations (the errors it lacks stay empty).

@@ -28,12 +28,8 @@ namespace {
 namespace fs = std::filesystem;
 
 using Table = test::CsvTable;
+using test::number;
 using test::readCsv;
-
-std::optional<double> number(const std::string& cell) {
-  if (cell.empty()) return std::nullopt;
-  return std::stod(cell);
-}
 
 class CompareCommand : public ::testing::Test {
  protected:

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -38,6 +39,18 @@ inline CsvTable readCsv(const std::filesystem::path& file) {
     t.rows.push_back(std::move(row));
   }
   return t;
+}
+
+/// The number in a cell; empty for an empty cell.
+inline std::optional<double> number(const std::string& cell) {
+  if (cell.empty()) return std::nullopt;
+  return std::stod(cell);
+}
+
+/// The whole of a text file.
+inline std::string readText(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 }  // namespace stc::test

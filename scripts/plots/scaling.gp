@@ -1,0 +1,49 @@
+# Plots of `stcontact scaling` (docs/scaling.md), drawn from scaling.csv in the current folder (the
+# report's): time to first reach the target true error against the number of instants m (time
+# series) and against the dofs (mesh series), log-log, one line per strategy; peak resident memory
+# against the same sizes. A size where a strategy did not reach the target has no point.
+# Variables, given with -e (`stcontact scaling` prints the exact line when it cannot draw):
+#   solvers    strategies, space-separated, e.g. 'latin fas-apriori incremental'
+#   target     the target error's label, e.g. '1e-4'
+#   scene      the scene's name, for the titles
+#   series     the series that have sizes: 'time mesh', 'time' or 'mesh'
+#   suffix     appended to each PNG name (the command draws into NAME.png.tmp, then renames)
+# Example, in results/hemicylinder/scaling:
+#   gnuplot -e "solvers='latin fas-apriori incremental'; target='1e-4'; scene='hemicylinder'; series='time mesh'" \
+#           ../../../scripts/plots/scaling.gp
+if (!exists('solvers')) solvers = ''
+if (!exists('target')) target = '1e-4'
+if (!exists('scene')) scene = ''
+if (!exists('series')) series = 'time mesh'
+if (!exists('suffix')) suffix = ''
+
+csv = 'scaling.csv'
+set datafile separator ','
+set datafile columnheaders
+# Value of column `y` on the rows of strategy i in series s, NaN elsewhere (or when empty).
+pick(s, i, y) = strcol('series') eq s && strcol('solver') eq word(solvers, i) && strlen(strcol(y)) > 0 ? column(y) : NaN
+
+set terminal pngcairo size 900,600 font ',11' noenhanced
+set grid
+set key below
+set logscale xy
+set format y '%g'
+
+do for [k=1:words(series)] {
+  s = word(series, k)
+  xcol = s eq 'time' ? 'steps' : 'dofs'
+  xlab = s eq 'time' ? 'instants m (mesh of the scene)' : 'dofs (instants of the scene)'
+  name = s eq 'time' ? 'steps' : 'dofs'
+  set xlabel xlab
+  set output 'time_vs_'.name.'.png'.suffix
+  set title scene.': time to reach true error '.target.' against '.name.' (median of repeats)'
+  set ylabel 'time to reach '.target.' (s, set-up included)'
+  plot for [i=1:words(solvers)] csv using (pick(s, i, xcol)):(pick(s, i, 'time_to_target_s')) \
+       with linespoints pt 7 ps 0.8 lw 2 title word(solvers, i)
+  set output 'memory_vs_'.name.'.png'.suffix
+  set title scene.': peak resident memory to reach '.target.' against '.name
+  set ylabel 'peak resident memory (MB)'
+  plot for [i=1:words(solvers)] csv using (pick(s, i, xcol)):(pick(s, i, 'peak_rss_mb')) \
+       with linespoints pt 7 ps 0.8 lw 2 title word(solvers, i)
+}
+unset output

@@ -1,0 +1,205 @@
+// stcontact scaling SCENE: for every size of a mesh series (arc nodes, at the scene's instants) and
+// a time series (instants, at the scene's mesh), the comparison of `stcontact compare` (same runs,
+// compare_runs.hpp) with every iterative run stopped at the target true error; then growth
+// exponents, crossover against incremental and memory (src/report/scaling_study.hpp). Writes
+// scaling.csv, summary.md, sizes/<size>/ and, through gnuplot, the plots. docs/scaling.md.
+#include "src/cli/scaling_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <sstream>
+
+#include "src/cli/compare_command.hpp"
+#include "src/cli/compare_runs.hpp"
+#include "src/cli/scaling_plots.hpp"
+#include "src/core/input_error.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/report/number_format.hpp"
+#include "src/report/scaling_writer.hpp"
+#include "src/scene/scene_reader.hpp"
+
+namespace stc::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// One size to run: its overrides, and the series it belongs to.
+struct PlannedSize {
+  int arc_nodes = 0, steps = 0;
+  bool in_mesh = false, in_time = false;
+};
+
+/// "101,201" as sizes, each >= `minimum`; "none" (or an empty list) is an empty series.
+std::vector<int> sizeList(const std::string& list, const std::string& option, int minimum) {
+  std::vector<int> sizes;
+  if (list == "none") return sizes;
+  std::stringstream items(list);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    std::size_t used = 0;
+    int value = 0;
+    try {
+      value = std::stoi(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || item.find_first_not_of(" \t", used) != std::string::npos)
+      throw InputError(option + ": '" + item + "' is not an integer");
+    if (value < minimum) throw InputError(option + ": " + item + " must be >= " + std::to_string(minimum));
+    if (std::find(sizes.begin(), sizes.end(), value) != sizes.end())
+      throw InputError(option + ": " + item + " is listed twice");
+    sizes.push_back(value);
+  }
+  return sizes;
+}
+
+/// The mesh series at the base instants, then the time series at the base mesh; a size in both runs once.
+std::vector<PlannedSize> planSizes(const ScalingArgs& a, const Scene& base) {
+  std::vector<PlannedSize> plan;
+  const std::vector<int> arcs = sizeList(a.arc_nodes, "--arc-nodes", 3);
+  const std::vector<int> steps = sizeList(a.steps, "--steps", 2);
+  if (arcs.empty() && steps.empty()) throw InputError("--arc-nodes and --steps are both empty: nothing to run");
+  if (!arcs.empty() && base.mesh.generator != "half_disc")
+    throw InputError("--arc-nodes needs a scene with the half_disc mesh generator (give --arc-nodes none otherwise)");
+  for (int n : arcs) plan.push_back({n, base.time.steps, true, false});
+  for (int m : steps) {
+    auto same = std::find_if(plan.begin(), plan.end(), [&](const PlannedSize& p) {
+      return p.arc_nodes == base.mesh.arc_nodes && p.steps == m;
+    });
+    if (same != plan.end())
+      same->in_time = true;
+    else
+      plan.push_back({base.mesh.arc_nodes, m, false, true});
+  }
+  return plan;
+}
+
+std::string commandLine(const ScalingArgs& a, const std::vector<std::string>& solvers,
+                        const std::filesystem::path& out) {
+  std::string joined;
+  for (const auto& s : solvers) joined += (joined.empty() ? "" : ",") + s;
+  std::string line = "stcontact scaling " + a.scene + " --solvers " + joined + " --out " + out.string() +
+                     " --repeats " + std::to_string(a.repeats) + " --arc-nodes '" + a.arc_nodes + "' --steps '" +
+                     a.steps + "' --target-error " + targetLabel(a.target_error) + " --tol " +
+                     shortNumber(a.tolerance, 6);
+  if (a.max_iterations) line += " --max-iterations " + std::to_string(*a.max_iterations);
+  if (a.time_cap_s) line += " --time-cap " + shortNumber(*a.time_cap_s, 6);
+  for (const auto& o : a.overrides) line += " --set " + o;
+  return line;
+}
+
+Scene sceneAt(const ScalingArgs& a, const PlannedSize& size) {
+  std::vector<std::string> overrides = a.overrides;
+  if (size.in_mesh) overrides.push_back("mesh.arc_nodes=" + std::to_string(size.arc_nodes));
+  overrides.push_back("time.steps=" + std::to_string(size.steps));
+  Scene scene = readScene(a.scene, overrides);
+  scene.solver.tolerance = a.tolerance;
+  if (a.max_iterations) scene.solver.max_iterations = *a.max_iterations;
+  return scene;
+}
+
+void printStrategy(const ScalingStudy& study, const ScalingPoint& p, const StrategyMeasurement& m) {
+  const Reach r = reachAt(study, p, m.solver);
+  std::cout << "    " << m.solver << ": "
+            << (r.wall_s ? targetLabel(study.target_error) + " in " + shortNumber(*r.wall_s, 3) + " s"
+                         : "not reached (" + reachStatus(study, p, m.solver) + ", best error " +
+                               shortNumber(m.best_error, 2) + ")")
+            << ", peak " << shortNumber(m.memory.peak_mb, 4) << " MB";
+  if (m.error_run_s) std::cout << ", error run " << shortNumber(*m.error_run_s, 3) << " s";
+  std::cout << std::endl;
+}
+
+/// Builds the size's problem and reference, then measures every strategy on it.
+ScalingPoint measureSize(const ScalingArgs& a, const ScalingStudy& study, const PlannedSize& size,
+                         const std::string& command) {
+  const Scene scene = sceneAt(a, size);
+  const Problem problem = buildProblem(scene);
+  ScalingPoint p;
+  p.arc_nodes = scene.mesh.arc_nodes;
+  p.free_dofs = problem.numFreeDofs();
+  p.in_mesh_series = size.in_mesh;
+  p.in_time_series = size.in_time;
+  p.comparison = describeComparison(a.scene, command, scene, problem, a.repeats);
+  if (!a.quiet)
+    std::cout << "  " << p.comparison.n_dofs << " dofs, " << p.comparison.n_contact_nodes << " contact nodes, "
+              << p.comparison.n_steps << " instants" << std::endl;
+  const ReferenceSolution reference = computeReference(problem, a.quiet);
+  p.comparison.reference_s = reference.total_s;
+  p.factor_nonzeros = reference.factor_nonzeros;
+  if (!a.quiet) std::cout << "    reference: " << shortNumber(reference.total_s, 3) << " s" << std::endl;
+  CompareContext context{problem, scene.solver, reference, a.repeats, a.quiet};
+  context.stop.target_error = a.target_error;
+  context.stop.time_cap_s = a.time_cap_s;
+  for (const std::string& solver : study.solvers) {
+    p.comparison.strategies.push_back(measureStrategy(solver, context));
+    if (!a.quiet) printStrategy(study, p, p.comparison.strategies.back());
+  }
+  p.comparison.memory_method = describeMemoryMethod(p.comparison.strategies.front().memory.since_reset);
+  p.comparison.load_after = loadAverage();
+  return p;
+}
+
+void validate(const ScalingArgs& a) {
+  if (a.repeats < 1) throw InputError("--repeats must be >= 1");
+  if (!(a.target_error > 0.0 && a.target_error < 1.0)) throw InputError("--target-error must be in (0, 1)");
+  if (!(a.tolerance > 0.0)) throw InputError("--tol must be > 0");
+  if (a.max_iterations && *a.max_iterations < 1) throw InputError("--max-iterations must be >= 1");
+  if (a.time_cap_s && !(*a.time_cap_s > 0.0)) throw InputError("--time-cap must be > 0");
+}
+
+}  // namespace
+
+CLI::App* addScalingCommand(CLI::App& app, ScalingArgs& a) {
+  auto* cmd = app.add_subcommand("scaling", "time to a true error against mesh and time-grid size (docs/scaling.md)");
+  cmd->add_option("scene", a.scene, "scene file (TOML)")->required();
+  cmd->add_option("--solvers", a.solvers, "comma-separated strategies (default: every available one)");
+  cmd->add_option("--out", a.out, "report folder (default results/<scene name>/scaling)");
+  cmd->add_option("--repeats", a.repeats, "timed runs per strategy and size, medians over them")->capture_default_str();
+  cmd->add_option("--arc-nodes", a.arc_nodes, "mesh series: arc nodes, at the scene's instants ('none': no series)")->capture_default_str();
+  cmd->add_option("--steps", a.steps, "time series: instants m, at the scene's mesh ('none': no series)")->capture_default_str();
+  cmd->add_option("--target-error", a.target_error, "true error whose time is measured")->capture_default_str();
+  cmd->add_option("--tol", a.tolerance, "tolerance on the indicator")->capture_default_str();
+  cmd->add_option("--max-iterations", a.max_iterations, "iteration limit (default: the scene's)");
+  cmd->add_option("--time-cap", a.time_cap_s, "seconds after which an error run stops: \"not reached\"");
+  cmd->add_option("--set", a.overrides, "override a scene value for every size: section.key=value")->take_all();
+  cmd->add_flag("--quiet", a.quiet, "no progress, no final report");
+  return cmd;
+}
+
+int runScaling(const ScalingArgs& a) {
+  const auto start = Clock::now();
+  validate(a);
+  const Scene base = readScene(a.scene, a.overrides);
+  const std::vector<PlannedSize> plan = planSizes(a, base);
+  ScalingStudy study;
+  study.solvers = solverList(a.solvers);
+  const std::filesystem::path out =
+      a.out ? std::filesystem::path(*a.out) : std::filesystem::path("results") / base.name / "scaling";
+  ensureWritableDirectory(out);  // fail before the runs, not after
+  study.scene_name = base.name;
+  study.scene_file = a.scene;
+  study.command = commandLine(a, study.solvers, out);
+  study.target_error = a.target_error;
+  study.tolerance = a.tolerance;
+  study.repeats = a.repeats;
+  study.time_cap_s = a.time_cap_s;
+  study.environment = describeRunEnvironment(STC_BUILD_TYPE, STC_GIT_COMMIT);
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    if (!a.quiet)
+      std::cout << "[" << i + 1 << "/" << plan.size() << "] arc_nodes " << plan[i].arc_nodes << ", steps "
+                << plan[i].steps << std::endl;
+    study.points.push_back(measureSize(a, study, plan[i], study.command));
+  }
+  study.memory_method = study.points.front().comparison.memory_method;
+  study.load_after = loadAverage();
+  study.run_s = std::chrono::duration<double>(Clock::now() - start).count();
+  writeScaling(out, study);
+  std::string warning;
+  if (!drawScalingPlots(out, study, warning)) std::cerr << "warning: " << warning << std::endl;
+  if (!a.quiet) std::cout << "report: " << (out / "summary.md").string() << std::endl;
+  return 0;
+}
+
+}  // namespace stc::cli

@@ -1,0 +1,39 @@
+#include "src/cli/scaling_plots.hpp"
+
+#include "src/cli/gnuplot_plots.hpp"
+#include "src/report/number_format.hpp"
+
+namespace stc::cli {
+
+namespace {
+
+/// The series that have sizes, as the script names them.
+std::string seriesWithSizes(const ScalingStudy& study) {
+  std::string series;
+  if (!seriesPoints(study, Series::Time).empty()) series = "time";
+  if (!seriesPoints(study, Series::Mesh).empty()) series += series.empty() ? "mesh" : " mesh";
+  return series;
+}
+
+}  // namespace
+
+std::vector<std::string> scalingPlotNames(const ScalingStudy& study) {
+  std::vector<std::string> names;
+  if (!seriesPoints(study, Series::Time).empty()) names = {"time_vs_steps.png", "memory_vs_steps.png"};
+  if (!seriesPoints(study, Series::Mesh).empty()) {
+    names.push_back("time_vs_dofs.png");
+    names.push_back("memory_vs_dofs.png");
+  }
+  return names;
+}
+
+bool drawScalingPlots(const std::filesystem::path& dir, const ScalingStudy& study, std::string& warning) {
+  std::string solvers;
+  for (const auto& s : study.solvers) solvers += (solvers.empty() ? "" : " ") + s;
+  const std::string variables = "solvers=" + gnuplotString(solvers) + "; target=" +
+                                gnuplotString(targetLabel(study.target_error)) + "; scene=" +
+                                gnuplotString(study.scene_name) + "; series=" + gnuplotString(seriesWithSizes(study));
+  return drawPlots(dir, PlotJob{"scaling.gp", variables, scalingPlotNames(study)}, warning);
+}
+
+}  // namespace stc::cli
