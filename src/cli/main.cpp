@@ -5,6 +5,7 @@
 
 #include "src/cli/commands.hpp"
 #include "src/cli/compare_command.hpp"
+#include "src/cli/threads_option.hpp"
 #include "src/core/input_error.hpp"
 #include "src/io/output_error.hpp"
 
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   solve_cmd->add_flag("--quiet", solve.quiet, "no progress, no final report");
   solve_cmd->add_flag("--no-reference", solve.no_reference,
                       "do not compute the incremental reference (no true error in history.csv)");
+  stc::cli::addThreadsOption(*solve_cmd);
 
   stc::cli::SvdArgs svd;
   auto* svd_cmd = app.add_subcommand("svd", "space-time SVD of the solution in the energy product (verification)");
@@ -61,6 +63,7 @@ int main(int argc, char** argv) {
 
   stc::cli::CompareArgs compare;
   auto* compare_cmd = stc::cli::addCompareCommand(app, compare);
+  stc::cli::addThreadsOption(*compare_cmd);
 
   try {
     app.parse(argc, argv);
@@ -70,6 +73,7 @@ int main(int argc, char** argv) {
     return fail(1, std::string(e.what()) + " (see stcontact --help)");
   }
   try {
+    stc::threadCount();  // a bad STC_THREADS is refused before anything is read or written
     if (check_cmd->parsed()) return stc::cli::runCheck(check);
     if (svd_cmd->parsed()) return stc::cli::runSvd(svd);
     if (compare_cmd->parsed()) return stc::cli::runCompare(compare);

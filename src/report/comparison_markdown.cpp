@@ -119,7 +119,7 @@ void machine(std::ostream& out, const Comparison& c) {
   const RunEnvironment& e = c.environment;
   out << "## Machine and build\n\n"
       << "- CPU: " << e.cpu_model << "; " << e.logical_cores << " logical cores, " << e.usable_cores
-      << " usable by this process\n"
+      << " usable by this process; stcontact threads: " << e.threads << "\n"
       << "- kernel: " << e.kernel << "\n- compiler: " << e.compiler << "; build type " << e.build_type
       << "; commit " << e.git_commit << "\n"
       << "- load average (1, 5, 15 min) at the start: " << (e.load_average.empty() ? "unknown" : e.load_average)

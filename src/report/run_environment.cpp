@@ -7,6 +7,8 @@
 #include <sstream>
 #include <thread>
 
+#include "src/core/threads.hpp"
+
 namespace stc {
 namespace {
 
@@ -61,6 +63,7 @@ RunEnvironment describeRunEnvironment(std::string build_type, std::string git_co
   env.build_type = orUnknown(std::move(build_type));
   env.git_commit = orUnknown(std::move(git_commit));
   env.load_average = loadAverage();
+  env.threads = threadCount();
   return env;
 }
 
