@@ -1,6 +1,6 @@
 // Cost of one LATIN iteration against the bare multi-right-hand-side CHOLMOD solve it contains
 // (issue: "overhead of at most 30% over that solve"), on the seed scene (1088 free dofs, 101
-// contact nodes, 201 instants), κ = 3.
+// contact nodes, 201 instants), κ = 3, on one thread (the ratio of issue 3; threads: bench_stages).
 //   cmake -B build -DSTC_BUILD_BENCHMARKS=ON && cmake --build build --target bench_latin
 //   build/bench/bench_latin --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -8,11 +8,13 @@
 #include "latin/global_stage.hpp"
 #include "latin/indicator.hpp"
 #include "latin/local_stage.hpp"
+#include "src/core/threads.hpp"
 #include "src/scene/scene_reader.hpp"
 
 namespace {
 
 const stc::Problem& seedProblem() {
+  stc::setThreadCount(1);
   static const stc::Problem problem =
       stc::buildProblem(stc::readScene(STC_SOURCE_DIR "/examples/scenes/hemicylinder.toml", {"solver.search_scale=3"}));
   return problem;

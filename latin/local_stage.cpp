@@ -2,14 +2,17 @@
 
 #include <algorithm>
 
-namespace stc::latin {
+#include "src/core/threads.hpp"
 
-void localStage(const ContactInterface& contact, const InterfaceHistory& s, InterfaceHistory& hat) {
-  const int nc = contact.size(), m = s.numSteps();
-  hat.v.resize(2 * nc, m);
-  hat.lambda.resize(2 * nc, m);
+namespace stc::latin {
+namespace {
+
+// Nodes first … last − 1: each node's march in time touches only its own two rows.
+void localStageNodes(const ContactInterface& contact, const InterfaceHistory& s, InterfaceHistory& hat, int first,
+                     int last) {
+  const int m = s.numSteps();
   const double mu = contact.friction;
-  for (int i = 0; i < nc; ++i) {
+  for (int i = first; i < last; ++i) {
     const int n = 2 * i, t = 2 * i + 1;
     const double kn = contact.search_direction[n], kt = contact.search_direction[t];
     const double g0 = contact.initial_gap[i];
@@ -31,6 +34,16 @@ void localStage(const ContactInterface& contact, const InterfaceHistory& s, Inte
       previous_vt = hat.v(t, k);
     }
   }
+}
+
+}  // namespace
+
+void localStage(const ContactInterface& contact, const InterfaceHistory& s, InterfaceHistory& hat) {
+  const int nc = contact.size(), m = s.numSteps();
+  hat.v.resize(2 * nc, m);
+  hat.lambda.resize(2 * nc, m);
+  // Contiguous ranges of nodes, one per thread (the rows of neighbouring nodes share cache lines).
+  parallelRanges(nc, threadCount(), [&](int first, int last) { localStageNodes(contact, s, hat, first, last); });
 }
 
 }  // namespace stc::latin

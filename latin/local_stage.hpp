@@ -12,7 +12,8 @@ namespace stc::latin {
 ///   open (λ̂_n = 0):  v̂_n = v_n − λ_n/k_n, λ̂_t = 0, v̂_t = v_t − λ_t/k_t;
 ///   closed:          v̂_n = −g0, v̂_t = clamp(v̂_t(t_{k−1}), c − b, c + b) with c = v_t − λ_t/k_t,
 ///                    b = μ λ̂_n / k_t, then λ̂_t = λ_t + k_t (v̂_t − v_t)   (stick or slip, branch-free).
-/// v̂_t(t_{−1}) = 0: the body starts unloaded.
+/// v̂_t(t_{−1}) = 0: the body starts unloaded. Nodes are independent: with threadCount() > 1 they
+/// are split into contiguous ranges, one per thread (src/core/threads.hpp); the same result.
 void localStage(const ContactInterface& contact, const InterfaceHistory& s, InterfaceHistory& hat);
 
 }  // namespace stc::latin

@@ -7,6 +7,7 @@
 #include "src/cli/compare_command.hpp"
 #include "src/cli/sweep_command.hpp"
 #include "src/cli/scaling_command.hpp"
+#include "src/cli/threads_option.hpp"
 #include "src/core/input_error.hpp"
 #include "src/io/output_error.hpp"
 
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
   solve_cmd->add_flag("--quiet", solve.quiet, "no progress, no final report");
   solve_cmd->add_flag("--no-reference", solve.no_reference,
                       "do not compute the incremental reference (no true error in history.csv)");
+  stc::cli::addThreadsOption(*solve_cmd);
 
   stc::cli::SvdArgs svd;
   auto* svd_cmd = app.add_subcommand("svd", "space-time SVD of the solution in the energy product (verification)");
@@ -63,11 +65,14 @@ int main(int argc, char** argv) {
 
   stc::cli::CompareArgs compare;
   auto* compare_cmd = stc::cli::addCompareCommand(app, compare);
+  stc::cli::addThreadsOption(*compare_cmd);
 
   stc::cli::SweepArgs sweep;
   auto* sweep_cmd = stc::cli::addSweepCommand(app, sweep);
+  stc::cli::addThreadsOption(*sweep_cmd);
   stc::cli::ScalingArgs scaling;
   auto* scaling_cmd = stc::cli::addScalingCommand(app, scaling);
+  stc::cli::addThreadsOption(*scaling_cmd);
 
   try {
     app.parse(argc, argv);
@@ -77,6 +82,7 @@ int main(int argc, char** argv) {
     return fail(1, std::string(e.what()) + " (see stcontact --help)");
   }
   try {
+    stc::threadCount();  // a bad STC_THREADS is refused before anything is read or written
     if (check_cmd->parsed()) return stc::cli::runCheck(check);
     if (svd_cmd->parsed()) return stc::cli::runSvd(svd);
     if (compare_cmd->parsed()) return stc::cli::runCompare(compare);

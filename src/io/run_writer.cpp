@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "src/contact/contact_state.hpp"
+#include "src/core/threads.hpp"
 #include "src/fem/elasticity.hpp"
 #include "src/io/atomic_file.hpp"
 #include "src/io/contact_tables.hpp"
@@ -66,6 +67,7 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
       .add("indicator", summary.indicator)
       .add("error", summary.error)
       .add("wall_s", summary.wall_s)
+      .add("threads", threadCount())
       .add("n_dofs", problem.numDofs())
       .add("n_contact_nodes", problem.contact.size())
       .add("n_steps", problem.numSteps())

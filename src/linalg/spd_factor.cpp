@@ -2,21 +2,69 @@
 
 #include <Eigen/CholmodSupport>
 #include <algorithm>
+#include <cstring>
+#include <stdexcept>
 
 #include "src/core/input_error.hpp"
 
 namespace stc {
 
+struct SpdFactor::Workspace::Impl {
+  cholmod_common common;
+  cholmod_dense *X = nullptr, *Y = nullptr, *E = nullptr;  ///< cholmod_solve2's solution and buffers
+  Impl() {
+    cholmod_start(&common);
+    common.print = 0;  // failures are thrown, not printed
+  }
+  ~Impl() {
+    cholmod_free_dense(&X, &common);
+    cholmod_free_dense(&Y, &common);
+    cholmod_free_dense(&E, &common);
+    cholmod_finish(&common);
+  }
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+};
+
+SpdFactor::Workspace::Workspace() : impl_(std::make_unique<Impl>()) {}
+SpdFactor::Workspace::~Workspace() = default;
+SpdFactor::Workspace::Workspace(Workspace&&) noexcept = default;
+SpdFactor::Workspace& SpdFactor::Workspace::operator=(Workspace&&) noexcept = default;
+
+// Simplicial LLᵀ (the settings of Eigen's CholmodSimplicialLLT). Not supernodal: the supernodal
+// solve calls the BLAS (dtrsm, dgemm), and Debian's serial OpenBLAS 0.3.21 returns wrong columns when
+// two threads call it at once (measured: ~2% of concurrent 16-column solves; none with the reference
+// BLAS); the simplicial solve is plain C, and on these 2D meshes it is not slower (thread CPU time
+// per 201 right-hand sides, chunks of 16: 2.3–2.6 vs 2.6–2.7 ms at n = 1088, 7.1–8.2 vs 9–11 ms at
+// n = 2560, 19–22 vs 18–23 ms at n = 5700; docs/threads.md).
 struct SpdFactor::Impl {
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
+  cholmod_common common;
+  cholmod_factor* L = nullptr;
+  Workspace own;  ///< for solve(B) without a workspace
   int n = 0;
+  Impl() {
+    cholmod_start(&common);
+    common.print = 0;  // "not positive definite" is the InputError below, not a line on stdout
+    common.final_asis = 0;
+    common.supernodal = CHOLMOD_SIMPLICIAL;
+    common.final_ll = 1;
+  }
+  ~Impl() {
+    cholmod_free_factor(&L, &common);
+    cholmod_finish(&common);
+  }
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
 };
 
 SpdFactor::SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& what)
     : impl_(std::make_unique<Impl>()) {
   impl_->n = static_cast<int>(A.rows());
-  impl_->llt.compute(A);
-  if (impl_->llt.info() != Eigen::Success)
+  cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+  impl_->L = cholmod_analyze(&view, &impl_->common);
+  double beta[2] = {0.0, 0.0};
+  if (impl_->L) cholmod_factorize_p(&view, beta, nullptr, 0, impl_->L, &impl_->common);
+  if (!impl_->L || impl_->L->minor != impl_->L->n)
     throw InputError(what + " is not positive definite (do the Dirichlet conditions fix every rigid-body motion?)");
 }
 
@@ -24,21 +72,35 @@ SpdFactor::~SpdFactor() = default;
 SpdFactor::SpdFactor(SpdFactor&&) noexcept = default;
 SpdFactor& SpdFactor::operator=(SpdFactor&&) noexcept = default;
 
-// CHOLMOD's supernodal solve slows down per column beyond a few dozen right-hand sides at once
-// (cache: the dense panels it sweeps grow with the column count): measured on the seed scene,
-// 201 columns in one call cost ~2.5x as much as the same columns in chunks of 16.
-Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B) const {
-  constexpr Eigen::Index kChunk = 16;
-  if (B.cols() <= kChunk) return impl_->llt.solve(B);
-  Eigen::MatrixXd X(B.rows(), B.cols());
+Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B, Workspace& workspace) const {
+  const Eigen::Index n = impl_->n;
+  if (B.rows() != n) throw std::invalid_argument("SpdFactor::solve: right-hand side has the wrong number of rows");
+  Workspace::Impl& w = *workspace.impl_;
+  Eigen::MatrixXd X(n, B.cols());
   for (Eigen::Index c = 0; c < B.cols(); c += kChunk) {
-    const Eigen::Index n = std::min(kChunk, B.cols() - c);
-    X.middleCols(c, n) = impl_->llt.solve(B.middleCols(c, n));
+    const Eigen::Index cols = std::min<Eigen::Index>(kChunk, B.cols() - c);
+    cholmod_dense b{};  // a view of B's columns c … c + cols − 1 (column-major, leading dimension n)
+    b.nrow = n;
+    b.ncol = cols;
+    b.nzmax = n * cols;
+    b.d = n;
+    b.x = const_cast<double*>(B.data() + c * n);
+    b.xtype = CHOLMOD_REAL;
+    b.dtype = CHOLMOD_DOUBLE;
+    if (!cholmod_solve2(CHOLMOD_A, impl_->L, &b, nullptr, &w.X, nullptr, &w.Y, &w.E, &w.common))
+      throw std::runtime_error("CHOLMOD solve failed (status " + std::to_string(w.common.status) + ")");
+    const auto* x = static_cast<const double*>(w.X->x);
+    for (Eigen::Index j = 0; j < cols; ++j)
+      std::memcpy(X.col(c + j).data(), x + j * static_cast<Eigen::Index>(w.X->d), sizeof(double) * n);
   }
   return X;
 }
-Eigen::VectorXd SpdFactor::solve(const Eigen::VectorXd& b) const { return impl_->llt.solve(b); }
+
+Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B) const { return solve(B, impl_->own); }
+Eigen::VectorXd SpdFactor::solve(const Eigen::VectorXd& b) const {
+  return solve(Eigen::MatrixXd(b), impl_->own).col(0);
+}
 int SpdFactor::size() const { return impl_->n; }
-double SpdFactor::factorNonZeros() const { return impl_->llt.cholmod().lnz; }
+double SpdFactor::factorNonZeros() const { return impl_->common.lnz; }
 
 }  // namespace stc

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <thread>
 
+#include "src/core/threads.hpp"
+
 namespace stc {
 namespace {
 
@@ -61,6 +63,7 @@ RunEnvironment describeRunEnvironment(std::string build_type, std::string git_co
   env.build_type = orUnknown(std::move(build_type));
   env.git_commit = orUnknown(std::move(git_commit));
   env.load_average = loadAverage();
+  env.threads = threadCount();
   return env;
 }
 
@@ -68,7 +71,7 @@ std::string machineMarkdown(const RunEnvironment& e, const std::string& load_aft
   std::ostringstream out;
   out << "## Machine and build\n\n"
       << "- CPU: " << e.cpu_model << "; " << e.logical_cores << " logical cores, " << e.usable_cores
-      << " usable by this process\n"
+      << " usable by this process; stcontact threads: " << e.threads << "\n"
       << "- kernel: " << e.kernel << "\n- compiler: " << e.compiler << "; build type " << e.build_type
       << "; commit " << e.git_commit << "\n"
       << "- load average (1, 5, 15 min) at the start: " << (e.load_average.empty() ? "unknown" : e.load_average)

@@ -13,6 +13,7 @@ struct RunEnvironment {
   std::string build_type = "unknown";  ///< CMAKE_BUILD_TYPE of the program
   std::string git_commit = "unknown";  ///< commit of the sources at configure time
   std::string load_average;            ///< /proc/loadavg's 1, 5, 15 min averages (shared machines)
+  int threads = 1;                     ///< stc::threadCount() when described (docs/threads.md)
 };
 
 /// Reads the machine's description; the build's is passed by the program that knows it.

@@ -110,3 +110,16 @@ add_test(NAME cli.refuse_out_is_a_file
                 --solver latin --out ${out_file} \
            && [ \"$(cat ${out_file})\" = keep ] && [ \"$(ls -A ${refused}/out_is_a_file)\" = file ]")
 set_tests_properties(cli.refuse_out_is_a_file PROPERTIES LABELS cli)
+
+# Threads (docs/threads.md): --threads and STC_THREADS set the count; summary.json records it; a
+# bad count is refused before the output folder is created.
+stc_cli_test(solve_latin_two_threads 0 "latin: converged" solve ${seed} ${small} --solver latin --threads 2
+             --out ${out}/latin_t2)
+add_test(NAME cli.solve_records_threads
+         COMMAND bash -c "grep -q '\"threads\": 2' ${out}/latin_t2/summary.json")
+set_tests_properties(cli.solve_records_threads PROPERTIES DEPENDS cli.solve_latin_two_threads LABELS cli)
+stc_cli_test(bad_threads_zero 1 "--threads" solve ${seed} ${small} --threads 0)
+add_test(NAME cli.bad_stc_threads
+         COMMAND bash ${expect} --absent ${refused}/bad_stc_threads 1 "STC_THREADS = 'two'"
+                 env STC_THREADS=two ${cli} solve ${seed} ${small} --out ${refused}/bad_stc_threads)
+set_tests_properties(cli.bad_stc_threads PROPERTIES LABELS cli)

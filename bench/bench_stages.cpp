@@ -1,0 +1,175 @@
+// Micro-benchmarks of the pieces of a solve (issue 7 parts 5 and 6), each on the seed scene
+// (arc_nodes 101: n = 1088 free dofs, n_C = 101, m = 201) and on a finer mesh of it (arc_nodes
+// 401), on 1 and 2 threads where the piece is threaded; every row is labelled with its sizes.
+//   LocalStage      the contact law on all nodes × instants (METHOD.md §2)
+//   GlobalStage     m right-hand sides built, solved with the factor (by blocks of 32 instants),
+//                   and the interface quantities v = B u, λ = λ̂ − k (v − v̂)
+//   LatinIteration  local stage + global stage + indicator
+//   CoarseStep      one FAS coarse step, i_C = 15, in the fas-apriori coarse space (r ≤ 30 PGD
+//                   modes + 15 residual vectors, seed eqs. (3)–(8))
+//   Enrichment*     one rank-one PGD enrichment by alternating fixed point (METHOD.md §5): with a
+//                   sparse solve per sweep (latin-pgd) or with the product ũ ψᵀ (fas-apriori)
+// Build and run (docs/micro_benchmarks.md):
+//   cmake -S . -B build -DSTC_BUILD_BENCHMARKS=ON && cmake --build build --target bench_stages
+//   build/bench/bench_stages --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "fas/apriori_basis.hpp"
+#include "fas/coarse_step.hpp"
+#include "latin/global_stage.hpp"
+#include "latin/indicator.hpp"
+#include "latin/local_stage.hpp"
+#include "pgd/separated_global_stage.hpp"
+#include "src/core/threads.hpp"
+#include "src/scene/scene_reader.hpp"
+
+namespace {
+
+// fas-apriori's basis options with all 30 PGD modes allowed in one cycle (r = 30 + 15 at once).
+stc::fas::AprioriBasisOptions fullBasis() {
+  stc::fas::AprioriBasisOptions options;
+  options.residual_vectors = 15;
+  options.max_modes = 30;
+  options.modes_per_cycle = 30;
+  return options;
+}
+
+// The seed scene at `arc_nodes` contact nodes, κ = 3 as bench_latin, after 20 LATIN iterations
+// (open, stick and slip nodes), with the fas-apriori coarse space and latin-pgd modes built there.
+struct Sized {
+  stc::Problem problem;
+  stc::latin::GlobalStage global{problem};
+  stc::InterfaceHistory s, hat, s_new;
+  Eigen::MatrixXd u;  ///< free displacements of the last global stage
+  stc::fas::AprioriBasisProvider provider{problem, global.matrix(), fullBasis()};
+  stc::fas::CoarseSpace space;
+  stc::pgd::SeparatedGlobalStage separated{problem, global};
+
+  explicit Sized(int arc_nodes)
+      : problem(stc::buildProblem(stc::readScene(STC_SOURCE_DIR "/examples/scenes/hemicylinder.toml",
+                                                 {"solver.search_scale=3", "mesh.arc_nodes=" + std::to_string(arc_nodes)}))) {
+    s = stc::InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+    for (int i = 0; i < 20; ++i) step();
+    global.solve(hat, s, &u);
+    space = provider.coarseSpace(u, s);
+    stc::InterfaceHistory scratch;
+    for (int j = 0; j < 10; ++j) {  // latin-pgd modes, as after a few enrichments
+      separated.update(hat, scratch);
+      if (!separated.add(separated.candidate({}))) break;
+    }
+    separated.update(hat, scratch);
+  }
+  double step() {
+    stc::latin::localStage(problem.contact, s, hat);
+    global.solve(hat, s_new);
+    const double eta = stc::latin::indicator(problem.contact.search_direction, s_new, hat);
+    std::swap(s, s_new);
+    return eta;
+  }
+};
+
+Sized& sized(int arc_nodes) {
+  static std::map<int, std::unique_ptr<Sized>> cache;
+  auto& entry = cache[arc_nodes];
+  if (!entry) entry = std::make_unique<Sized>(arc_nodes);
+  return *entry;
+}
+
+// The row's sizes as counters (columns of the table, fields of --benchmark_format=json); r only
+// where there is a basis.
+void label(benchmark::State& state, const Sized& z, int r = -1) {
+  state.counters["n"] = z.problem.numFreeDofs();
+  state.counters["n_C"] = z.problem.contact.size();
+  state.counters["m"] = z.problem.numSteps();
+  if (r >= 0) state.counters["r"] = r;
+  state.counters["threads"] = static_cast<double>(state.range(1));
+}
+
+void LocalStage(benchmark::State& state) {
+  Sized& z = sized(static_cast<int>(state.range(0)));
+  const stc::ThreadCountScope threads(static_cast<int>(state.range(1)));
+  for (auto _ : state) {
+    stc::latin::localStage(z.problem.contact, z.s, z.hat);
+    benchmark::ClobberMemory();
+  }
+  label(state, z);
+}
+
+void GlobalStage(benchmark::State& state) {
+  Sized& z = sized(static_cast<int>(state.range(0)));
+  const stc::ThreadCountScope threads(static_cast<int>(state.range(1)));
+  for (auto _ : state) {
+    z.global.solve(z.hat, z.s_new);
+    benchmark::ClobberMemory();
+  }
+  label(state, z);
+}
+
+void LatinIteration(benchmark::State& state) {
+  Sized& z = sized(static_cast<int>(state.range(0)));
+  const stc::ThreadCountScope threads(static_cast<int>(state.range(1)));
+  for (auto _ : state) benchmark::DoNotOptimize(z.step());
+  label(state, z);
+}
+
+void CoarseStep(benchmark::State& state) {
+  Sized& z = sized(static_cast<int>(state.range(0)));
+  const stc::ThreadCountScope threads(static_cast<int>(state.range(1)));
+  const stc::fas::FasOptions options;  // i_C = 15, start (a)
+  stc::InterfaceHistory hat;
+  Eigen::MatrixXd xi;
+  for (auto _ : state) {
+    state.PauseTiming();
+    stc::latin::localStage(z.problem.contact, z.s, hat);  // the coarse step's input s̃
+    state.ResumeTiming();
+    stc::fas::coarseStep(z.problem.contact, z.space, options, z.s, hat, xi);
+    benchmark::ClobberMemory();
+  }
+  label(state, z, z.space.rank());
+}
+
+void EnrichmentLatinPgd(benchmark::State& state) {
+  Sized& z = sized(static_cast<int>(state.range(0)));
+  const stc::ThreadCountScope threads(static_cast<int>(state.range(1)));
+  int space_problems = 0;
+  for (auto _ : state) space_problems = z.separated.candidate({}).space_problems;
+  label(state, z, z.separated.modes().rank());
+  state.counters["sweeps"] = space_problems;
+}
+
+// As AprioriBasisProvider::enrich: space problem x = ũ ψᵀ, time problem ψ = (ΥᵀF) G + (BΥ)ᵀ W.
+void EnrichmentFasApriori(benchmark::State& state) {
+  Sized& z = sized(static_cast<int>(state.range(0)));
+  const stc::ThreadCountScope threads(static_cast<int>(state.range(1)));
+  const stc::pgd::EnergyModes& modes = z.provider.modes();
+  const stc::pgd::SeparatedLoads loads = stc::pgd::separatedLoads(z.problem);
+  const Eigen::MatrixXd W = z.s.lambda + z.problem.contact.search_direction.asDiagonal() * z.s.v;
+  const stc::pgd::SpaceProblem space = [&](const Eigen::RowVectorXd& psi) {
+    return Eigen::VectorXd(z.u * psi.transpose());
+  };
+  const stc::pgd::TimeProblem time = stc::pgd::separatedTimeProblem(modes, loads.G, W);
+  const Eigen::RowVectorXd psi0 = W.colwise().norm();
+  int space_problems = 0;
+  for (auto _ : state) space_problems = stc::pgd::enrichRankOne(modes, space, time, psi0).space_problems;
+  label(state, z, modes.rank());
+  state.counters["sweeps"] = space_problems;
+}
+
+// Arguments: {arc_nodes, threads}.
+void threaded(benchmark::internal::Benchmark* b) { b->ArgsProduct({{101, 401}, {1, 2}}); }
+void serial(benchmark::internal::Benchmark* b) { b->ArgsProduct({{101, 401}, {1}}); }
+
+BENCHMARK(LocalStage)->Apply(threaded)->Unit(benchmark::kMicrosecond);
+BENCHMARK(GlobalStage)->Apply(threaded)->Unit(benchmark::kMillisecond);
+BENCHMARK(LatinIteration)->Apply(threaded)->Unit(benchmark::kMillisecond);
+BENCHMARK(CoarseStep)->Apply(threaded)->Unit(benchmark::kMillisecond);
+BENCHMARK(EnrichmentLatinPgd)->Apply(serial)->Unit(benchmark::kMillisecond);
+BENCHMARK(EnrichmentFasApriori)->Apply(serial)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

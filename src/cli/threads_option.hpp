@@ -1,0 +1,20 @@
+#pragma once
+// --threads N on the sub-commands that solve (docs/threads.md): stc::setThreadCount before the run.
+// Unset: STC_THREADS, else the built-in default (src/core/threads.hpp).
+#include <CLI/CLI.hpp>
+
+#include "src/core/threads.hpp"
+
+namespace stc::cli {
+
+inline CLI::Option* addThreadsOption(CLI::App& command) {
+  return command
+      .add_option_function<int>(
+          "--threads", [](int n) { stc::setThreadCount(n); },
+          "threads for the local stage (over nodes) and the global stage (over blocks of instants); results are "
+          "identical for every count (default: STC_THREADS, else " +
+              std::to_string(stc::kDefaultThreads) + ")")
+      ->check(CLI::PositiveNumber);
+}
+
+}  // namespace stc::cli

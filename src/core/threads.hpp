@@ -1,0 +1,44 @@
+#pragma once
+// Threads for the work that is independent (issue 7 part 6): the LATIN local stage over contact
+// nodes (METHOD.md §2: "embarrassingly parallel over nodes") and the global stage over blocks of
+// instants (one right-hand side per instant, the factor only read). A pool of workers started once
+// (src/core/worker_pool.hpp); the count is process-wide, like Eigen::setNbThreads.
+// Splitting never changes the arithmetic of an item, so results are bitwise those of one thread
+// (tests/core/test_threads.cpp, tests/latin/test_latin_threads.cpp; docs/threads.md).
+#include <functional>
+
+namespace stc {
+
+/// The built-in count when STC_THREADS is not set (docs/threads.md: what paid on the 2-core machine).
+inline constexpr int kDefaultThreads = 2;
+
+/// Threads used by parallelFor: setThreadCount's value, else the environment variable
+/// STC_THREADS (an integer >= 1; anything else throws InputError naming it), else kDefaultThreads.
+int threadCount();
+/// Throws InputError unless n >= 1.
+void setThreadCount(int n);
+
+/// Sets the count for one scope and restores the previous one (tests, benchmarks).
+class ThreadCountScope {
+ public:
+  explicit ThreadCountScope(int n) : previous_(threadCount()) { setThreadCount(n); }
+  ~ThreadCountScope() { setThreadCount(previous_); }
+  ThreadCountScope(const ThreadCountScope&) = delete;
+  ThreadCountScope& operator=(const ThreadCountScope&) = delete;
+
+ private:
+  int previous_;
+};
+
+/// Calls body(item, thread) once for every item in [0, count), on min(threads, count) threads
+/// (thread in [0, threads): an index for per-thread workspaces; 0 is the calling thread). Items are
+/// handed out one at a time, in order (items of unequal cost balance). After a body throws, no new
+/// item starts; the first exception is rethrown here once all threads have stopped. Calling it
+/// from inside a body throws std::logic_error.
+void parallelFor(int count, int threads, const std::function<void(int item, int thread)>& body);
+
+/// Calls body(begin, end) on `threads` contiguous ranges covering [0, count), as equal as possible
+/// (static split: for many cheap items of equal cost, with no shared cache lines inside a range).
+void parallelRanges(int count, int threads, const std::function<void(int begin, int end)>& body);
+
+}  // namespace stc

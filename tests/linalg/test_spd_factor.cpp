@@ -1,0 +1,60 @@
+// SpdFactor (src/linalg/spd_factor.hpp): solves A X = B to round-off, refuses what is not positive
+// definite, and gives bitwise the same columns in any workspace, also with two threads solving at
+// once with one factor (what the threaded global stage relies on, docs/threads.md).
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "src/core/input_error.hpp"
+#include "src/linalg/spd_factor.hpp"
+#include "src/problem/problem.hpp"
+#include "solver/seed_scene.hpp"
+
+namespace {
+
+const stc::Problem& problem() {
+  static const stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 41));
+  return p;
+}
+
+}  // namespace
+
+TEST(SpdFactor, SolvesEveryColumnToRoundOff) {
+  const auto& A = problem().stiffness_free;
+  const stc::SpdFactor factor(A, "K_ff");
+  std::srand(5);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 37);  // two chunks of 16 and a rest
+  const Eigen::MatrixXd X = factor.solve(B);
+  EXPECT_LE((A * X - B).norm(), 1e-10 * B.norm());
+  // Alone, a column goes through CHOLMOD's one-column kernel instead of the four-column one: the
+  // same solution to round-off, not bitwise (why SpdFactor fixes its chunks of columns).
+  const Eigen::VectorXd x = factor.solve(Eigen::VectorXd(B.col(20)));
+  EXPECT_LE((x - X.col(20)).norm(), 1e-13 * X.col(20).norm());
+}
+
+TEST(SpdFactor, RefusesAMatrixWithRigidMotionsOrANegativePivot) {
+  EXPECT_THROW(stc::SpdFactor(problem().stiffness, "K"), stc::InputError);  // no Dirichlet condition
+  Eigen::SparseMatrix<double> negative = problem().stiffness_free;
+  negative.coeffRef(3, 3) = -1.0;
+  EXPECT_THROW(stc::SpdFactor(negative, "K"), stc::InputError);
+}
+
+TEST(SpdFactor, SolvesBitwiseAlikeInAnyWorkspaceAndOnTwoThreadsAtOnce) {
+  const stc::SpdFactor factor(problem().stiffness_free, "K_ff");
+  std::srand(6);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(factor.size(), 50);
+  const Eigen::MatrixXd X = factor.solve(B);
+  stc::SpdFactor::Workspace w1, w2;
+  EXPECT_TRUE(factor.solve(B, w1) == X);
+  int wrong_left = 0, wrong_right = 0;  // two threads, two workspaces, one factor
+  std::thread a([&] {
+    for (int r = 0; r < 50; ++r) wrong_left += !(factor.solve(B.leftCols(32), w1) == X.leftCols(32));
+  });
+  std::thread b([&] {
+    for (int r = 0; r < 50; ++r) wrong_right += !(factor.solve(B.rightCols(18), w2) == X.rightCols(18));
+  });
+  a.join();
+  b.join();
+  EXPECT_EQ(wrong_left, 0);
+  EXPECT_EQ(wrong_right, 0);
+}
