@@ -13,6 +13,10 @@
 #   build-fuzz/bin/fuzz_gmsh build-fuzz/artifacts/gmsh/crash-*   # replays a finding
 # Options: the targets to run as arguments (default: scene gmsh); environment:
 #   STC_FUZZ_SECONDS  time per target (default 60)
+#   STC_FUZZ_RUNS     instead of a time: this many inputs per target, from random seed
+#                     STC_FUZZ_SEED (default 1), so that a run is repeatable (the test command uses
+#                     it: CI fails on a finding of the code, never on the luck of one run); the
+#                     corpus then starts from the seeds alone
 #   STC_FUZZ_DIR      build folder (default: build-fuzz/ in the repository); its corpus/ keeps
 #                     what earlier local runs found, so they start from there
 #   STC_FUZZ_CXX      compiler (default clang++-14)
@@ -21,6 +25,12 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${STC_FUZZ_DIR:-$root/build-fuzz}
 seconds=${STC_FUZZ_SECONDS:-60}
+runs=${STC_FUZZ_RUNS:-}
+if [ -n "$runs" ]; then
+  bound=(-runs="$runs" -seed="${STC_FUZZ_SEED:-1}") budget="$runs inputs (seed ${STC_FUZZ_SEED:-1})"
+else
+  bound=(-max_total_time="$seconds") budget="$seconds s"
+fi
 cxx=${STC_FUZZ_CXX:-clang++-14}
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(scene gmsh)
@@ -53,7 +63,8 @@ seeds() {
 run() {
   local corpus=$build/corpus/$1 artifacts=$build/artifacts/$1
   rm -rf "$artifacts" && mkdir -p "$corpus" "$artifacts"
-  "$build/bin/fuzz_$1" -max_total_time="$seconds" -max_len=8192 -timeout=25 -rss_limit_mb=2048 \
+  [ -z "$runs" ] || { rm -rf "$corpus" && mkdir -p "$corpus"; }  # repeatable: from the seeds alone
+  "$build/bin/fuzz_$1" "${bound[@]}" -max_len=8192 -timeout=25 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus" "$(seeds "$1")" \
     >"$build/$1.log" 2>&1
 }
@@ -62,7 +73,7 @@ run() {
 report() {
   local log=$build/$1.log
   if [ "$2" -eq 0 ]; then
-    echo "fuzz $1: no finding in $seconds s, from $(find "$build/seeds/$1" -type f | wc -l) seeds"
+    echo "fuzz $1: no finding in $budget, from $(find "$build/seeds/$1" -type f | wc -l) seeds"
     grep -E '^(Done|stat::(average_exec_per_sec|new_units_added|slowest_unit_time_sec|peak_rss_mb))' \
       "$log" || tail -n 3 "$log"
     return

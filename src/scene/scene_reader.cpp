@@ -279,19 +279,26 @@ OutputSpec readOutput(const TableView& root) {
   return spec;
 }
 
-/// Parses TOML; a syntax error becomes "FILE:LINE:COLUMN: TOML syntax error: ..." on one line.
-toml::table parseToml(const std::string& text, const ErrorReporter& errors) {
-  // Two defects of toml++ 3.3.0, each refused first (see the headers); this order, so that the
-  // second, which parses parts of the text, meets no misplaced non-ASCII character.
-  detail::refuseMisplacedNonAscii(text, errors);
-  detail::refuseMalformedTableHeaders(text, errors);
+/// toml::parse; a syntax error becomes "FILE:LINE:COLUMN: TOML syntax error: ..." on one line.
+toml::table parseOrFail(std::string_view text, const ErrorReporter& errors, const std::string& note) {
   try {
-    return toml::parse(std::string_view(text), std::string_view(errors.file()));
+    return toml::parse(text, std::string_view(errors.file()));
   } catch (const toml::parse_error& error) {
     const auto& begin = error.source().begin;
-    errors.failAt(begin.line, begin.column,
-                  "TOML syntax error: " + std::string(error.description()));
+    errors.failAt(begin.line, begin.column, "TOML syntax error: " + std::string(error.description()) + note);
   }
+}
+
+/// Parses TOML. Two defects of toml++ 3.3.0 are refused first (see the headers): misplaced
+/// non-ASCII characters, then malformed table headers, the latter found in the all-ASCII stand-in
+/// (same offsets) so that its partial parses meet no non-ASCII byte. A text with non-ASCII
+/// characters reaches the parser only once its stand-in has parsed.
+toml::table parseToml(const std::string& text, const ErrorReporter& errors) {
+  detail::refuseMisplacedNonAscii(text, errors);
+  const std::string ascii = detail::asciiStandIn(text);
+  detail::refuseMalformedTableHeaders(ascii, errors);
+  if (ascii != text) parseOrFail(ascii, errors, " (each byte of a non-ASCII character read as '~')");
+  return parseOrFail(text, errors, "");
 }
 
 /// The table as JSON (toml++'s formatter; every number is finite once validated).

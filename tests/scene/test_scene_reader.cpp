@@ -13,6 +13,7 @@
 namespace stc {
 namespace {
 
+using ::testing::EndsWith;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
@@ -484,6 +485,18 @@ TEST(SceneReaderErrors, NonAsciiOutsideStringsAndCommentsIsASyntaxErrorWithLineA
               HasSubstr("a backslash must not escape a non-ASCII character"));
   EXPECT_THAT(errorOf(seedWith("name = \"hemicylinder\"", "name = \"\"\"hemi\\\n  \u00a7\"\"\"")),
               HasSubstr(":2:3: TOML syntax error: a line continued with a backslash"));
+}
+
+// Found by fuzzing (CI, 2026-11-23): the scan sees a string after "5.", toml++ a number whose end it
+// looks for, asking of 'é' whether it is whitespace. The all-ASCII stand-in is parsed first.
+TEST(SceneReaderErrors, NonAsciiInALineThatDoesNotParseNeverReachesTheParser) {
+  const std::string finding = "nae = 5.\\\"\u00e9\\\nt\nt = ";
+  const std::string message = errorOf(finding);
+  EXPECT_THAT(message, StartsWith("hemicylinder.toml:1:"));
+  EXPECT_THAT(message, HasSubstr("TOML syntax error: "));
+  EXPECT_THAT(message, EndsWith("(each byte of a non-ASCII character read as '~')"));
+  // The same error in a valid-looking seed: a bad number before a quoted non-ASCII text.
+  EXPECT_THAT(errorOf(seedWith("young = 3000.0", "young = 3000.\\\"\u00b0\"")), HasSubstr(":9:"));
 }
 
 TEST(SceneReader, NonAsciiInStringsAndCommentsIsRead) {

@@ -92,4 +92,11 @@ void refuseMisplacedNonAscii(std::string_view text, const ErrorReporter& errors)
   Scanner(text, errors).run();
 }
 
+std::string asciiStandIn(std::string_view text) {
+  std::string ascii(text);
+  for (char& c : ascii)
+    if (!isAscii(c)) c = '~';
+  return ascii;
+}
+
 }  // namespace stc::detail

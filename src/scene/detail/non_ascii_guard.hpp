@@ -8,6 +8,11 @@
 // after 3.4). TOML 1.0 allows non-ASCII text only inside strings and comments, so this guard
 // reports every such character elsewhere as the syntax error it is, and refuses the one valid
 // form toml++ cannot read (the continued line), before the parser sees any of them.
+// The scan knows TOML's strings and comments, not toml++'s view of a malformed line (in
+// `a = 5.\"é` it sees a string, toml++ a number whose end it looks for), so the reader also parses
+// asciiStandIn(text) first: a text that fails there never reaches the parser with its non-ASCII
+// characters (fuzzing finding of 2026-11-23, tests/fuzz/seeds/scene/number_then_quote.toml).
+#include <string>
 #include <string_view>
 
 #include "src/scene/detail/scene_errors.hpp"
@@ -18,5 +23,10 @@ namespace stc::detail {
 /// non-ASCII byte of `text` that is outside a string and a comment, follows a backslash in a
 /// string, or starts a line continued by a backslash in a multi-line string.
 void refuseMisplacedNonAscii(std::string_view text, const ErrorReporter& errors);
+
+/// `text` with every byte of a non-ASCII character replaced by '~': the same lines and byte
+/// offsets, all ASCII. '~' is TOML only where non-ASCII text is (in strings and comments), so the
+/// stand-in parses exactly when the text does, once refuseMisplacedNonAscii has passed.
+std::string asciiStandIn(std::string_view text);
 
 }  // namespace stc::detail
