@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "src/core/input_error.hpp"
+#include "src/scene/detail/array_value_guard.hpp"
 #include "src/scene/detail/non_ascii_guard.hpp"
 #include "src/scene/detail/scene_errors.hpp"
 #include "src/scene/detail/scene_overrides.hpp"
@@ -289,14 +290,16 @@ toml::table parseOrFail(std::string_view text, const ErrorReporter& errors, cons
   }
 }
 
-/// Parses TOML. Two defects of toml++ 3.3.0 are refused first (see the headers): misplaced
-/// non-ASCII characters, then malformed table headers, the latter found in the all-ASCII stand-in
-/// (same offsets) so that its partial parses meet no non-ASCII byte. A text with non-ASCII
+/// Parses TOML. Three defects of toml++ 3.3.0 are refused first (see the headers): misplaced
+/// non-ASCII characters, then malformed table headers and a '}' where an array expects a value,
+/// the latter two found in the all-ASCII stand-in (same offsets), so that the partial parses of
+/// the header guard meet no non-ASCII byte. A text with non-ASCII
 /// characters reaches the parser only once its stand-in has parsed.
 toml::table parseToml(const std::string& text, const ErrorReporter& errors) {
   detail::refuseMisplacedNonAscii(text, errors);
   const std::string ascii = detail::asciiStandIn(text);
   detail::refuseMalformedTableHeaders(ascii, errors);
+  detail::refuseBraceForArrayValue(ascii, errors);
   if (ascii != text) parseOrFail(ascii, errors, " (each byte of a non-ASCII character read as '~')");
   return parseOrFail(text, errors, "");
 }

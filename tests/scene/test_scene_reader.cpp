@@ -499,6 +499,26 @@ TEST(SceneReaderErrors, NonAsciiInALineThatDoesNotParseNeverReachesTheParser) {
   EXPECT_THAT(errorOf(seedWith("young = 3000.0", "young = 3000.\\\"\u00b0\"")), HasSubstr(":9:"));
 }
 
+// Found by fuzzing (2026-11-23): toml++ 3.3.0 assumes a value, never '}', where an array expects one
+// (src/scene/detail/array_value_guard.hpp); the reader refuses it first.
+TEST(SceneReaderErrors, BraceWhereAnArrayExpectsAValueIsASyntaxErrorWithLineAndColumn) {
+  const std::string times = "times  = [0.0, 0.2, 1.0]";
+  EXPECT_EQ(errorOf(seedWith(times, "times  = [0.0, 0.2, }")),
+            "hemicylinder.toml:23:21: TOML syntax error: expected a value or ']' in the array, saw '}'");
+  for (const std::string bad : {"times  = [}", "times  = [\n# a comment\n }", "times = [[0.0, }]]",
+                                "times = [{a = [0.0,\n}]}]"})
+    EXPECT_THAT(errorOf(seedWith(times, bad)), HasSubstr("expected a value or ']' in the array, saw '}'")) << bad;
+}
+
+TEST(SceneReader, BracesInStringsAndCommentsOfArraysAreText) {
+  std::string text = seedWith("times  = [0.0, 0.2, 1.0]", "times  = [0.0, # [}\n 0.2, 1.0] # ,}");
+  text = "\xEF\xBB\xBF" + text.replace(0, 21, "name = '''[}''' # \u00e9");
+  const Scene scene = parseScene(text, kSource);
+  EXPECT_EQ(scene.name, "[}");
+  ASSERT_EQ(scene.dirichlet.size(), 2U);
+  EXPECT_EQ(scene.dirichlet[0].history.times, (std::vector<double>{0.0, 0.2, 1.0}));
+}
+
 TEST(SceneReader, NonAsciiInStringsAndCommentsIsRead) {
   // An escaped quote and a continued line in a multi-line string, a literal string, comments.
   std::string text = seedWith("boundary = \"arc\"", "boundary = '\u0393_c' # '\u00b5'");

@@ -7,6 +7,8 @@ namespace stc::detail {
 
 namespace {
 
+constexpr std::string_view kBom = "\xEF\xBB\xBF";  // UTF-8 byte order mark; toml++ skips it
+
 bool isAscii(char c) { return static_cast<unsigned char>(c) < 0x80; }
 
 /// A left-to-right scan of TOML's lexical states: enough to tell strings and comments apart
@@ -16,7 +18,6 @@ class Scanner {
   Scanner(std::string_view text, const ErrorReporter& errors) : text_(text), errors_(errors) {}
 
   void run() {
-    constexpr std::string_view kBom = "\xEF\xBB\xBF";  // toml++ skips it
     if (text_.substr(0, kBom.size()) == kBom) i_ = kBom.size();
     while (i_ < text_.size()) {
       const char c = text_[i_];
@@ -94,8 +95,9 @@ void refuseMisplacedNonAscii(std::string_view text, const ErrorReporter& errors)
 
 std::string asciiStandIn(std::string_view text) {
   std::string ascii(text);
-  for (char& c : ascii)
-    if (!isAscii(c)) c = '~';
+  const std::size_t kept = ascii.starts_with(kBom) ? kBom.size() : 0;  // toml++ skips it untested
+  for (std::size_t i = kept; i < ascii.size(); ++i)
+    if (!isAscii(ascii[i])) ascii[i] = '~';
   return ascii;
 }
 

@@ -24,8 +24,8 @@ namespace stc::detail {
 /// string, or starts a line continued by a backslash in a multi-line string.
 void refuseMisplacedNonAscii(std::string_view text, const ErrorReporter& errors);
 
-/// `text` with every byte of a non-ASCII character replaced by '~': the same lines and byte
-/// offsets, all ASCII. '~' is TOML only where non-ASCII text is (in strings and comments), so the
+/// `text` with every byte of a non-ASCII character replaced by '~' (a leading byte order mark
+/// kept): the same lines and byte offsets, ASCII after the mark. '~' is TOML only where non-ASCII text is (in strings and comments), so the
 /// stand-in parses exactly when the text does, once refuseMisplacedNonAscii has passed.
 std::string asciiStandIn(std::string_view text);
 
