@@ -9,11 +9,9 @@
 #include <utility>
 
 #include "src/core/input_error.hpp"
-#include "src/scene/detail/array_value_guard.hpp"
-#include "src/scene/detail/non_ascii_guard.hpp"
+#include "src/scene/detail/guarded_parse.hpp"
 #include "src/scene/detail/scene_errors.hpp"
 #include "src/scene/detail/scene_overrides.hpp"
-#include "src/scene/detail/table_header_guard.hpp"
 #include "src/scene/detail/table_view.hpp"
 
 namespace stc {
@@ -280,30 +278,6 @@ OutputSpec readOutput(const TableView& root) {
   return spec;
 }
 
-/// toml::parse; a syntax error becomes "FILE:LINE:COLUMN: TOML syntax error: ..." on one line.
-toml::table parseOrFail(std::string_view text, const ErrorReporter& errors, const std::string& note) {
-  try {
-    return toml::parse(text, std::string_view(errors.file()));
-  } catch (const toml::parse_error& error) {
-    const auto& begin = error.source().begin;
-    errors.failAt(begin.line, begin.column, "TOML syntax error: " + std::string(error.description()) + note);
-  }
-}
-
-/// Parses TOML. Three defects of toml++ 3.3.0 are refused first (see the headers): misplaced
-/// non-ASCII characters, then malformed table headers and a '}' where an array expects a value,
-/// the latter two found in the all-ASCII stand-in (same offsets), so that the partial parses of
-/// the header guard meet no non-ASCII byte. A text with non-ASCII
-/// characters reaches the parser only once its stand-in has parsed.
-toml::table parseToml(const std::string& text, const ErrorReporter& errors) {
-  detail::refuseMisplacedNonAscii(text, errors);
-  const std::string ascii = detail::asciiStandIn(text);
-  detail::refuseMalformedTableHeaders(ascii, errors);
-  detail::refuseBraceForArrayValue(ascii, errors);
-  if (ascii != text) parseOrFail(ascii, errors, " (each byte of a non-ASCII character read as '~')");
-  return parseOrFail(text, errors, "");
-}
-
 /// The table as JSON (toml++'s formatter; every number is finite once validated).
 std::string toJson(const toml::table& table) {
   std::ostringstream json;
@@ -338,7 +312,7 @@ Scene readTable(const toml::table& table, const std::filesystem::path& source,
 Scene parseScene(const std::string& text, const std::filesystem::path& source,
                  const std::vector<std::string>& overrides) {
   ErrorReporter errors(source.string());
-  toml::table table = parseToml(text, errors);
+  toml::table table = detail::parseGuarded(text, errors);
   detail::applyOverrides(table, overrides, errors);
   return readTable(table, source, errors);
 }

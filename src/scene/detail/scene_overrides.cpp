@@ -1,5 +1,7 @@
 #include "src/scene/detail/scene_overrides.hpp"
 
+#include "src/scene/detail/guarded_parse.hpp"
+
 #include <cctype>
 #include <charconv>
 #include <optional>
@@ -60,13 +62,10 @@ std::string pathText(const std::vector<Step>& steps, std::size_t count) {
   return text;
 }
 
-/// The value as TOML ("v = <text>"), else the text as a string.
+/// The value as TOML ("v = <text>", behind the guards of guarded_parse.hpp), else the text as a string.
 toml::table parseValue(std::string_view text) {
-  try {
-    toml::table parsed = toml::parse("v = " + std::string(text));
-    if (parsed.size() == 1 && parsed.contains("v")) return parsed;
-  } catch (const toml::parse_error&) {
-  }
+  std::optional<toml::table> parsed = tryParseGuarded("v = " + std::string(text));
+  if (parsed && parsed->size() == 1 && parsed->contains("v")) return *std::move(parsed);
   toml::table bare;
   bare.insert("v", std::string(text));
   return bare;

@@ -21,7 +21,7 @@ bool startsKey(char c) {
 std::string describe(char c) {
   if (c == '\n' || c == '\r') return "the end of the line";
   const auto byte = static_cast<unsigned char>(c);
-  if (byte >= 0x20 && byte < 0x7f) return std::string("'") + c + "'";
+  if (byte >= 0x20 && byte < 0x7f) return {'\'', c, '\''};
   constexpr char kHex[] = "0123456789abcdef";
   return std::string("byte 0x") + kHex[byte >> 4] + kHex[byte & 0xf];
 }

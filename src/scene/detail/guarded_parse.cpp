@@ -1,0 +1,47 @@
+#include "src/scene/detail/guarded_parse.hpp"
+
+#include <string>
+
+#include "src/core/input_error.hpp"
+#include "src/scene/detail/array_value_guard.hpp"
+#include "src/scene/detail/non_ascii_guard.hpp"
+#include "src/scene/detail/table_header_guard.hpp"
+
+namespace stc::detail {
+
+namespace {
+
+/// toml::parse; a syntax error becomes "FILE:LINE:COLUMN: TOML syntax error: ..." on one line.
+toml::table parseOrFail(std::string_view text, const ErrorReporter& errors, const std::string& note) {
+  try {
+    return toml::parse(text, std::string_view(errors.file()));
+  } catch (const toml::parse_error& error) {
+    const auto& begin = error.source().begin;
+    errors.failAt(begin.line, begin.column, "TOML syntax error: " + std::string(error.description()) + note);
+  }
+}
+
+}  // namespace
+
+// Misplaced non-ASCII characters are refused first; malformed table headers and a '}' where an
+// array expects a value are then found in the all-ASCII stand-in (same offsets), so that the
+// partial parses of the header guard meet no non-ASCII byte; a text with non-ASCII characters
+// reaches the parser only once its stand-in has parsed.
+toml::table parseGuarded(std::string_view text, const ErrorReporter& errors) {
+  refuseMisplacedNonAscii(text, errors);
+  const std::string ascii = asciiStandIn(text);
+  refuseMalformedTableHeaders(ascii, errors);
+  refuseBraceForArrayValue(ascii, errors);
+  if (ascii != text) parseOrFail(ascii, errors, " (each byte of a non-ASCII character read as '~')");
+  return parseOrFail(text, errors, "");
+}
+
+std::optional<toml::table> tryParseGuarded(std::string_view text) {
+  try {
+    return parseGuarded(text, ErrorReporter("value"));
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace stc::detail
