@@ -509,6 +509,9 @@ TEST(SceneReaderErrors, BraceWhereAnArrayExpectsAValueIsASyntaxErrorWithLineAndC
   for (const std::string bad : {"times  = [}", "times  = [\n# a comment\n }", "times = [[0.0, }]]",
                                 "times = [{a = [0.0,\n}]}]"})
     EXPECT_THAT(errorOf(seedWith(times, bad)), HasSubstr("expected a value or ']' in the array, saw '}'")) << bad;
+  // Before any table header that follows: the header guard parses the text up to each header.
+  EXPECT_EQ(errorOf(seedWith("normal = [0.0, 1.0]", "normal = [0.0, 1.0,}")),
+            "hemicylinder.toml:14:20: TOML syntax error: expected a value or ']' in the array, saw '}'");
 }
 
 TEST(SceneReader, BracesInStringsAndCommentsOfArraysAreText) {

@@ -23,15 +23,16 @@ toml::table parseOrFail(std::string_view text, const ErrorReporter& errors, cons
 
 }  // namespace
 
-// Misplaced non-ASCII characters are refused first; malformed table headers and a '}' where an
-// array expects a value are then found in the all-ASCII stand-in (same offsets), so that the
-// partial parses of the header guard meet no non-ASCII byte; a text with non-ASCII characters
-// reaches the parser only once its stand-in has parsed.
+// Misplaced non-ASCII characters are refused first; a '}' where an array expects a value, then
+// malformed table headers are found in the all-ASCII stand-in (same offsets). The header guard
+// comes last because it parses prefixes of the text: they must meet none of the other defects
+// (fuzz finding: a prefix holding "[0.0, 2.7,}" reached toml++ from the header guard). A text with
+// non-ASCII characters reaches the parser only once its stand-in has parsed.
 toml::table parseGuarded(std::string_view text, const ErrorReporter& errors) {
   refuseMisplacedNonAscii(text, errors);
   const std::string ascii = asciiStandIn(text);
-  refuseMalformedTableHeaders(ascii, errors);
   refuseBraceForArrayValue(ascii, errors);
+  refuseMalformedTableHeaders(ascii, errors);
   if (ascii != text) parseOrFail(ascii, errors, " (each byte of a non-ASCII character read as '~')");
   return parseOrFail(text, errors, "");
 }
