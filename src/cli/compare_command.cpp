@@ -17,6 +17,7 @@
 #include "src/report/comparison_writer.hpp"
 #include "src/report/number_format.hpp"
 #include "src/scene/scene_reader.hpp"
+#include "stc_git_commit.hpp"  // STC_GIT_COMMIT, generated at build time
 
 namespace stc::cli {
 namespace {

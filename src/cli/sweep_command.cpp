@@ -16,6 +16,7 @@
 #include "src/report/number_format.hpp"
 #include "src/report/sweep_writer.hpp"
 #include "src/scene/scene_reader.hpp"
+#include "stc_git_commit.hpp"  // STC_GIT_COMMIT, generated at build time
 
 namespace stc::cli {
 namespace {
