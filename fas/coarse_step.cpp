@@ -15,10 +15,11 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
   if (options.start == CoarseStart::InterfaceMismatch) dv_hat = hat.v - s.v;
   Eigen::MatrixXd dl_hat = Eigen::MatrixXd::Zero(s.v.rows(), s.v.cols());
   InterfaceHistory trial;
-  // One thread: the coarse iterations are dense products of r × 2n_C by 2n_C × m on this thread
-  // around a short local stage; on 2 threads the pool's idle worker slowed those products by 60%
-  // (bench_stages CoarseStep, seed: 8.3 ms on 1 thread, 13.2 ms on 2; serial here: 7.9 ms;
-  // docs/threads.md).
+  // One thread: each coarse iteration is dense products of r × 2n_C by 2n_C × m on this thread
+  // around a short local stage (~50 µs on the seed). On 2 threads every one of those local stages
+  // had to wake the pool's worker, asleep during the products, and hand over: that cost more than
+  // the split saves (bench_stages CoarseStep, seed: 8.3 ms on 1 thread, 13.2 ms on 2; a worker
+  // kept awake longer, 8.9 ms; serial here: 7.9 ms; docs/threads.md).
   const ThreadCountScope serial(1);
   for (int it = 0; it < options.coarse_iterations; ++it) {
     xi.noalias() = BY.transpose() * (residual + dl_hat + k.asDiagonal() * dv_hat);  // seed eq. (8), R A P = I
