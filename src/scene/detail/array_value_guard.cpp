@@ -39,10 +39,10 @@ class ValueScan {
       if (c == '#') {
         while (i_ < text_.size() && text_[i_] != '\n') ++i_;
       } else if (c == '"' || c == '\'') {
-        newLines(endOfString(text_, i_));
+        i_ = endOfString(text_, i_);
         want_value_ = false;
       } else if (c == '\n') {
-        newLines(i_ + 1);
+        ++i_;
         if (open_.empty()) want_value_ = false;  // a key/value line ends with its value
       } else {
         if (c != ' ' && c != '\t' && c != '\r' && !code(c)) return;
@@ -62,8 +62,7 @@ class ValueScan {
     }
     const char top = open_.back();
     if (c == '}' && top == '[' && want_value_)
-      errors_.failAt(line_, i_ - line_start_ + 1,
-                     "TOML syntax error: expected a value or ']' in the array, saw '}'");
+      errors_.failAtOffset(text_, i_, "TOML syntax error: expected a value or ']' in the array, saw '}'");
     if (c == '[' || c == '{') {
       open_.push_back(c);
       want_value_ = c == '[';
@@ -76,21 +75,12 @@ class ValueScan {
     }
     return true;
   }
-  void newLines(std::size_t end) {
-    for (; i_ < end; ++i_)
-      if (text_[i_] == '\n') {
-        ++line_;
-        line_start_ = i_ + 1;
-      }
-  }
 
   std::string_view text_;
   const ErrorReporter& errors_;
   std::vector<char> open_;   ///< '[' and '{' not yet closed
   bool want_value_ = false;  ///< after '=' at the top level; after '[' or ',' in an array
   std::size_t i_ = 0;
-  std::size_t line_ = 1;
-  std::size_t line_start_ = 0;
 };
 
 }  // namespace

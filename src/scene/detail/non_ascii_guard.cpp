@@ -32,11 +32,7 @@ class Scanner {
 
  private:
   bool startsWith(std::string_view s) const { return text_.substr(i_, s.size()) == s; }
-  void step() {
-    if (text_[i_++] != '\n') return;
-    line_start_ = i_;
-    ++line_;
-  }
+  void step() { ++i_; }
   void skipTo(char end) {
     while (i_ < text_.size() && text_[i_] != end) step();
   }
@@ -77,14 +73,12 @@ class Scanner {
            "on the line before, or as a \\u escape)");
   }
   [[noreturn]] void fail(const std::string& rule) const {
-    errors_.failAt(line_, i_ - line_start_ + 1, "TOML syntax error: " + rule);
+    errors_.failAtOffset(text_, i_, "TOML syntax error: " + rule);
   }
 
   std::string_view text_;
   const ErrorReporter& errors_;
   std::size_t i_ = 0;
-  std::size_t line_ = 1;
-  std::size_t line_start_ = 0;
 };
 
 }  // namespace

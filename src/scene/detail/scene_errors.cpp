@@ -1,5 +1,7 @@
 #include "src/scene/detail/scene_errors.hpp"
 
+#include <algorithm>
+
 #include <charconv>
 #include <cmath>
 
@@ -116,6 +118,13 @@ void ErrorReporter::failFile(const std::string& message) const {
 void ErrorReporter::failAt(std::size_t line, std::size_t column, const std::string& message) const {
   throw InputError(
       oneLine(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message));
+}
+
+void ErrorReporter::failAtOffset(std::string_view text, std::size_t offset, const std::string& message) const {
+  const std::string_view before = text.substr(0, offset);
+  const std::size_t line_start = before.rfind('\n') + 1;  // npos + 1 = 0 on the first line
+  failAt(1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n')), offset - line_start + 1,
+         message);
 }
 
 }  // namespace stc::detail

@@ -42,6 +42,8 @@ class ErrorReporter {
   [[noreturn]] void failFile(const std::string& message) const;
   /// Throws "FILE:LINE:COLUMN: <message>" (TOML syntax errors).
   [[noreturn]] void failAt(std::size_t line, std::size_t column, const std::string& message) const;
+  /// The same at byte `offset` of `text`: line and column (in bytes, from 1) counted from it.
+  [[noreturn]] void failAtOffset(std::string_view text, std::size_t offset, const std::string& message) const;
 
   const std::string& file() const { return file_; }
 

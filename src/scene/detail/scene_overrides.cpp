@@ -71,6 +71,15 @@ toml::table parseValue(std::string_view text) {
   return bare;
 }
 
+/// 'text' for messages. Built by appending: "'" + std::string&& trips GCC 12's -Wrestrict false
+/// positive (bug 105329).
+std::string quoted(std::string_view text) {
+  std::string q(1, '\'');
+  q += text;
+  q += '\'';
+  return q;
+}
+
 /// Context of one override, for its messages.
 struct Override {
   const std::string& text;
@@ -87,18 +96,18 @@ toml::node& walkToParent(toml::table& root, const std::vector<Step>& steps, cons
     const std::string here = pathText(steps, i + 1);
     if (steps[i].index) {
       auto* array = node->as_array();
-      if (array == nullptr) o.fail("'" + pathText(steps, i) + "' is not an array");
+      if (array == nullptr) o.fail(quoted(pathText(steps, i)) + " is not an array");
       if (*steps[i].index >= array->size()) {
-        o.fail("'" + pathText(steps, i) + "' has " + std::to_string(array->size()) +
+        o.fail(quoted(pathText(steps, i)) + " has " + std::to_string(array->size()) +
                " entries, so '" + here + "' does not exist");
       }
       node = array->get(*steps[i].index);
       continue;
     }
     auto* table = node->as_table();
-    if (table == nullptr) o.fail("'" + pathText(steps, i) + "' is not a table");
+    if (table == nullptr) o.fail(quoted(pathText(steps, i)) + " is not a table");
     if (!table->contains(steps[i].key)) {
-      if (steps[i + 1].index) o.fail("'" + here + "' does not exist");
+      if (steps[i + 1].index) o.fail(quoted(here) + " does not exist");
       table->insert(steps[i].key, toml::table{});
     }
     node = table->get(steps[i].key);
@@ -114,15 +123,15 @@ void store(toml::node& parent, const std::vector<Step>& steps, const toml::node&
   value.visit([&](const auto& v) {
     if (last.index) {
       auto* array = parent.as_array();
-      if (array == nullptr) o.fail("'" + owner + "' is not an array");
+      if (array == nullptr) o.fail(quoted(owner) + " is not an array");
       if (*last.index >= array->size()) {
-        o.fail("'" + owner + "' has " + std::to_string(array->size()) + " entries, so '" +
+        o.fail(quoted(owner) + " has " + std::to_string(array->size()) + " entries, so '" +
                pathText(steps, steps.size()) + "' does not exist");
       }
       array->replace(array->cbegin() + static_cast<std::ptrdiff_t>(*last.index), v);
     } else {
       auto* table = parent.as_table();
-      if (table == nullptr) o.fail("'" + owner + "' is not a table");
+      if (table == nullptr) o.fail(quoted(owner) + " is not a table");
       table->insert_or_assign(last.key, v);
     }
   });
