@@ -26,7 +26,12 @@ std::string cannotWrite(const fs::path& path, int error) {
 /// ".<pid>.<n>", unique among the threads and processes writing into one folder.
 std::string uniqueSuffix() {
   static std::atomic<unsigned long> counter{0};
-  return "." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+  // Appended in steps: "." + std::string&& trips GCC 12's -Wrestrict false positive (bug 105329).
+  std::string suffix(1, '.');
+  suffix += std::to_string(::getpid());
+  suffix += '.';
+  suffix += std::to_string(counter++);
+  return suffix;
 }
 
 int createExclusive(const fs::path& path) {
@@ -112,8 +117,11 @@ struct AtomicFile::Impl {
 AtomicFile::AtomicFile(fs::path path) {
   if (!path.has_filename())
     throw OutputError("cannot write '" + path.string() + "': not a file name");
-  fs::path temporary =
-      path.parent_path() / ("." + path.filename().string() + ".tmp" + uniqueSuffix());
+  std::string name(1, '.');  // ".NAME.tmp.<pid>.<n>", appended as in uniqueSuffix()
+  name += path.filename().string();
+  name += ".tmp";
+  name += uniqueSuffix();
+  fs::path temporary = path.parent_path() / name;
   const int fd = createExclusive(temporary);
   if (fd < 0) {
     const int error = errno;
