@@ -1,13 +1,13 @@
 // Micro-benchmarks of the pieces of a solve (issue 7 parts 5 and 6), each on the seed scene
 // (arc_nodes 101: n = 1088 free dofs, n_C = 101, m = 201) and on a finer mesh of it (arc_nodes
 // 401), on 1 and 2 threads where the piece is threaded; every row is labelled with its sizes.
-//   LocalStage      the contact law on all nodes × instants (METHOD.md §2)
+//   LocalStage      the contact law on all nodes × instants (docs/method.md §2)
 //   GlobalStage     m right-hand sides built, solved with the factor (by blocks of 32 instants),
 //                   and the interface quantities v = B u, λ = λ̂ − k (v − v̂)
 //   LatinIteration  local stage + global stage + indicator
 //   CoarseStep      one FAS coarse step, i_C = 15, in the fas-apriori coarse space (r ≤ 30 PGD
 //                   modes + 15 residual vectors, seed eqs. (3)–(8))
-//   Enrichment*     one rank-one PGD enrichment by alternating fixed point (METHOD.md §5): with a
+//   Enrichment*     one rank-one PGD enrichment by alternating fixed point (docs/method.md §5): with a
 //                   sparse solve per sweep (latin-pgd) or with the product ũ ψᵀ (fas-apriori)
 // Build and run (docs/micro_benchmarks.md):
 //   cmake -S . -B build -DSTC_BUILD_BENCHMARKS=ON && cmake --build build --target bench_stages

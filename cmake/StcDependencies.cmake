@@ -1,4 +1,4 @@
-# Finds every dependency as ARCHITECTURE.md lists them; a missing one stops configuration with a
+# Finds every dependency as docs/architecture.md lists them; a missing one stops configuration with a
 # message naming the Debian 12 package that provides it.
 include(FindPackageHandleStandardArgs)
 

@@ -1,10 +1,10 @@
 // Description
-//   Reproduces Figs. 4 and 5 of the seed paper (Giacoma et al., CSMA 2013, §4.2–4.3; METHOD.md §4):
+//   Reproduces Figs. 4 and 5 of the seed paper (Giacoma et al., CSMA 2013, §4.2–4.3; docs/method.md §4):
 //   the two-level FAS with LATIN as smoother and an a posteriori coarse space (leading energy-SVD
-//   modes of the converged solution, METHOD.md §3, plus N_res residual vectors renewed every cycle,
+//   modes of the converged solution, docs/method.md §3, plus N_res residual vectors renewed every cycle,
 //   seed §4.3) against plain LATIN on the seed scene. Every run records, per fine relaxation, the
 //   LATIN indicator and the TRUE error (relative elastic energy over the grid against the incremental
-//   solution, METHOD.md §2). Also: LATIN with ω = 0.95, SVD modes without residual vectors, the
+//   solution, docs/method.md §2). Also: LATIN with ω = 0.95, SVD modes without residual vectors, the
 //   coarse start (a) zero correction vs (b) interface mismatch, a few i_C, and the measured cost of
 //   one coarse step against one fine relaxation (goal ≤ 10%). The search-direction scale κ is the
 //   scene's solver.search_scale (override it with --set). Report: docs/fas_aposteriori.md.
@@ -347,7 +347,7 @@ void writeSummary(const fs::path& file, const Options& opt, const Study& st, con
      << "Incremental reference: " << sci(st.incremental_s, 3)
      << " s. Energy SVD modes (a posteriori cost): " << sci(st.svd_s, 3) << " s. Whole study: " << sci(total_s, 3)
      << " s.\n\n"
-     << "## Relaxations to TRUE error (relative energy, METHOD.md §2)\n\n";
+     << "## Relaxations to TRUE error (relative energy, docs/method.md §2)\n\n";
   writeRunTable(md, all, opt.max_relaxations);
   md << "\n## Cost of one coarse step (i_C = 15) against one fine relaxation (" << opt.repeats
      << " interleaved repeats: medians of the times and of the per-repeat ratios)\n\nFine relaxation (global stage + "

@@ -1,6 +1,6 @@
 #pragma once
 // The a posteriori coarse basis of seed §4.2 (`fas-aposteriori`): the leading spatial modes of the
-// energy SVD (METHOD.md §3, pgd/space_time_svd.hpp) of a converged solution of the same scene,
+// energy SVD (docs/method.md §3, pgd/space_time_svd.hpp) of a converged solution of the same scene,
 // restricted to the free dofs. Useless in practice (it needs the solution first); it is the
 // yardstick the a priori basis is measured against.
 #include <Eigen/Core>

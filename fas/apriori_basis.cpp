@@ -46,7 +46,7 @@ Eigen::MatrixXd AprioriBasisProvider::enrich(const Eigen::MatrixXd& u_tilde, con
 }
 
 CoarseSpace AprioriBasisProvider::coarseSpace(const Eigen::MatrixXd& u_tilde, const InterfaceHistory& s) {
-  // The last global stage's right-hand sides: λ̂ + k v̂ = λ + k v (METHOD.md §2, search direction).
+  // The last global stage's right-hand sides: λ̂ + k v̂ = λ + k v (docs/method.md §2, search direction).
   const Eigen::MatrixXd W = s.lambda + problem_.contact.search_direction.asDiagonal() * s.v;
   const Eigen::MatrixXd coordinates = enrich(u_tilde, W);
   Eigen::MatrixXd missed = u_tilde;

@@ -1,7 +1,7 @@
 #pragma once
 // The coarse space of the two-level FAS (seed eqs. (2), (7), (8)): P = Y, R = Pᵀ, R̄ = Yᵀ, with Y
 // orthonormal in the product of A = K + Bᵀ k B, so that the coarse operator R A P is the identity
-// and the coarse linear stage is a product with (BY)ᵀ (METHOD.md §4: "beside r × r algebra only
+// and the coarse linear stage is a product with (BY)ᵀ (docs/method.md §4: "beside r × r algebra only
 // B P and Pᵀ(K + BᵀkB)P are needed").
 #include <Eigen/Core>
 #include <Eigen/SparseCore>

@@ -1,5 +1,5 @@
 #pragma once
-// The coarse step of the two-level FAS (seed §4.1, eqs. (3)–(8); METHOD.md §4): i_C iterations of
+// The coarse step of the two-level FAS (seed §4.1, eqs. (3)–(8); docs/method.md §4): i_C iterations of
 //   1. coarse linear stage: (R A P) Ξ = R [res̃ + Bᵀ(Δλ̂ + k Δv̂)], Δu = P Ξ, Δλ = Δλ̂ − k (BΔu − Δv̂);
 //   2. fine local stage on (Bũ + BΔu, λ̃ + Δλ); (Δv̂, Δλ̂) = its result minus (Bũ, λ̃).
 // After a global stage K ũ = f + Bᵀλ, so res̃ = f + Bᵀλ̃ − Kũ = Bᵀ(λ̃ − λ) lives on the interface

@@ -1,8 +1,8 @@
 #pragma once
-// Options of the two-level FAS with LATIN as smoother (METHOD.md §4; seed paper §4.1–4.2).
+// Options of the two-level FAS with LATIN as smoother (docs/method.md §4; seed paper §4.1–4.2).
 namespace stc::fas {
 
-/// How the coarse step starts from s̃ = (ũ, λ̃) (METHOD.md §4, "How the coarse step starts").
+/// How the coarse step starts from s̃ = (ũ, λ̃) (docs/method.md §4, "How the coarse step starts").
 enum class CoarseStart {
   ZeroCorrection,     ///< (a) Δv̂ = 0, Δλ̂ = 0, taking v = Bũ (discards v̂ − Bũ)
   InterfaceMismatch,  ///< (b) Δv̂ = v̂ − Bũ, Δλ̂ = 0 (exact when the coarse space is the whole space)

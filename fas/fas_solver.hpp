@@ -1,5 +1,5 @@
 #pragma once
-// Two-level FAS with LATIN as the smoother (seed §4; METHOD.md §4). One cycle:
+// Two-level FAS with LATIN as the smoother (seed §4; docs/method.md §4). One cycle:
 //   ν1 relaxations (global stage, then local stage) → coarse step (i_C coarse linear + fine local
 //   stages in the coarse space of the provider) → ν2 relaxations.
 // Convergence is tested on the fine level only, after every relaxation (its global stage).

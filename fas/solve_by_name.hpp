@@ -1,5 +1,5 @@
 #pragma once
-// Every strategy behind one call, chosen by its INTERFACE.md name: `incremental`, `latin`,
+// Every strategy behind one call, chosen by its docs/interface.md name: `incremental`, `latin`,
 // `latin-pgd`, `fas-aposteriori`, `fas-apriori`. What the command line and the comparison and sweep
 // programs use.
 #include <string>
@@ -14,7 +14,7 @@
 
 namespace stc::fas {
 
-/// Names accepted today, and all the names of INTERFACE.md.
+/// Names accepted today, and all the names of docs/interface.md.
 const std::vector<std::string>& availableSolvers();
 const std::vector<std::string>& knownSolvers();
 /// Throws InputError for an unknown name or one not available yet.

@@ -1,5 +1,5 @@
 #pragma once
-// LATIN global (linear) stage (METHOD.md §2): from ŝ find s ∈ A_d along λ − λ̂ = −k (v − v̂):
+// LATIN global (linear) stage (docs/method.md §2): from ŝ find s ∈ A_d along λ − λ̂ = −k (v − v̂):
 //   (K + Bᵀ k B) u(t_k) = f(t_k) + Bᵀ (λ̂(t_k) + k v̂(t_k))  for every k,   v = B u,
 //   λ = λ̂ − k (v − v̂).
 // The operator depends on neither time nor iteration: factorised once (CHOLMOD), then one

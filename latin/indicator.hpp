@@ -1,5 +1,5 @@
 #pragma once
-// LATIN error indicator (METHOD.md §2): η = ‖s − ŝ‖ / (½ ‖s + ŝ‖) with
+// LATIN error indicator (docs/method.md §2): η = ‖s − ŝ‖ / (½ ‖s + ŝ‖) with
 // ‖s‖² = Σ_k Σ_i (v_iᵀ k_i v_i + λ_iᵀ k_i⁻¹ λ_i), the energy norm of the search direction.
 #include <Eigen/Core>
 

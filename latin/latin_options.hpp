@@ -4,7 +4,7 @@
 namespace stc::latin {
 
 struct LatinOptions {
-  double tolerance = 1e-6;      ///< stop when the indicator η ≤ tolerance (METHOD.md §2)
+  double tolerance = 1e-6;      ///< stop when the indicator η ≤ tolerance (docs/method.md §2)
   int max_iterations = 5000;    ///< LATIN converges linearly; the seed needs a few hundred at 1e-6
   double relaxation = 1.0;      ///< ω in (0, 1]: s ← ω s_new + (1 − ω) s_old (1: none)
   int stagnation_window = 500;  ///< stop as stagnated if η has not decreased by 1% over this many

@@ -1,5 +1,5 @@
 #pragma once
-// The LATIN solver over the whole space-time grid (METHOD.md §2; seed paper §2, eq. (1)):
+// The LATIN solver over the whole space-time grid (docs/method.md §2; seed paper §2, eq. (1)):
 // alternate the local stage (contact law, node-wise) and the global stage (equilibrium, one
 // multi-right-hand-side solve with the factorised K + Bᵀ k B) until the indicator η ≤ tolerance.
 // Only the interface histories persist between iterations.

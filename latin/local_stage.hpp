@@ -1,5 +1,5 @@
 #pragma once
-// LATIN local stage (METHOD.md §2; Ladevèze 1999 ch. 4 for the method): from s = (v, λ) ∈ A_d find
+// LATIN local stage (docs/method.md §2; Ladevèze 1999 ch. 4 for the method): from s = (v, λ) ∈ A_d find
 // ŝ = (v̂, λ̂) ∈ Γ (Signorini + implicit Coulomb) along the search direction λ̂ − λ = k (v̂ − v).
 // Node-wise and exact; marches in time because the slip depends on the previous instant.
 #include "src/contact/contact_interface.hpp"

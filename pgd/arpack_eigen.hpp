@@ -5,7 +5,7 @@
 // Method: Sorensen, SIAM J. Matrix Anal. Appl. 13 (1992); Lehoucq, Sorensen & Yang, "ARPACK Users'
 // Guide" (SIAM 1998), §§2–3; the argument and error-code meanings are those of dsaupd.f/dseupd.f.
 //
-// Used by the a posteriori space-time SVD (METHOD.md §3) on x ↦ Uᵀ K U x, never on a solve path.
+// Used by the a posteriori space-time SVD (docs/method.md §3) on x ↦ Uᵀ K U x, never on a solve path.
 // ARPACK keeps its state in Fortran SAVE variables: one computation at a time per process (a mutex
 // in compute() serialises concurrent callers; do not call ArpackEigen from inside the operator).
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 #pragma once
-// Verification of a reduced basis against another (METHOD.md §5: "The SVD is used only to check the
+// Verification of a reduced basis against another (docs/method.md §5: "The SVD is used only to check the
 // a priori basis: principal angles, projection error of the converged solution on it").
 // Inner product: an SPD matrix M (e.g. K_ff, the energy of the free displacements).
 #include <Eigen/Core>

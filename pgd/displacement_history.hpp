@@ -1,7 +1,7 @@
 #pragma once
-// The snapshot matrix of METHOD.md §3: U = [u(t_0) … u(t_{m−1})] (n × m), the FULL nodal
+// The snapshot matrix of docs/method.md §3: U = [u(t_0) … u(t_{m−1})] (n × m), the FULL nodal
 // displacement at every instant (prescribed dofs included), rebuilt from a solution's contact
-// forces: u_free(t_k) = K_ff⁻¹ (f(t_k) + Bᵀ λ(t_k)) (METHOD.md §1, eq. (1) of the seed), then the
+// forces: u_free(t_k) = K_ff⁻¹ (f(t_k) + Bᵀ λ(t_k)) (docs/method.md §1, eq. (1) of the seed), then the
 // prescribed values u_d(t_k) put back (Problem::fullDisplacement).
 #include <Eigen/Core>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Spatial modes Υ_1 … Υ_r of the PGD expansion u(t_k) ≈ Σ_j Υ_j ψ_j(t_k) (METHOD.md §5), kept
+// Spatial modes Υ_1 … Υ_r of the PGD expansion u(t_k) ≈ Σ_j Υ_j ψ_j(t_k) (docs/method.md §5), kept
 // orthonormal in the energy product of A = K + Bᵀ k B (Υᵀ A Υ = I), with the products every update
 // needs: B Υ (2n_C × r) and Υᵀ F (r × n_loads, F the separated load vectors).
 #include <Eigen/Core>

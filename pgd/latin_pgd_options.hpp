@@ -1,5 +1,5 @@
 #pragma once
-// Options of `latin-pgd`: LATIN whose global stage is solved in separated form (METHOD.md §5).
+// Options of `latin-pgd`: LATIN whose global stage is solved in separated form (docs/method.md §5).
 #include "pgd/rank_one_enrichment.hpp"
 
 namespace stc::pgd {

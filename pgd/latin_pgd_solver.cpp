@@ -12,7 +12,7 @@
 namespace stc::pgd {
 namespace {
 
-// ½ ‖s + ŝ‖, the indicator's scale (METHOD.md §2).
+// ½ ‖s + ŝ‖, the indicator's scale (docs/method.md §2).
 double indicatorScale(const Eigen::VectorXd& k, const InterfaceHistory& s, const InterfaceHistory& hat) {
   return 0.5 * std::sqrt(latin::searchNormSquared(k, s.v + hat.v, s.lambda + hat.lambda));
 }

@@ -1,5 +1,5 @@
 #pragma once
-// `latin-pgd`: LATIN (METHOD.md §2) whose global stage is solved in separated form (METHOD.md §5).
+// `latin-pgd`: LATIN (docs/method.md §2) whose global stage is solved in separated form (docs/method.md §5).
 // Every iteration: local stage, then the update of the time functions on the current spatial modes
 // (no sparse solve). The global stage is checked — a rank-one enrichment candidate, a few sparse
 // solves — when its error may limit convergence: at the start, when η stagnates (η_n > ρ η_{n−1}),

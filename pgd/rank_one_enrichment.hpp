@@ -1,5 +1,5 @@
 #pragma once
-// The global stage of LATIN in separated form (METHOD.md §5). Its right-hand sides are
+// The global stage of LATIN in separated form (docs/method.md §5). Its right-hand sides are
 //   r_k = F g_k + Bᵀ w_k,   w_k = λ̂(t_k) + k v̂(t_k),
 // with F the separated load vectors and g_k their values at t_k (Problem::loads).
 // Update: with Υ A-orthonormal, the Galerkin solution in span Υ has time functions

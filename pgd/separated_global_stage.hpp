@@ -1,5 +1,5 @@
 #pragma once
-// LATIN's global stage in separated form (METHOD.md §5): s ∈ A_d sought as u(t_k) = Σ_j Υ_j ψ_j(t_k).
+// LATIN's global stage in separated form (docs/method.md §5): s ∈ A_d sought as u(t_k) = Σ_j Υ_j ψ_j(t_k).
 // `update` recomputes the time functions on the current modes (no sparse solve); `enrich` adds a
 // rank-one pair for what the update leaves (a few sparse solves with the factorised K + Bᵀ k B).
 #include "latin/global_stage.hpp"
@@ -20,7 +20,7 @@ class SeparatedGlobalStage {
 
   /// A rank-one pair for the error the last update left, from the right-hand sides of that update.
   RankOnePair candidate(const EnrichmentOptions& options);
-  /// Norm of the pair's change of s in the indicator's norm (METHOD.md §2): δv = BΥ ψ, δλ = −k δv.
+  /// Norm of the pair's change of s in the indicator's norm (docs/method.md §2): δv = BΥ ψ, δλ = −k δv.
   double interfaceNorm(const RankOnePair& pair) const;
   /// Appends the pair's space mode; false when it is already spanned.
   bool add(const RankOnePair& pair) { return modes_.add(pair.space); }

@@ -67,7 +67,7 @@ SpaceTimeSvd arpackEnergySvd(const Eigen::MatrixXd& U, const Eigen::SparseMatrix
   arpack.max_restarts = options.max_restarts;
   arpack.which = ArpackWhich::LargestAlgebraic;
   ArpackEigen solver(static_cast<int>(U.cols()), arpack);
-  // y = Uᵀ (K (U x)) / ‖U‖²_K: three products, C is never formed (METHOD.md §3, "truncated").
+  // y = Uᵀ (K (U x)) / ‖U‖²_K: three products, C is never formed (docs/method.md §3, "truncated").
   Eigen::VectorXd Ux(U.rows()), KUx(U.rows());
   const double scale = 1.0 / total;
   const ArpackResult result = solver.compute(

@@ -1,11 +1,11 @@
 #pragma once
-// A posteriori space-time SVD of a displacement history (METHOD.md §3; seed paper §3.1, Figs. 2–3):
+// A posteriori space-time SVD of a displacement history (docs/method.md §3; seed paper §3.1, Figs. 2–3):
 //   U = [u(t_0) … u(t_{m−1})] = Σ_i σ_i Υ_i ν_iᵀ,   Υ_iᵀ M Υ_j = δ_ij,   ν_iᵀ ν_j = δ_ij,
 // with M = I (plainSvd) or M = K, the full unconstrained stiffness (energySvd), so that
 //   Σ_i σ_i² = ‖U‖²_K = Σ_k u_kᵀ K u_k,
 // the elastic energy summed over the time grid (twice it: the factor ½ is left out everywhere),
 // and "modes for 99.9 % of the energy" means what the seed means. Verification only: never on a
-// solve path (METHOD.md §5).
+// solve path (docs/method.md §5).
 //
 // Energy SVD through the m × m Gram matrix (the "method of snapshots"): C = Uᵀ K U = V Σ² Vᵀ, so
 // σ_i² are the eigenvalues of C, ν_i its eigenvectors and Υ_i = U ν_i / σ_i. Dense: Eigen's
@@ -29,7 +29,7 @@ enum class SvdMethod {
 };
 
 struct EnergySvdOptions {
-  /// Dense is exact and cheap up to m of a few thousand; ARPACK is what scales (ARCHITECTURE.md).
+  /// Dense is exact and cheap up to m of a few thousand; ARPACK is what scales (docs/architecture.md).
   SvdMethod method = SvdMethod::Dense;
   /// Leading pairs to return; 0 = all m (Dense only). ARPACK needs 1 ≤ modes ≤ m − 1.
   int modes = 0;

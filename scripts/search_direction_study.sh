@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The search-direction study (METHOD.md §2): how many plain-LATIN iterations the seed scene needs for
+# The search-direction study (docs/method.md §2): how many plain-LATIN iterations the seed scene needs for
 # each search-direction scale kappa (k_n = k_t = kappa E l_i / L) and relaxation omega, measured both
 # with the convergence indicator and with the true error (relative energy error against the
 # incremental solver). See docs/search_direction.md.
@@ -197,7 +197,7 @@ P("")
 P("#### Table 2. Iterations to TRUE error ≤ 1e-4 / ≤ 1e-6, seed scene")
 P("")
 P("Same runs with the incremental reference and `--tol 1e-8`; true error = relative elastic energy")
-P("error of the full displacement over the time grid (METHOD.md §2).")
+P("error of the full displacement over the time grid (docs/method.md §2).")
 P("")
 header("κ", ["ω = %s" % w for w in omegas])
 for k in seed_ks:

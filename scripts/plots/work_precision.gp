@@ -49,7 +49,7 @@ set key below
 set logscale y
 set format y '1e%T'
 set yrange [bottom / 2 : *]
-set ylabel 'true error (relative energy, METHOD.md §2)'
+set ylabel 'true error (relative energy, docs/method.md §2)'
 ref_title = reference.' (exact: error 0, drawn at the bottom)'
 
 set output 'error_vs_time.png'.suffix

@@ -1,5 +1,5 @@
 #pragma once
-// Sub-commands of the stcontact program (INTERFACE.md "Command line").
+// Sub-commands of the stcontact program (docs/interface.md "Command line").
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,7 +40,7 @@ std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, c
 int runCheck(const CheckArgs& args);
 /// Solves and writes the outputs; returns 0 converged, 2 not converged.
 int runSolve(const SolveArgs& args);
-/// A posteriori space-time SVD of the incremental solution (METHOD.md §3); returns 0, or 2 if the
+/// A posteriori space-time SVD of the incremental solution (docs/method.md §3); returns 0, or 2 if the
 /// solve did not converge (nothing written).
 int runSvd(const SvdArgs& args);
 

@@ -1,4 +1,4 @@
-// stcontact: the command line (INTERFACE.md). Exit status: 0 converged / ok; 1 bad input or usage
+// stcontact: the command line (docs/interface.md). Exit status: 0 converged / ok; 1 bad input or usage
 // (one "error: ..." line on stderr); 2 ran but did not converge; 3 internal failure.
 #include <CLI/CLI.hpp>
 #include <iostream>

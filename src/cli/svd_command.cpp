@@ -1,4 +1,4 @@
-// stcontact svd SCENE: the a posteriori space-time analysis of METHOD.md §3 and the seed paper's §3
+// stcontact svd SCENE: the a posteriori space-time analysis of docs/method.md §3 and the seed paper's §3
 // (Figs. 2 and 3). Solves the scene with the incremental solver (exact to round-off), builds the
 // full displacement history U (n × m), computes its SVD in the energy product with ARPACK
 // (U = Σ σ_i Υ_i ν_iᵀ, Υᵀ K Υ = I; pgd/space_time_svd.hpp), checks it against the dense eigensolver

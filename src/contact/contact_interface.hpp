@@ -1,5 +1,5 @@
 #pragma once
-// The discrete contact interface of METHOD.md §1: potential contact nodes facing a rigid obstacle,
+// The discrete contact interface of docs/method.md §1: potential contact nodes facing a rigid obstacle,
 // their frames, initial gaps, tributary lengths, the operator B and the LATIN search direction k.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -19,7 +19,7 @@ struct ContactInterface {
   double friction = 0.0;           ///< Coulomb coefficient μ
   /// v = B u_free: rows 2i (normal: n_i·u_i) and 2i + 1 (tangential: τ_i·u_i), 2n_C × n_free.
   Eigen::SparseMatrix<double> B;
-  /// Search direction k (2n_C, diagonal): k_n = k_t = κ E ℓ_i / L (METHOD.md §2).
+  /// Search direction k (2n_C, diagonal): k_n = k_t = κ E ℓ_i / L (docs/method.md §2).
   Eigen::VectorXd search_direction;
   double search_scale_per_length = 0.0;  ///< κ E / L, so that k_i = search_scale_per_length · ℓ_i
 

@@ -1,5 +1,5 @@
 #pragma once
-// The state of one contact node at one instant (METHOD.md §1), read off a solution for the output
+// The state of one contact node at one instant (docs/method.md §1), read off a solution for the output
 // writers and the contact-law check: open (no force), stick (inside the Coulomb cone, no slip) or
 // slip (on the cone, slipping).
 namespace stc {
@@ -18,7 +18,7 @@ inline constexpr double slip = 1e-12;        ///< slipping if |Δv_t| > slip · 
 }  // namespace contact_state_tolerance
 
 /// Classifies one node at one instant from its forces (λ_n, λ_t), its slip increment
-/// Δv_t = v_t(t_k) − v_t(t_{k−1}) and the friction coefficient μ (METHOD.md §1):
+/// Δv_t = v_t(t_k) − v_t(t_{k−1}) and the friction coefficient μ (docs/method.md §1):
 ///   open  if λ_n ≤ 1e-10 · force_scale (force_scale: e.g. the largest λ_n of the history);
 ///   slip  if |λ_t| ≥ μ λ_n (1 − 1e-8) and |Δv_t| > 1e-12 · length_scale (e.g. the largest |v|);
 ///   stick otherwise (a node on the cone that does not move is sticking at impending slip).

@@ -18,7 +18,7 @@ using Obstacle = std::variant<PlaneObstacle>;
 
 Obstacle makeObstacle(const ObstacleSpec& spec);
 
-/// Unit normal n at x, pointing from the obstacle into the body (METHOD.md §1).
+/// Unit normal n at x, pointing from the obstacle into the body (docs/method.md §1).
 Eigen::Vector2d obstacleNormal(const Obstacle& obstacle, const Eigen::Vector2d& x);
 
 /// Signed initial gap g0 = (x − x_obs)·n (negative: x is inside the obstacle).

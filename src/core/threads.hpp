@@ -1,6 +1,6 @@
 #pragma once
 // Threads for the work that is independent (issue 7 part 6): the LATIN local stage over contact
-// nodes (METHOD.md §2: "embarrassingly parallel over nodes") and the global stage over blocks of
+// nodes (docs/method.md §2: "embarrassingly parallel over nodes") and the global stage over blocks of
 // instants (one right-hand side per instant, the factor only read). A pool of workers started once
 // (src/core/worker_pool.hpp); the count is process-wide, like Eigen::setNbThreads.
 // Splitting never changes the arithmetic of an item, so results are bitwise those of one thread

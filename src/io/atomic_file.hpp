@@ -1,5 +1,5 @@
 #pragma once
-// Atomic result files (INTERFACE.md: "all written atomically: a crashed run never leaves a half
+// Atomic result files (docs/interface.md: "all written atomically: a crashed run never leaves a half
 // file"). Content goes to a temporary file in the target's folder, is flushed and closed (no fsync: see commit()), then
 // renamed over the target: readers see either the old file or the complete new one, never a part.
 #include <filesystem>

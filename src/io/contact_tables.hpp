@@ -1,5 +1,5 @@
 #pragma once
-// The contact output tables of INTERFACE.md: reactions.csv (one row per instant) and contact.csv
+// The contact output tables of docs/interface.md: reactions.csv (one row per instant) and contact.csv
 // (one row per contact node and instant), computed from a solution's interface histories.
 #include <ostream>
 

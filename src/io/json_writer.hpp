@@ -1,5 +1,5 @@
 #pragma once
-// A small ordered JSON object builder for summary.json (INTERFACE.md). Members keep the order of
+// A small ordered JSON object builder for summary.json (docs/interface.md). Members keep the order of
 // add(); strings are escaped (RFC 8259 §7); doubles are written in the shortest form that reads
 // back to the same value (std::to_chars); non-finite doubles, which JSON cannot express, as null.
 #include <concepts>

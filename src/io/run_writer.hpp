@@ -1,5 +1,5 @@
 #pragma once
-// Writes every output file of a solved run into one folder (INTERFACE.md "Output files"), each
+// Writes every output file of a solved run into one folder (docs/interface.md "Output files"), each
 // atomically (temporary file, then rename): reactions.csv, contact.csv, history.csv,
 // summary.json, and solution.pvd + vtu/ when asked.
 #include <filesystem>

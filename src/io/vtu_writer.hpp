@@ -1,5 +1,5 @@
 #pragma once
-// ParaView output (INTERFACE.md: solution.pvd + vtu/): a VTK XML UnstructuredGrid of the P1
+// ParaView output (docs/interface.md: solution.pvd + vtu/): a VTK XML UnstructuredGrid of the P1
 // triangle mesh with nodal and element fields, and the collection (.pvd) that makes a series of
 // them a time series. Format: "VTK File Formats", XML section (Kitware, VTK User's Guide); ASCII
 // data arrays, so the files can be read and diffed as text.

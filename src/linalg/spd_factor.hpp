@@ -1,5 +1,5 @@
 #pragma once
-// One sparse Cholesky factorisation (CHOLMOD, simplicial LLᵀ) reused for many solves: METHOD.md §2
+// One sparse Cholesky factorisation (CHOLMOD, simplicial LLᵀ) reused for many solves: docs/method.md §2
 // "factorize once, then one multi-right-hand-side solve per iteration".
 // Threads: a solve only reads the factor; what it writes lives in a Workspace (its own
 // cholmod_common and the X, Y, E buffers of cholmod_solve2, CHOLMOD user guide §"cholmod_solve2").

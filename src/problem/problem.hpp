@@ -1,5 +1,5 @@
 #pragma once
-// The assembled space-time problem of METHOD.md §1: stiffness, Dirichlet elimination, loads in
+// The assembled space-time problem of docs/method.md §1: stiffness, Dirichlet elimination, loads in
 // separated form on the time grid, and the contact interface. Built once from a validated Scene.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>

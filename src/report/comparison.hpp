@@ -1,7 +1,7 @@
 #pragma once
 // A comparison of solution strategies on one scene (issue 7, `stcontact compare`): what was measured
 // for each strategy, and the per-strategy statistics of the report (medians over repeats of the
-// work needed to first reach true errors 1e-2, 1e-4, 1e-6; METHOD.md §2 error).
+// work needed to first reach true errors 1e-2, 1e-4, 1e-6; docs/method.md §2 error).
 #include <optional>
 #include <string>
 #include <vector>

@@ -43,7 +43,7 @@ void introduction(std::ostream& out, const Comparison& c) {
       << c.n_steps << " instants; indicator tolerance " << shortNumber(c.tolerance, 3) << "; " << c.repeats
       << " timed repeats per strategy, medians over them.\n\n"
       << "True error: relative elastic energy over the space-time grid against the incremental solution "
-         "(METHOD.md §2). Times are seconds since the solver was called, set-up (factorisations, bases) "
+         "(docs/method.md §2). Times are seconds since the solver was called, set-up (factorisations, bases) "
          "included, measured in runs that do not evaluate the true error; the error at each iteration comes "
          "from one more run of the same deterministic solver that does evaluate it (its time: \"error run\" "
          "below, not counted). Incremental reference and error measure: "

@@ -30,7 +30,7 @@ void introduction(std::ostream& out, const ScalingStudy& s) {
       << "Produced by `" << s.command << "` in " << shortNumber(s.run_s, 3) << " s.\n\n"
       << "Scene `" << s.scene_file << "`. Each size is a `stcontact compare` of the strategies (its report: "
       << "`sizes/<size>/summary.md`), with every iterative run stopped at the first iteration whose true error "
-      << "(relative energy over the space-time grid against the incremental solution, METHOD.md §2) is at most "
+      << "(relative energy over the space-time grid against the incremental solution, docs/method.md §2) is at most "
       << target << ": the times below are medians over " << s.repeats << " timed repeat(s) of the time from the "
       << "call to the solver (set-up included) to that iteration. Indicator tolerance "
       << shortNumber(s.tolerance, 3) << "; "

@@ -35,7 +35,7 @@ void introduction(std::ostream& out, const Sweep& s) {
          "a priori bases, its spatial modes; the first value starts from zero. *Cold*: every value solved "
          "independently from zero. Each solve rebuilds the problem and its factorisation (the search "
          "direction and K + BᵀkB may depend on the value). Times: the whole solve call, set-up included; "
-         "the problem's assembly and the incremental reference that gives the true error (METHOD.md §2) "
+         "the problem's assembly and the incremental reference that gives the true error (docs/method.md §2) "
          "are not counted.\n\n";
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Work against precision of one strategy (issue 7): the points of its runs (work spent so far, true
 // error reached) and the statistics the comparison reports, e.g. the median over repeats of the
-// time a strategy needs to first reach a true error of 1e-4 (METHOD.md §2 error).
+// time a strategy needs to first reach a true error of 1e-4 (docs/method.md §2 error).
 #include <optional>
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// A validated scene: the input as read from TOML (INTERFACE.md "Scene file"), nothing computed.
+// A validated scene: the input as read from TOML (docs/interface.md "Scene file"), nothing computed.
 // Units are the user's (the seed scene: mm, MPa, N/mm); times are dimensionless instants.
 #include <Eigen/Core>
 #include <filesystem>
@@ -70,7 +70,7 @@ struct LoadSpec {
   History history;
 };
 
-/// [solver] keys of the two-level FAS (METHOD.md §4; defaults: the seed paper's §4.2 settings,
+/// [solver] keys of the two-level FAS (docs/method.md §4; defaults: the seed paper's §4.2 settings,
 /// ν1 = ν2 = 1, i_C = 15, N_res = 15; ν = 1 beat ν = 2 for both bases on the seed scene:
 /// docs/fas_aposteriori.md, docs/compare_bases.md).
 struct FasSpec {
@@ -83,15 +83,15 @@ struct FasSpec {
   int pgd_modes_per_cycle = 4;  ///< fas-apriori: rank-one pairs added per cycle at most (>= 1)
   double pgd_seed_share = 0.5;  ///< fas-apriori warm start: share of pgd_max_modes a seed may fill, in
                                 ///< [0, 1] (fas::AprioriBasisOptions::seed_share, docs/sweep.md)
-  std::string coarse_start = "zero";  ///< "zero" (METHOD.md §4 option a) or "mismatch" (option b)
+  std::string coarse_start = "zero";  ///< "zero" (docs/method.md §4 option a) or "mismatch" (option b)
 };
 
 /// [solver]: choice and common options (each solver validates its own further options).
 struct SolverSpec {
   std::string name = "fas-apriori";  ///< latin, latin-pgd, fas-aposteriori, fas-apriori, incremental
-  double tolerance = 1e-6;           ///< on the LATIN indicator (METHOD.md §2), > 0
+  double tolerance = 1e-6;           ///< on the LATIN indicator (docs/method.md §2), > 0
   int max_iterations = 2000;         ///< >= 1
-  double search_scale = 4.0;         ///< kappa of METHOD.md §2, > 0; 4 from docs/search_direction.md
+  double search_scale = 4.0;         ///< kappa of docs/method.md §2, > 0; 4 from docs/search_direction.md
   double relaxation = 1.0;           ///< omega in (0, 1]
   FasSpec fas;                       ///< keys pre_relaxations … coarse_start of [solver]
 };

@@ -1,5 +1,5 @@
 #pragma once
-// Reads and validates a scene file (TOML, through toml++; INTERFACE.md "Scene file"), applying
+// Reads and validates a scene file (TOML, through toml++; docs/interface.md "Scene file"), applying
 // `--set KEY=VALUE` overrides first. Every key is checked: unknown key, wrong type, non-finite or
 // out-of-range value, missing required key all throw InputError with one-line messages such as
 //   "hemicylinder.toml: key 'material.poisson' = 0.5 is out of range: must be in (-1, 0.5)"

@@ -1,5 +1,5 @@
 #pragma once
-// How far an interface history is from the discrete contact law of METHOD.md §1 (Signorini and
+// How far an interface history is from the discrete contact law of docs/method.md §1 (Signorini and
 // implicit Coulomb at every node and instant). Every measure is relative and dimensionless, so one
 // threshold serves all scenes: a solution exact to round-off gives ~1e-15, a LATIN iterate at
 // indicator η gives roughly η.

@@ -1,5 +1,5 @@
 #pragma once
-// The true error of METHOD.md §2, measured against a reference solution on the same mesh and grid:
+// The true error of docs/method.md §2, measured against a reference solution on the same mesh and grid:
 //   e² = Σ_k (u_k − u_ref,k)ᵀ K (u_k − u_ref,k) / Σ_k u_ref,kᵀ K u_ref,k
 // with full displacements and the full stiffness. Any iterate that satisfies equilibrium
 // K_ff u = f + Bᵀ λ (every LATIN global-stage result does) has u − u_ref = K_ff⁻¹ Bᵀ (λ − λ_ref) on the

@@ -1,12 +1,12 @@
 #pragma once
-// The incremental reference solver: the time-discrete problem of METHOD.md §1 solved instant by
-// instant to machine precision. Every other solver's true error (METHOD.md §2) is measured against it.
+// The incremental reference solver: the time-discrete problem of docs/method.md §1 solved instant by
+// instant to machine precision. Every other solver's true error (docs/method.md §2) is measured against it.
 //
 // Method. K_ff is factorised once and the problem condensed on the interface
 // (condensed_interface.hpp): v_k = v_0(:, k) + W λ_k, W = B K⁻¹ Bᵀ. Marching over k = 0 … m−1, the
 // contact law at instant k is written node-wise as the Alart–Curnier equations (Alart & Curnier,
 // CMAME 92, 1991, augmented-Lagrangian contact operator; implicit Coulomb with the slip increment
-// of METHOD.md §1)
+// of docs/method.md §1)
 //   F_n = λ_n − max(0, λ_n − ρ_n g),                 g = g0 + v_n,
 //   F_t = λ_t − clamp(λ_t − ρ_t s, −μ λ̂_n, μ λ̂_n),   s = v_t(t_k) − v_t(t_{k−1}), λ̂_n = max(0, λ_n − ρ_n g),
 // whose roots are exactly the solutions of the law (F = 0 ⇔ Signorini and Coulomb at the node), and

@@ -15,7 +15,7 @@ const char* toString(Termination termination);
 struct IterationRecord {
   int iteration = 0;
   int relaxations = 0;            ///< fine-level LATIN relaxations so far (global + local stage pairs)
-  double indicator = 0.0;         ///< METHOD.md §2 η
+  double indicator = 0.0;         ///< docs/method.md §2 η
   std::optional<double> error;    ///< true energy error against the reference, when known
   int rank = 0;                   ///< coarse / PGD basis size (0 for plain LATIN)
   int sparse_solves = 0;          ///< right-hand sides solved with the sparse factor so far

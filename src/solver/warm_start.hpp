@@ -1,10 +1,10 @@
 #pragma once
 // A warm start: a solve that begins from a neighbouring problem's solution (the previous value of a
 // parameter sweep) instead of s = 0. Whatever parameter changed, any interface history of the right
-// size is a valid LATIN start: the solution is the iteration's fixed point (s = ŝ, METHOD.md §2),
+// size is a valid LATIN start: the solution is the iteration's fixed point (s = ŝ, docs/method.md §2),
 // which does not depend on where the iteration began, only the path to it does; and any set of
 // free-dof vectors is a valid start for a reduced basis (it is re-orthonormalised in the new
-// problem's energy product, and the fine level alone decides convergence, METHOD.md §4). Only the
+// problem's energy product, and the fine level alone decides convergence, docs/method.md §4). Only the
 // sizes must match: a change of mesh or time grid (n_free, n_C, m) leaves nothing to reuse.
 #include <Eigen/Core>
 

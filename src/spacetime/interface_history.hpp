@@ -1,6 +1,6 @@
 #pragma once
 // Space-time interface fields: one column per instant, rows 2i (normal) and 2i + 1 (tangential)
-// of contact node i. These are the only quantities LATIN keeps between iterations (METHOD.md §2).
+// of contact node i. These are the only quantities LATIN keeps between iterations (docs/method.md §2).
 #include <Eigen/Core>
 
 namespace stc {

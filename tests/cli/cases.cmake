@@ -43,7 +43,7 @@ add_test(NAME cli.solve_writes_every_output
          COMMAND bash -c "for f in reactions.csv contact.csv history.csv summary.json solution.pvd vtu/step_00020.vtu; do test -s ${out}/latin3/$f || { echo missing $f; exit 1; }; done; grep -q '\"termination\": \"max_iterations\"' ${out}/latin3/summary.json")
 set_tests_properties(cli.solve_writes_every_output PROPERTIES DEPENDS cli.solve_not_converged_exits_2 LABELS cli)
 
-# A posteriori space-time SVD (METHOD.md §3): prints the modes for 99%, 99.9%, 99.99% of the energy.
+# A posteriori space-time SVD (docs/method.md §3): prints the modes for 99%, 99.9%, 99.99% of the energy.
 stc_cli_test(svd_small 0 "99.9" svd ${seed} ${small} --out ${out}/svd)
 
 # Bad input through `solve` (issue 8): exit 1, one "error:" line naming the key, file or entity and

@@ -1,4 +1,4 @@
-// Contact interface of METHOD.md §1: frames, gaps, tributary lengths, B and the search direction.
+// Contact interface of docs/method.md §1: frames, gaps, tributary lengths, B and the search direction.
 #include <gtest/gtest.h>
 
 #include <cmath>

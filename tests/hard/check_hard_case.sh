@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # check_hard_case.sh CLI SCENE OUT MAX_ERROR [KEY=VALUE...]: solves SCENE (with the --set
-# overrides) with every solver of INTERFACE.md and requires, for each that is available:
+# overrides) with every solver of docs/interface.md and requires, for each that is available:
 #  - exit 0 (converged) or 2 (not converged), never 1 or 3, and termination agreeing with it;
 #  - every output written, and no NaN or Inf in the CSV files nor null where summary.json needs
 #    a number;
 #  - when converged (non-incremental), a true error against the incremental solution
-#    (summary.json "error", METHOD.md §2) <= MAX_ERROR (justified in examples/scenes/hard/cases.txt).
+#    (summary.json "error", docs/method.md §2) <= MAX_ERROR (justified in examples/scenes/hard/cases.txt).
 # A solver that answers "not available" (exit 1) is skipped; latin and incremental must run.
 set -u
 cli=$1 scene=$2 out=$3 max_error=$4

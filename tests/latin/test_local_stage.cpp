@@ -1,4 +1,4 @@
-// LATIN local stage (METHOD.md §2): its output lies in Γ, follows the search direction exactly,
+// LATIN local stage (docs/method.md §2): its output lies in Γ, follows the search direction exactly,
 // and leaves an admissible state unchanged.
 #include <gtest/gtest.h>
 

@@ -24,7 +24,7 @@ struct Solved {
   stc::SolveResult result;
 };
 
-// The seed scene (METHOD.md §6) solved once by the incremental solver.
+// The seed scene (docs/method.md §6) solved once by the incremental solver.
 const Solved& seed() {
   static const Solved solved = [] {
     Solved s{stc::buildProblem(stc::test::seedScene()), {}};

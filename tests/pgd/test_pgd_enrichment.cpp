@@ -1,4 +1,4 @@
-// PGD building blocks (METHOD.md §5): energy-orthonormal modes, the update (time functions of the
+// PGD building blocks (docs/method.md §5): energy-orthonormal modes, the update (time functions of the
 // Galerkin solution), greedy rank-one enrichment by alternating fixed point.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// `--set KEY=VALUE` overrides of the scene reader (INTERFACE.md "Command line"): applied before
+// `--set KEY=VALUE` overrides of the scene reader (docs/interface.md "Command line"): applied before
 // validation, so an overridden value obeys every rule, and errors about it say it came from --set.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

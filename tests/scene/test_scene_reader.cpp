@@ -18,7 +18,7 @@ using ::testing::EndsWith;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-// The seed scene of INTERFACE.md "Scene file", verbatim.
+// The seed scene of docs/interface.md "Scene file", verbatim.
 const std::string kSeed = R"(name = "hemicylinder"
 [model]
 plane = "strain"

@@ -1,5 +1,5 @@
 #pragma once
-// The seed scene of METHOD.md §6 built in C++, for tests that need a Problem without a scene file:
+// The seed scene of docs/method.md §6 built in C++, for tests that need a Problem without a scene file:
 // half-disc of radius 1 on a rigid plane 0.01 below it, E = 3000, ν = 0.3, μ = 0.15, plane strain,
 // the top edge driven down by 0.01 until t = 0.2 (first contact), then down by 0.1 more and sideways
 // by 0.05 until t = 1. Smaller variants (arc_nodes 31, steps 41) keep tests fast; the drive is a

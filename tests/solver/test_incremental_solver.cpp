@@ -164,7 +164,7 @@ TEST(IncrementalSolver, TangentialForceIsMuTimesNormalForceWhenEveryClosedNodeSl
     EXPECT_NEAR(tangential, -mu * normal, 1e-12 * mu * normal) << "instant " << k;
   }
   std::cout << "[ seed     ] " << all_slip << " of " << closed_instants << " instants with contact slip everywhere\n";
-  EXPECT_GE(2 * all_slip, closed_instants) << "METHOD.md §6: the seed slides almost everywhere";
+  EXPECT_GE(2 * all_slip, closed_instants) << "docs/method.md §6: the seed slides almost everywhere";
 }
 
 // min ½λᵀW_nnλ + λᵀq, λ ≥ 0 (q = v_0,n + g0) by projected Gauss–Seidel from zero, until the natural

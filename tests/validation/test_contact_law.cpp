@@ -1,4 +1,4 @@
-// Validation: the contact law of METHOD.md §1 (Signorini, implicit Coulomb) on the full seed scene
+// Validation: the contact law of docs/method.md §1 (Signorini, implicit Coulomb) on the full seed scene
 // (arc_nodes 101, steps 201), for the incremental solution and for LATIN's two iterates, and the
 // global consequence of Coulomb's law when the whole contact zone slides: |Σλ_t| = μ Σλ_n.
 #include <gtest/gtest.h>
@@ -94,7 +94,7 @@ double fullSlidingDefect(const Eigen::MatrixXd& lambda, const std::vector<int>& 
 // - LATIN's equilibrated iterate on the incremental solution's full-sliding instants, 20 η of
 //   μ max_k Σλ_n: λ − λ̂ is what η measures (same argument as kEquilibratedLawPerIndicator above);
 //   relative to the force at the instant it would be unbounded near first contact, where Σλ_n → 0.
-//   Measured: 0.13 η (1.2e-10). All 160 instants after first contact slide fully (METHOD.md §6).
+//   Measured: 0.13 η (1.2e-10). All 160 instants after first contact slide fully (docs/method.md §6).
 constexpr double kRoundOffCone = 1e-12;
 
 TEST(ContactLaw, FullSlidingTangentialForceIsMuTimesNormal) {
@@ -110,7 +110,7 @@ TEST(ContactLaw, FullSlidingTangentialForceIsMuTimesNormal) {
             << incremental << ", LATIN admissible " << admissible << ", LATIN equilibrated " << equilibrated
             << " (indicator " << s.latin.summary.indicator << ")\n";
 
-  // The seed slides almost everywhere once contact closes at t_40 (METHOD.md §6).
+  // The seed slides almost everywhere once contact closes at t_40 (docs/method.md §6).
   EXPECT_GE(reference_instants.size(), 100u);
   EXPECT_GE(latin_instants.size(), 100u);
   EXPECT_LE(incremental, kRoundOffCone);

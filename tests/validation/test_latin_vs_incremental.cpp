@@ -1,6 +1,6 @@
 // Validation: LATIN (latin/latin_solver.hpp) against the incremental solver
-// (src/solver/incremental_solver.hpp) on the full seed scene (METHOD.md §6: arc_nodes 101, steps 201).
-// Both solve the same time-discrete problem (METHOD.md §1: implicit Coulomb, unique solution), by
+// (src/solver/incremental_solver.hpp) on the full seed scene (docs/method.md §6: arc_nodes 101, steps 201).
+// Both solve the same time-discrete problem (docs/method.md §1: implicit Coulomb, unique solution), by
 // unrelated methods: a space-time fixed point on the whole grid versus a semismooth Newton method
 // marching in time. Agreement to 1e-6 is therefore a check of both.
 #include <gtest/gtest.h>

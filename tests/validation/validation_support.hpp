@@ -19,10 +19,10 @@ namespace stc::validation {
 /// 1e-6 down to 1e-10. 1e-9 therefore puts all of them ≥ 150 times under the 1e-6 of the validation
 /// for 220 iterations (≈ 1 s in Release).
 inline constexpr double kSeedLatinTolerance = 1e-9;
-/// κ of the search direction for LATIN on the seed: the measured optimum (METHOD.md §2).
+/// κ of the search direction for LATIN on the seed: the measured optimum (docs/method.md §2).
 inline constexpr double kSeedSearchScale = 3.0;
 
-/// The seed scene (METHOD.md §6, arc_nodes 101, steps 201) with κ = 3, solved by the incremental
+/// The seed scene (docs/method.md §6, arc_nodes 101, steps 201) with κ = 3, solved by the incremental
 /// solver and by LATIN at kSeedLatinTolerance, and K_ff factorised. Solved once per process.
 struct SeedSolutions {
   Problem problem;

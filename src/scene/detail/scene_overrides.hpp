@@ -1,5 +1,5 @@
 #pragma once
-// `--set KEY=VALUE` overrides (INTERFACE.md "Command line"), applied to the parsed scene table
+// `--set KEY=VALUE` overrides (docs/interface.md "Command line"), applied to the parsed scene table
 // before validation, so an overridden value is checked exactly like one written in the file.
 //   KEY   = name | section.key | section[i].key (arrays of tables, 0-based) | ...[i] (array entry)
 //   VALUE = a TOML value (scalar or array: 401, 0.3, "stress", [0.0, 0.1]); text that does not
