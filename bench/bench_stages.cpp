@@ -1,14 +1,16 @@
-// Micro-benchmarks of the pieces of a solve (issue 7 parts 5 and 6), each on the seed scene
-// (arc_nodes 101: n = 1088 free dofs, n_C = 101, m = 201) and on a finer mesh of it (arc_nodes
-// 401), on 1 and 2 threads where the piece is threaded; every row is labelled with its sizes.
-//   LocalStage      the contact law on all nodes × instants (docs/method.md §2)
-//   GlobalStage     m right-hand sides built, solved with the factor (by blocks of 32 instants),
-//                   and the interface quantities v = B u, λ = λ̂ − k (v − v̂)
-//   LatinIteration  local stage + global stage + indicator
-//   CoarseStep      one FAS coarse step, i_C = 15, in the fas-apriori coarse space (r ≤ 30 PGD
-//                   modes + 15 residual vectors, seed eqs. (3)–(8))
-//   Enrichment*     one rank-one PGD enrichment by alternating fixed point (docs/method.md §5): with a
-//                   sparse solve per sweep (latin-pgd) or with the product ũ ψᵀ (fas-apriori)
+// Micro-benchmarks of the pieces of a solve, each on the seed scene (arc_nodes 101: n = 1088 free
+// dofs, n_C = 101, m = 201) and on a finer mesh of it (arc_nodes 401), on 1 and 2 threads where the
+// piece is threaded; every row is labelled with its sizes.
+//   LocalStage       the contact law on all nodes × instants (docs/method.md §2)
+//   GlobalStage      m right-hand sides built, solved with the factor (by blocks of 32 instants),
+//                    and the interface quantities v = B u, λ = λ̂ − k (v − v̂)
+//   SeparatedStage   the separated global stage (docs/method.md §5) on the directions found by 20
+//                    iterations of latin-pgd, without enrichment: three products with p columns
+//   LatinIteration   local stage + exact global stage + indicator
+//   CoarseStep       one FAS coarse step, i_C = 15, in the fas-apriori coarse space (default
+//                    modes + increment modes, seed eqs. (3)–(8))
+//   CoarseSpace      the fas-apriori coarse space from the separated iterate (energy SVD of the
+//                    expansion's factors, pgd/separated_history.hpp)
 // Build and run (docs/micro_benchmarks.md):
 //   cmake -S . -B build -DSTC_BUILD_BENCHMARKS=ON && cmake --build build --target bench_stages
 //   build/bench/bench_stages --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
@@ -23,45 +25,38 @@
 #include "latin/global_stage.hpp"
 #include "latin/indicator.hpp"
 #include "latin/local_stage.hpp"
-#include "pgd/separated_global_stage.hpp"
+#include "pgd/controlled_global_stage.hpp"
 #include "src/core/threads.hpp"
 #include "src/scene/scene_reader.hpp"
 
 namespace {
 
-// fas-apriori's basis options with all 30 PGD modes allowed in one cycle (r = 30 + 15 at once).
-stc::fas::AprioriBasisOptions fullBasis() {
-  stc::fas::AprioriBasisOptions options;
-  options.residual_vectors = 15;
-  options.max_modes = 30;
-  options.modes_per_cycle = 30;
-  return options;
-}
-
 // The seed scene at `arc_nodes` contact nodes, κ = 3 as bench_latin, after 20 LATIN iterations
-// (open, stick and slip nodes), with the fas-apriori coarse space and latin-pgd modes built there.
+// (open, stick and slip nodes); a separated global stage whose directions 20 iterations of
+// latin-pgd built, and the fas-apriori coarse space of its iterate.
 struct Sized {
   stc::Problem problem;
   stc::latin::GlobalStage global{problem};
   stc::InterfaceHistory s, hat, s_new;
-  Eigen::MatrixXd u;  ///< free displacements of the last global stage
-  stc::fas::AprioriBasisProvider provider{problem, global.matrix(), fullBasis()};
+  stc::pgd::ControlledGlobalStage separated{problem, {}};
+  stc::fas::AprioriBasisProvider provider{separated, {}};
   stc::fas::CoarseSpace space;
-  stc::pgd::SeparatedGlobalStage separated{problem, global};
 
   explicit Sized(int arc_nodes)
       : problem(stc::buildProblem(stc::readScene(STC_SOURCE_DIR "/examples/scenes/hemicylinder.toml",
                                                  {"solver.search_scale=3", "mesh.arc_nodes=" + std::to_string(arc_nodes)}))) {
     s = stc::InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
-    for (int i = 0; i < 20; ++i) step();
-    global.solve(hat, s, &u);
-    space = provider.coarseSpace(u, s);
-    stc::InterfaceHistory scratch;
-    for (int j = 0; j < 10; ++j) {  // latin-pgd modes, as after a few enrichments
-      separated.update(hat, scratch);
-      if (!separated.add(separated.candidate({}))) break;
+    stc::InterfaceHistory sep = s, sep_hat;
+    for (int i = 0; i < 20; ++i) {
+      step();
+      stc::latin::localStage(problem.contact, sep, sep_hat);
+      separated.solve(sep_hat, sep);
+      double gap = 0.0;
+      stc::latin::indicator(problem.contact.search_direction, sep, sep_hat, &gap);
+      separated.observeGap(gap);
     }
-    separated.update(hat, scratch);
+    space = provider.coarseSpace(s);
+    separated.observeGap(1e300);  // the benchmark measures the products, not enrichment
   }
   double step() {
     stc::latin::localStage(problem.contact, s, hat);
@@ -132,31 +127,23 @@ void CoarseStep(benchmark::State& state) {
   label(state, z, z.space.rank());
 }
 
-void EnrichmentLatinPgd(benchmark::State& state) {
+void SeparatedStage(benchmark::State& state) {
   Sized& z = sized(static_cast<int>(state.range(0)));
   const stc::ThreadCountScope threads(static_cast<int>(state.range(1)));
-  int space_problems = 0;
-  for (auto _ : state) space_problems = z.separated.candidate({}).space_problems;
-  label(state, z, z.separated.modes().rank());
-  state.counters["sweeps"] = space_problems;
+  for (auto _ : state) {
+    z.separated.solve(z.hat, z.s_new);
+    benchmark::ClobberMemory();
+  }
+  label(state, z, z.separated.rank());
 }
 
-// As AprioriBasisProvider::enrich: space problem x = ũ ψᵀ, time problem ψ = (ΥᵀF) G + (BΥ)ᵀ W.
-void EnrichmentFasApriori(benchmark::State& state) {
+void CoarseSpace(benchmark::State& state) {
   Sized& z = sized(static_cast<int>(state.range(0)));
   const stc::ThreadCountScope threads(static_cast<int>(state.range(1)));
-  const stc::pgd::EnergyModes& modes = z.provider.modes();
-  const stc::pgd::SeparatedLoads loads = stc::pgd::separatedLoads(z.problem);
-  const Eigen::MatrixXd W = z.s.lambda + z.problem.contact.search_direction.asDiagonal() * z.s.v;
-  const stc::pgd::SpaceProblem space = [&](const Eigen::RowVectorXd& psi) {
-    return Eigen::VectorXd(z.u * psi.transpose());
-  };
-  const stc::pgd::TimeProblem time = stc::pgd::separatedTimeProblem(modes, loads.G, W);
-  const Eigen::RowVectorXd psi0 = W.colwise().norm();
-  int space_problems = 0;
-  for (auto _ : state) space_problems = stc::pgd::enrichRankOne(modes, space, time, psi0).space_problems;
-  label(state, z, modes.rank());
-  state.counters["sweeps"] = space_problems;
+  stc::fas::AprioriBasisProvider provider{z.separated, {}};
+  int rank = 0;
+  for (auto _ : state) rank = provider.coarseSpace(z.s).rank();
+  label(state, z, rank);
 }
 
 // Arguments: {arc_nodes, threads}.
@@ -167,8 +154,8 @@ BENCHMARK(LocalStage)->Apply(threaded)->Unit(benchmark::kMicrosecond);
 BENCHMARK(GlobalStage)->Apply(threaded)->Unit(benchmark::kMillisecond);
 BENCHMARK(LatinIteration)->Apply(threaded)->Unit(benchmark::kMillisecond);
 BENCHMARK(CoarseStep)->Apply(threaded)->Unit(benchmark::kMillisecond);
-BENCHMARK(EnrichmentLatinPgd)->Apply(serial)->Unit(benchmark::kMillisecond);
-BENCHMARK(EnrichmentFasApriori)->Apply(serial)->Unit(benchmark::kMillisecond);
+BENCHMARK(SeparatedStage)->Apply(serial)->Unit(benchmark::kMillisecond);
+BENCHMARK(CoarseSpace)->Apply(serial)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

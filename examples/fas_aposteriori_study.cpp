@@ -175,7 +175,8 @@ stc::SolveResult runOne(const Study& st, const RunSpec& r, stc::latin::GlobalSta
   o.stagnation_window = 150;
   o.safeguard = st.safeguard;
   const int m = std::min<int>(r.modes, static_cast<int>(st.modes.cols()));
-  stc::fas::FixedBasisProvider provider(st.modes.leftCols(m), r.res, global.matrix(), st.problem.contact.B);
+  global.keepDisplacements(true);
+  stc::fas::FixedBasisProvider provider(st.modes.leftCols(m), r.res, global, st.problem.contact.B);
   return stc::fas::solveFas(st.problem, global, provider, o, "fas-aposteriori", st.reference.get(), stop);
 }
 
@@ -249,10 +250,11 @@ struct Cost {
 Cost measureCost(const Study& st, stc::latin::GlobalStage& global, int repeats) {
   const auto& contact = st.problem.contact;
   stc::InterfaceHistory s = stc::InterfaceHistory::zeros(contact.size(), st.problem.numSteps()), hat, s2, hat2;
-  Eigen::MatrixXd u, xi;
+  Eigen::MatrixXd xi;
   stc::latin::localStage(contact, s, hat);
+  global.keepDisplacements(true);
   for (int i = 0; i < 10; ++i) {  // a realistic iterate: ten LATIN iterations in
-    global.solve(hat, s, &u);
+    global.solve(hat, s);  // keeps ũ for the providers' residual vectors
     stc::latin::localStage(contact, s, hat);
   }
   std::vector<std::unique_ptr<stc::fas::FixedBasisProvider>> providers;
@@ -262,8 +264,8 @@ Cost measureCost(const Study& st, stc::latin::GlobalStage& global, int repeats) 
     const int m = std::min<int>(svd, static_cast<int>(st.modes.cols()));
     if (!c.rows.empty() && c.rows.back().svd == m) break;  // small scenes: fewer modes than asked
     providers.push_back(
-        std::make_unique<stc::fas::FixedBasisProvider>(st.modes.leftCols(m), 15, global.matrix(), contact.B));
-    spaces.push_back(providers.back()->coarseSpace(u, s));
+        std::make_unique<stc::fas::FixedBasisProvider>(st.modes.leftCols(m), 15, global, contact.B));
+    spaces.push_back(providers.back()->coarseSpace(s));
     c.rows.push_back({m, spaces.back().rank()});
   }
   const stc::fas::FasOptions o;  // i_C = 15, start (a)
@@ -271,7 +273,7 @@ Cost measureCost(const Study& st, stc::latin::GlobalStage& global, int repeats) 
   std::vector<std::vector<double>> renew(c.rows.size()), coarse(c.rows.size()), rr(c.rows.size()), cr(c.rows.size());
   for (int i = 0; i < repeats; ++i) {
     relax.push_back(seconds([&] {
-      global.solve(hat, s2, &u);
+      global.solve(hat, s2);
       volatile double eta = stc::latin::indicator(contact.search_direction, s2, hat);
       (void)eta;
       stc::latin::localStage(contact, s2, hat2);
@@ -282,7 +284,7 @@ Cost measureCost(const Study& st, stc::latin::GlobalStage& global, int repeats) 
       (void)e;
     }));
     for (std::size_t j = 0; j < c.rows.size(); ++j) {
-      renew[j].push_back(seconds([&] { spaces[j] = providers[j]->coarseSpace(u, s); }));
+      renew[j].push_back(seconds([&] { spaces[j] = providers[j]->coarseSpace(s); }));
       hat2 = hat;  // coarseStep overwrites its local-stage iterate: start each repeat from the same one
       coarse[j].push_back(seconds([&] { stc::fas::coarseStep(contact, spaces[j], o, s, hat2, xi); }));
       rr[j].push_back(renew[j].back() / relax.back());

@@ -1,60 +1,47 @@
 #include "fas/apriori_basis.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include <Eigen/QR>
 
-#include "fas/residual_vectors.hpp"
-#include "src/solver/warm_start.hpp"
+#include "pgd/separated_history.hpp"
+#include "src/core/input_error.hpp"
 
 namespace stc::fas {
 
-AprioriBasisProvider::AprioriBasisProvider(const Problem& problem, const Eigen::SparseMatrix<double>& A,
-                                           AprioriBasisOptions options)
-    : problem_(problem),
-      A_(A),
-      options_(options),
-      loads_(pgd::separatedLoads(problem)),
-      modes_(A, problem.contact.B, loads_.F) {}
-
-int AprioriBasisProvider::seed(const Eigen::MatrixXd& vectors) {
-  requireFits(vectors, problem_);
-  const int most = static_cast<int>(std::clamp(options_.seed_share, 0.0, 1.0) * options_.max_modes);
-  for (Eigen::Index j = 0; j < vectors.cols() && modes_.rank() < most; ++j) modes_.add(vectors.col(j));
-  return modes_.rank();
+void AprioriBasisOptions::validate() const {
+  if (modes < 0) throw InputError("a priori basis: modes = " + std::to_string(modes) + " must be >= 0");
+  if (increment_modes < 0)
+    throw InputError("a priori basis: increment_modes = " + std::to_string(increment_modes) + " must be >= 0");
+  if (modes + increment_modes < 1)
+    throw InputError("a priori basis: modes + increment_modes = 0: the coarse space would be empty");
 }
 
-Eigen::MatrixXd AprioriBasisProvider::enrich(const Eigen::MatrixXd& u_tilde, const Eigen::MatrixXd& W) {
-  const pgd::SpaceProblem space = [&](const Eigen::RowVectorXd& psi) {
-    return Eigen::VectorXd(u_tilde * psi.transpose());  // A⁻¹ Σ_k ψ_k r_k = ũ ψᵀ
-  };
-  const pgd::TimeProblem time = pgd::separatedTimeProblem(modes_, loads_.G, W);
-  // Energy of ũ_k: ũ_kᵀ A ũ_k = ũ_kᵀ r_k = (Fᵀ ũ_k)·g_k + (B ũ_k)·w_k; of what the modes miss:
-  // ‖ũ_k − Υ c_k‖²_A = ũ_kᵀ A ũ_k − ‖c_k‖² (Υ A-orthonormal); a new pair's ψ is its row of c.
-  const Eigen::MatrixXd Bu = problem_.contact.B * u_tilde;
-  Eigen::RowVectorXd energy = Bu.cwiseProduct(W).colwise().sum();
-  if (loads_.F.cols() > 0) energy += (loads_.F.transpose() * u_tilde).cwiseProduct(loads_.G).colwise().sum();
-  Eigen::MatrixXd coordinates = pgd::updateTimeFunctions(modes_, loads_.G, W);
-  const double total = std::sqrt(std::max(0.0, energy.sum()));
-  for (int added = 0; added < options_.modes_per_cycle && modes_.rank() < options_.max_modes; ++added) {
-    const Eigen::RowVectorXd missed = (energy - coordinates.colwise().squaredNorm()).cwiseMax(0.0).cwiseSqrt();
-    const pgd::RankOnePair pair = pgd::enrichRankOne(modes_, space, time, missed, options_.enrichment);
-    if (!(pair.time.norm() > options_.relative_energy_drop * total) || !modes_.add(pair.space)) break;
-    coordinates.conservativeResize(coordinates.rows() + 1, Eigen::NoChange);
-    coordinates.row(coordinates.rows() - 1) = time(modes_.modes().col(modes_.rank() - 1));
+AprioriBasisProvider::AprioriBasisProvider(const pgd::ControlledGlobalStage& stage, AprioriBasisOptions options)
+    : stage_(stage), options_(options) {
+  options_.validate();
+}
+
+CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& /*s*/) {
+  const pgd::ResponseBasis& basis = stage_.basis();
+  const Eigen::MatrixXd& c = stage_.coordinates();
+  // In whitened coordinates the A-product is the Euclidean one: modes are unit vectors there.
+  const pgd::Whitening w = pgd::whitening(basis);
+  const Eigen::Index q = basis.loadHistories().rows();
+  Eigen::MatrixXd theta = pgd::historyFactor(basis, c);
+  Eigen::MatrixXd U = pgd::leadingSingularVectors(w.to_coordinates * theta, options_.modes);
+  if (options_.increment_modes > 0 && previous_.size() > 0) {
+    // ũ − ũ_previous: the loads' part cancels, the coordinates of directions added since are new.
+    theta.topRows(q).setZero();
+    theta.middleRows(q, previous_.rows()) -= previous_;
+    Eigen::MatrixXd d = w.to_coordinates * theta;
+    d -= U * (U.transpose() * d);
+    const Eigen::MatrixXd V = pgd::leadingSingularVectors(d, options_.increment_modes, 1e-10);
+    Eigen::MatrixXd all(U.rows(), U.cols() + V.cols());
+    all << U, V;
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(all);
+    U = qr.householderQ() * Eigen::MatrixXd::Identity(all.rows(), all.cols());
   }
-  return coordinates;
-}
-
-CoarseSpace AprioriBasisProvider::coarseSpace(const Eigen::MatrixXd& u_tilde, const InterfaceHistory& s) {
-  // The last global stage's right-hand sides: λ̂ + k v̂ = λ + k v (docs/method.md §2, search direction).
-  const Eigen::MatrixXd W = s.lambda + problem_.contact.search_direction.asDiagonal() * s.v;
-  const Eigen::MatrixXd coordinates = enrich(u_tilde, W);
-  Eigen::MatrixXd missed = u_tilde;
-  if (modes_.rank() > 0) missed.noalias() -= modes_.modes() * coordinates;
-  const Eigen::MatrixXd res = rangeOf(missed, options_.residual_vectors);
-  Eigen::MatrixXd all(modes_.modes().rows(), modes_.rank() + res.cols());
-  all << modes_.modes(), res;
-  return CoarseSpace(all, A_, problem_.contact.B);
+  previous_ = c;
+  return CoarseSpace::fromTraces(pgd::modeTraces(basis, w.to_modes * U));
 }
 
 }  // namespace stc::fas

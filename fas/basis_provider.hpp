@@ -1,11 +1,12 @@
 #pragma once
-// Where the FAS coarse space comes from, cycle after cycle. A posteriori (issue 5): SVD modes of a
-// converged solution, fixed, plus residual vectors renewed every cycle (seed §4.3). A priori
-// (issue 6): PGD modes built during the iterations, plus residual vectors.
+// Where the FAS coarse space comes from, cycle after cycle. A posteriori: SVD modes of a converged
+// solution, fixed, plus residual vectors renewed every cycle (seed §4.3). A priori
+// (fas/apriori_basis.hpp): the energy SVD of the separated iterate built during the iterations.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 #include "fas/coarse_space.hpp"
+#include "latin/global_stage.hpp"
 #include "src/spacetime/interface_history.hpp"
 
 namespace stc::fas {
@@ -13,24 +14,25 @@ namespace stc::fas {
 class BasisProvider {
  public:
   virtual ~BasisProvider() = default;
-  /// The coarse space for the coming coarse step, given the current displacement history ũ
-  /// (n_free × m) and interface history s = (v, λ) of the last global stage (so A ũ_k = f_k +
-  /// Bᵀ(λ_k + k v_k) is known without a product with A).
-  virtual CoarseSpace coarseSpace(const Eigen::MatrixXd& u_tilde, const InterfaceHistory& s) = 0;
+  /// The coarse space for the coming coarse step, given the interface history s = (v, λ) of the
+  /// last global stage (the provider reads the displacement history, when it needs one, from the
+  /// global stage it was built on).
+  virtual CoarseSpace coarseSpace(const InterfaceHistory& s) = 0;
 };
 
-/// Fixed vectors (e.g. SVD modes restricted to the free dofs) + N_res residual vectors.
+/// Fixed vectors (e.g. SVD modes restricted to the free dofs) + N_res residual vectors of the
+/// displacement history ũ of `global`'s last solve (which must keep it: keepDisplacements).
 class FixedBasisProvider : public BasisProvider {
  public:
-  FixedBasisProvider(const Eigen::MatrixXd& vectors, int residual_vectors, const Eigen::SparseMatrix<double>& A,
+  FixedBasisProvider(const Eigen::MatrixXd& vectors, int residual_vectors, const latin::GlobalStage& global,
                      const Eigen::SparseMatrix<double>& B);
-  CoarseSpace coarseSpace(const Eigen::MatrixXd& u_tilde, const InterfaceHistory& s) override;
+  CoarseSpace coarseSpace(const InterfaceHistory& s) override;
   const CoarseSpace& fixedSpace() const { return fixed_; }
 
  private:
   CoarseSpace fixed_;
   int residual_vectors_;
-  const Eigen::SparseMatrix<double>& A_;
+  const latin::GlobalStage& global_;
   const Eigen::SparseMatrix<double>& B_;
 };
 

@@ -26,6 +26,12 @@ CoarseSpace::CoarseSpace(const Eigen::MatrixXd& vectors, const Eigen::SparseMatr
   BY_ = B * Y_;
 }
 
+CoarseSpace CoarseSpace::fromTraces(Eigen::MatrixXd traces) {
+  CoarseSpace space;
+  space.BY_ = std::move(traces);
+  return space;
+}
+
 double CoarseSpace::orthonormalityDefect(const Eigen::SparseMatrix<double>& A) const {
   const Eigen::MatrixXd G = Y_.transpose() * (A * Y_);
   return (G - Eigen::MatrixXd::Identity(rank(), rank())).cwiseAbs().maxCoeff();

@@ -15,7 +15,7 @@ namespace {
 // The fine level: relaxations from the current local-stage iterate `hat`.
 class FineLevel {
  public:
-  FineLevel(const Problem& problem, latin::GlobalStage& global, const InterfaceHistory& start,
+  FineLevel(const Problem& problem, latin::LinearStage& global, const InterfaceHistory& start,
             IterationMonitor& monitor)
       : s(start), problem_(problem), global_(global), monitor_(monitor), solves_before_(global.sparseSolves()) {
     latin::localStage(problem.contact, s, hat);
@@ -23,22 +23,23 @@ class FineLevel {
 
   /// One relaxation: global stage (recorded), then local stage. Returns true when the solve stops.
   bool relax(int rank) {
-    global_.solve(hat, s, &u);
+    global_.solve(hat, s);
     ++relaxations;
-    eta = latin::indicator(problem_.contact.search_direction, s, hat);
-    const bool stop = monitor_.record(relaxations, eta, s.lambda, rank, global_.sparseSolves() - solves_before_);
+    double gap = 0.0;
+    eta = latin::indicator(problem_.contact.search_direction, s, hat, &gap);
+    global_.observeGap(gap);
+    const bool stop = monitor_.record(relaxations, eta, s, rank, global_.sparseSolves() - solves_before_);
     latin::localStage(problem_.contact, s, hat);
     return stop;
   }
 
   InterfaceHistory s, hat;  ///< last global-stage and local-stage iterates
-  Eigen::MatrixXd u;        ///< free displacements of the last global stage
   int relaxations = 0;
   double eta = 0.0;         ///< indicator of the last relaxation
 
  private:
   const Problem& problem_;
-  latin::GlobalStage& global_;
+  latin::LinearStage& global_;
   IterationMonitor& monitor_;
   long solves_before_;
 };
@@ -87,20 +88,23 @@ class CoarseGuard {
 
 }  // namespace
 
-SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisProvider& provider,
+SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
                      const FasOptions& options, const std::string& solver_name, const ErrorReference* reference,
                      const IterationCallback& callback) {
   return solveFas(problem, global, provider, InterfaceHistory::zeros(problem.contact.size(), problem.numSteps()),
                   options, solver_name, reference, callback);
 }
 
-SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisProvider& provider,
+SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
                      const InterfaceHistory& start, const FasOptions& options, const std::string& solver_name,
                      const ErrorReference* reference, const IterationCallback& callback) {
   options.validate();
   requireFits(start, problem);
-  IterationMonitor monitor(solver_name, {options.tolerance, options.max_relaxations, options.stagnation_window},
-                           reference, callback);
+  const EquilibriumEnergy energy(problem, global.factor());
+  IterationMonitor monitor(solver_name,
+                           {options.tolerance, options.max_relaxations, options.stagnation_window,
+                            options.pre_relaxations + options.post_relaxations},
+                           &energy, reference, callback);
   FineLevel fine(problem, global, start, monitor);
   CoarseGuard guard(options);
   int rank = 0;
@@ -114,7 +118,7 @@ SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisPr
     for (int j = 0; j < options.pre_relaxations && !stop; ++j) stop = relax();
     if (stop) break;
     if (!guard.skipThisCycle()) {
-      const CoarseSpace space = provider.coarseSpace(fine.u, fine.s);
+      const CoarseSpace space = provider.coarseSpace(fine.s);
       rank = space.rank();
       if (rank > 0) {
         guard.arm(fine);
@@ -128,7 +132,7 @@ SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisPr
   latin::localStage(problem.contact, fine.s, admissible);
   SolveSummary summary = monitor.finish();
   if (guard.rejected > 0) summary.message += "; " + std::to_string(guard.rejected) + " coarse corrections rejected";
-  return {std::move(fine.s), std::move(summary), std::move(admissible), {}};
+  return {std::move(fine.s), std::move(summary), std::move(admissible), {}, {}};
 }
 
 }  // namespace stc::fas

@@ -5,7 +5,7 @@
 // Convergence is tested on the fine level only, after every relaxation (its global stage).
 #include "fas/basis_provider.hpp"
 #include "fas/fas_options.hpp"
-#include "latin/global_stage.hpp"
+#include "latin/linear_stage.hpp"
 #include "src/problem/problem.hpp"
 #include "src/solver/error_reference.hpp"
 #include "src/solver/solve_result.hpp"
@@ -14,13 +14,13 @@ namespace stc::fas {
 
 /// History: one record per relaxation (iteration = relaxations), rank = coarse-space size.
 /// `solver_name` is recorded in the summary ("fas-aposteriori", "fas-apriori"). Starts from s = 0.
-SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisProvider& provider,
+SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
                      const FasOptions& options, const std::string& solver_name,
                      const ErrorReference* reference = nullptr, const IterationCallback& callback = {});
 
 /// The same from `start` (2n_C × m), e.g. a neighbouring problem's converged solution (a warm
 /// start): the fine level begins with the local stage of `start`, as it does of s = 0 otherwise.
-SolveResult solveFas(const Problem& problem, latin::GlobalStage& global, BasisProvider& provider,
+SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
                      const InterfaceHistory& start, const FasOptions& options, const std::string& solver_name,
                      const ErrorReference* reference = nullptr, const IterationCallback& callback = {});
 

@@ -7,6 +7,7 @@
 #include "fas/fas_solver.hpp"
 #include "latin/latin_solver.hpp"
 #include "pgd/latin_pgd_solver.hpp"
+#include "pgd/separated_history.hpp"
 #include "src/core/input_error.hpp"
 #include "src/solver/incremental_solver.hpp"
 
@@ -26,10 +27,8 @@ FasOptions fasOptions(const SolverSpec& spec) {
 
 AprioriBasisOptions aprioriOptions(const SolverSpec& spec) {
   AprioriBasisOptions basis;
-  basis.residual_vectors = spec.fas.residual_vectors;
-  basis.max_modes = spec.fas.pgd_max_modes;
-  basis.modes_per_cycle = spec.fas.pgd_modes_per_cycle;
-  basis.seed_share = spec.fas.pgd_seed_share;
+  basis.modes = spec.fas.pgd_max_modes;
+  basis.increment_modes = spec.fas.residual_vectors;
   return basis;
 }
 
@@ -40,10 +39,6 @@ InterfaceHistory startOf(const Problem& problem, const StrategyInputs& inputs) {
   return InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
 }
 
-Eigen::MatrixXd seedOf(const Problem& problem, const StrategyInputs& inputs) {
-  if (inputs.basis_seed) return *inputs.basis_seed;
-  return Eigen::MatrixXd(problem.numFreeDofs(), 0);
-}
 
 SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
   const SpdFactor K(problem.stiffness_free, "K_ff");
@@ -52,28 +47,30 @@ SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, con
   else lambda = solveIncremental(problem).interface.lambda;
   const Eigen::MatrixXd modes = aposterioriModes(problem, K, lambda, spec.fas.svd_modes);
   latin::GlobalStage global(problem);
-  FixedBasisProvider provider(modes, spec.fas.residual_vectors, global.matrix(), problem.contact.B);
+  global.keepDisplacements(true);
+  FixedBasisProvider provider(modes, spec.fas.residual_vectors, global, problem.contact.B);
   return solveFas(problem, global, provider, startOf(problem, inputs), fasOptions(spec), "fas-aposteriori",
                   inputs.reference, inputs.callback);
 }
 
 SolveResult solveApriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
-  latin::GlobalStage global(problem);
-  AprioriBasisProvider provider(problem, global.matrix(), aprioriOptions(spec));
-  provider.seed(seedOf(problem, inputs));
-  SolveResult result = solveFas(problem, global, provider, startOf(problem, inputs), fasOptions(spec), "fas-apriori",
+  pgd::ControlledGlobalStage stage(problem, {});
+  if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
+  AprioriBasisProvider provider(stage, aprioriOptions(spec));
+  SolveResult result = solveFas(problem, stage, provider, startOf(problem, inputs), fasOptions(spec), "fas-apriori",
                                 inputs.reference, inputs.callback);
-  result.spatial_modes = provider.modes().modes();
+  result.interface_directions = stage.basis().directions();
+  result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
   return result;
 }
 
 SolveResult solveLatinPgd(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
   pgd::LatinPgdOptions options;
-  options.tolerance = spec.tolerance;
-  options.max_iterations = spec.max_iterations;
-  const latin::GlobalStage global(problem);
-  return pgd::solveLatinPgd(problem, global, startOf(problem, inputs), seedOf(problem, inputs), options,
-                            inputs.reference, inputs.callback);
+  options.latin.tolerance = spec.tolerance;
+  options.latin.max_iterations = spec.max_iterations;
+  options.latin.relaxation = spec.relaxation;
+  const InterfaceHistory start = startOf(problem, inputs);
+  return pgd::solveLatinPgd(problem, options, &start, inputs.basis_seed, inputs.reference, inputs.callback);
 }
 
 SolveResult solveLatinFrom(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {

@@ -30,9 +30,9 @@ struct StrategyInputs {
   /// from instead of s = 0, e.g. a neighbouring problem's SolveResult::interface (2n_C × m).
   /// Ignored by `incremental`, which marches in time from the unloaded state.
   const InterfaceHistory* start = nullptr;
-  /// Warm start of an a priori basis: the spatial modes `fas-apriori` and `latin-pgd` begin with
-  /// (n_free × r), e.g. a neighbouring problem's SolveResult::spatial_modes; they enrich from there.
-  /// Ignored by the others (`fas-aposteriori` takes its modes from `converged_lambda`).
+  /// Warm start of an a priori basis: the interface directions `fas-apriori` and `latin-pgd` begin
+  /// with (2n_C × p), e.g. a neighbouring problem's SolveResult::interface_directions; they enrich
+  /// from there. Ignored by the others (`fas-aposteriori` takes its modes from `converged_lambda`).
   const Eigen::MatrixXd* basis_seed = nullptr;
 };
 

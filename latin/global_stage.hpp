@@ -10,25 +10,31 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "latin/linear_stage.hpp"
 #include "src/linalg/spd_factor.hpp"
 #include "src/problem/problem.hpp"
 #include "src/spacetime/interface_history.hpp"
 
 namespace stc::latin {
 
-class GlobalStage {
+class GlobalStage : public LinearStage {
  public:
   /// Factorises K_ff + Bᵀ k B with k = problem.contact.search_direction.
   explicit GlobalStage(const Problem& problem, int block_size = 32);
 
-  /// s = global stage of ŝ (all instants). Adds m to the sparse-solve count. When `u` is given it
-  /// receives the free displacements (n_free × m; FAS builds its residual vectors from them).
-  void solve(const InterfaceHistory& hat, InterfaceHistory& s, Eigen::MatrixXd* u = nullptr);
+  /// s = global stage of ŝ (all instants). Adds m to the sparse-solve count.
+  void solve(const InterfaceHistory& hat, InterfaceHistory& s) override { solve(hat, s, keep_ ? &u_ : nullptr); }
+  /// The same; when `u` is given it receives the free displacements (n_free × m).
+  void solve(const InterfaceHistory& hat, InterfaceHistory& s, Eigen::MatrixXd* u);
+  /// Keeps the free displacements of every solve (n_free × m; `fas-aposteriori` builds its residual
+  /// vectors from them): displacements().
+  void keepDisplacements(bool keep) { keep_ = keep; }
+  const Eigen::MatrixXd& displacements() const { return u_; }
 
   /// The operator K_ff + Bᵀ k B and its factor (the FAS coarse space and PGD use them).
   const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
-  const SpdFactor& factor() const { return factor_; }
-  long sparseSolves() const { return sparse_solves_; }
+  const SpdFactor& factor() const override { return factor_; }
+  long sparseSolves() const override { return sparse_solves_; }
 
  private:
   /// One block of instants k0 … k0 + count − 1, solved with `workspace`.
@@ -42,6 +48,8 @@ class GlobalStage {
   int block_size_;
   std::vector<SpdFactor::Workspace> workspaces_;  ///< one per thread, grown on demand
   long sparse_solves_ = 0;
+  bool keep_ = false;
+  Eigen::MatrixXd u_;
 };
 
 Eigen::SparseMatrix<double> searchDirectionOperator(const Problem& problem);

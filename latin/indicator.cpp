@@ -1,5 +1,7 @@
 #include "latin/indicator.hpp"
 
+#include <cmath>
+
 namespace stc::latin {
 
 double searchNormSquared(const Eigen::VectorXd& k, const Eigen::MatrixXd& v, const Eigen::MatrixXd& lambda) {
@@ -8,7 +10,7 @@ double searchNormSquared(const Eigen::VectorXd& k, const Eigen::MatrixXd& v, con
   return v_part + l_part;
 }
 
-double indicator(const Eigen::VectorXd& k, const InterfaceHistory& s, const InterfaceHistory& hat) {
+double indicator(const Eigen::VectorXd& k, const InterfaceHistory& s, const InterfaceHistory& hat, double* gap) {
   // One pass over the four histories (this runs every iteration; four temporaries cost 2x more).
   // Terms as (√k v)² and (λ/√k)²: k v² and λ²/k are of one size, λ² alone overflows first
   // (|λ| > 1e154, e.g. a scene with E = 1e300), which turned η into NaN.
@@ -23,6 +25,7 @@ double indicator(const Eigen::VectorXd& k, const InterfaceHistory& s, const Inte
       diff += dv * dv + dl * dl;
       sum += sv * sv + sl * sl;
     }
+  if (gap) *gap = std::sqrt(diff);
   if (sum == 0.0) return diff == 0.0 ? 0.0 : 1.0;
   return std::sqrt(diff) / (0.5 * std::sqrt(sum));
 }

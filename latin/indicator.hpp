@@ -10,6 +10,8 @@ namespace stc::latin {
 /// ‖(v, λ)‖² in the search-direction norm; k holds (k_n, k_t) per node.
 double searchNormSquared(const Eigen::VectorXd& k, const Eigen::MatrixXd& v, const Eigen::MatrixXd& lambda);
 
-double indicator(const Eigen::VectorXd& k, const InterfaceHistory& s, const InterfaceHistory& hat);
+/// η; when `gap` is given it receives ‖s − ŝ‖ (the numerator).
+double indicator(const Eigen::VectorXd& k, const InterfaceHistory& s, const InterfaceHistory& hat,
+                 double* gap = nullptr);
 
 }  // namespace stc::latin

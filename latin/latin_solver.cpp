@@ -2,6 +2,7 @@
 
 #include "latin/indicator.hpp"
 #include "latin/local_stage.hpp"
+#include "src/solver/equilibrium_energy.hpp"
 #include "src/solver/iteration_monitor.hpp"
 #include "src/solver/warm_start.hpp"
 
@@ -15,29 +16,33 @@ SolveResult solveLatin(const Problem& problem, const LatinOptions& options, cons
                     reference, callback);
 }
 
-SolveResult solveLatin(const Problem& problem, GlobalStage& global, const InterfaceHistory& start,
+SolveResult solveLatin(const Problem& problem, LinearStage& global, const InterfaceHistory& start,
                        const LatinOptions& options, const ErrorReference* reference,
-                       const IterationCallback& callback) {
+                       const IterationCallback& callback, const std::string& solver_name) {
   options.validate();
   requireFits(start, problem);
-  IterationMonitor monitor("latin", {options.tolerance, options.max_iterations, options.stagnation_window},
-                           reference, callback);
+  const EquilibriumEnergy energy(problem, global.factor());
+  IterationMonitor monitor(solver_name, {options.tolerance, options.max_iterations, options.stagnation_window},
+                           &energy, reference, callback);
   const Eigen::VectorXd& k = problem.contact.search_direction;
   const long solves_before = global.sparseSolves();
   InterfaceHistory s = start, hat, s_new;
   for (int iteration = 1;; ++iteration) {
     localStage(problem.contact, s, hat);
     global.solve(hat, s_new);
-    const double eta = indicator(k, s_new, hat);
+    double gap = 0.0;
+    const double eta = indicator(k, s_new, hat, &gap);
+    global.observeGap(gap);
+    // A convex combination of two iterates in equilibrium is in equilibrium: s stays in A_d.
     if (options.relaxation < 1.0) {
       s.v = options.relaxation * s_new.v + (1.0 - options.relaxation) * s.v;
       s.lambda = options.relaxation * s_new.lambda + (1.0 - options.relaxation) * s.lambda;
     } else {
       std::swap(s, s_new);
     }
-    if (monitor.record(iteration, eta, s.lambda, 0, global.sparseSolves() - solves_before)) break;
+    if (monitor.record(iteration, eta, s, global.rank(), global.sparseSolves() - solves_before)) break;
   }
-  return {std::move(s), monitor.finish(), std::move(hat), {}};
+  return {std::move(s), monitor.finish(), std::move(hat), {}, {}};
 }
 
 }  // namespace stc::latin

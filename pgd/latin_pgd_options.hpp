@@ -1,25 +1,19 @@
 #pragma once
-// Options of `latin-pgd`: LATIN whose global stage is solved in separated form (docs/method.md §5).
-#include "pgd/rank_one_enrichment.hpp"
+// Options of `latin-pgd`: LATIN (docs/method.md §2) whose global stage is solved in separated form
+// with its error controlled (docs/method.md §5; pgd/controlled_global_stage.hpp).
+#include "latin/latin_options.hpp"
+#include "pgd/controlled_global_stage.hpp"
 
 namespace stc::pgd {
 
 struct LatinPgdOptions {
-  double tolerance = 1e-6;      ///< on the indicator, once the global-stage error is checked below it
-  int max_iterations = 5000;
-  int stagnation_window = 500;  ///< as LATIN's (0: never)
-  int max_rank = 400;           ///< modes at most (the exact global stage needs ≤ q + 2n_C of them)
-  /// Enrich while the next mode would move s by more than γ = this times max(η, tolerance) in the
-  /// indicator's norm. A global-stage error ε per iteration shifts LATIN's fixed point by about
-  /// ε / (1 − ρ), ρ ≈ 0.9–0.97 its rate per iteration, so γ must be of order 1 − ρ: on the seed
-  /// scene γ = 0.2 and 0.1 stagnate at true error 1e-2 and 2e-3, γ = 0.03 converges (docs/compare_bases.md).
-  double enrichment_ratio = 0.03;
-  /// Check the global stage (enrichment candidate, a few sparse solves) when η_n > ratio · η_{n−1}.
-  double stagnation_ratio = 0.99;
-  int max_modes_per_iteration = 4;
-  EnrichmentOptions enrichment;
+  latin::LatinOptions latin;       ///< tolerance, iteration limit, stagnation, relaxation
+  ControlledStageOptions stage;    ///< the control of the separated global stage
 
-  void validate() const;  ///< throws InputError naming the field
+  void validate() const {
+    latin.validate();
+    stage.validate();
+  }
 };
 
 }  // namespace stc::pgd

@@ -89,7 +89,7 @@ SweepPoint WarmChain::solveValue(const Scene& scene, const SweepRange& range, st
   if (!settings.quiet) printPoint(point, range.key);
 
   interface_ = std::move(solved.result.interface);
-  modes_ = std::move(solved.result.spatial_modes);
+  modes_ = std::move(solved.result.interface_directions);
   return point;
 }
 

@@ -1,5 +1,6 @@
 #include "src/io/run_writer.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -48,11 +49,13 @@ void contactFields(const Problem& problem, const SolveResult& result, int k, Eig
 std::string historyCsv(const SolveSummary& summary) {
   std::ostringstream out;
   out.precision(12);
-  out << "iteration,relaxations,indicator,error,rank,wall_s\n";
+  out << "iteration,relaxations,indicator,error,rank,wall_s,error_estimate\n";
   for (const auto& r : summary.history) {
     out << r.iteration << ',' << r.relaxations << ',' << r.indicator << ',';
     if (r.error) out << *r.error;
-    out << ',' << r.rank << ',' << r.wall_s << '\n';
+    out << ',' << r.rank << ',' << r.wall_s << ',';
+    if (std::isfinite(r.error_estimate)) out << r.error_estimate;
+    out << '\n';
   }
   return out.str();
 }
@@ -66,6 +69,8 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
       .add("relaxations", summary.relaxations)
       .add("indicator", summary.indicator)
       .add("error", summary.error)
+      .add("error_estimate", std::isfinite(summary.error_estimate) ? std::optional<double>(summary.error_estimate)
+                                                                   : std::nullopt)
       .add("wall_s", summary.wall_s)
       .add("threads", threadCount())
       .add("n_dofs", problem.numDofs())

@@ -255,7 +255,7 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
     result.interface.lambda.col(k) = o.lambda;
     result.interface.v.col(k) = o.v;
     for (int i = 0; i < nc; ++i) d.vt_prev[i] = o.v[2 * i + 1];
-    summary.history.push_back({k + 1, 0, o.residual, std::nullopt, 0, condensed.sparse_solves, elapsed()});
+    summary.history.push_back({k + 1, 0, o.residual, 0.0, std::nullopt, 0, condensed.sparse_solves, elapsed()});
     summary.indicator = std::max(summary.indicator, o.residual);
     if (callback && !callback(summary.history.back())) {
       summary.termination = Termination::StoppedByCallback;

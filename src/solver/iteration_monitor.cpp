@@ -5,9 +5,14 @@
 
 namespace stc {
 
-IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const ErrorReference* reference,
-                                   IterationCallback callback)
-    : rule_(rule), reference_(reference), callback_(std::move(callback)), start_(std::chrono::steady_clock::now()) {
+IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const EquilibriumEnergy* energy,
+                                   const ErrorReference* reference, IterationCallback callback)
+    : rule_(rule),
+      energy_(energy),
+      estimator_(rule.estimate_period),
+      reference_(reference),
+      callback_(std::move(callback)),
+      start_(std::chrono::steady_clock::now()) {
   summary_.solver = std::move(solver);
 }
 
@@ -15,12 +20,14 @@ double IterationMonitor::elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-bool IterationMonitor::record(int relaxations, double indicator, const Eigen::MatrixXd& lambda, int rank,
+bool IterationMonitor::record(int relaxations, double indicator, const InterfaceHistory& s, int rank,
                               long sparse_solves) {
+  const Eigen::MatrixXd& lambda = s.lambda;
   IterationRecord r;
   r.iteration = static_cast<int>(summary_.history.size()) + 1;
   r.relaxations = relaxations;
   r.indicator = indicator;
+  r.error_estimate = energy_ ? estimator_.record(s, (*energy_)(s)) : indicator;
   if (reference_ && reference_->defined()) r.error = reference_->relativeError(lambda);
   r.rank = rank;
   r.sparse_solves = static_cast<int>(sparse_solves);
@@ -28,9 +35,10 @@ bool IterationMonitor::record(int relaxations, double indicator, const Eigen::Ma
   summary_.history.push_back(r);
   if (!std::isfinite(indicator) || !lambda.allFinite())
     return stop(Termination::NumericalIssue, "NaN or Inf in the iterate at iteration " + std::to_string(r.iteration));
-  if (indicator <= rule_.tolerance) {
+  if (r.error_estimate <= rule_.tolerance) {
     std::ostringstream msg;
-    msg << "indicator " << indicator << " <= tolerance " << rule_.tolerance << " after " << r.iteration << " iterations";
+    msg << "error estimate " << r.error_estimate << " <= tolerance " << rule_.tolerance << " after " << r.iteration
+        << " iterations (indicator " << indicator << ")";
     return stop(Termination::Converged, msg.str());
   }
   if (r.iteration == 1 || indicator < 0.99 * best_indicator_) {
@@ -63,6 +71,7 @@ SolveSummary IterationMonitor::finish() {
     const auto& last = summary_.history.back();
     summary_.relaxations = last.relaxations;
     summary_.indicator = last.indicator;
+    summary_.error_estimate = last.error_estimate;
     summary_.error = last.error;
   }
   summary_.wall_s = elapsed();

@@ -1,29 +1,36 @@
 #pragma once
-// Shared bookkeeping of the iterative solvers: records each iteration (indicator, true error when a
-// reference is known, rank, sparse solves, wall time), and decides when to stop: converged,
-// iteration limit, stagnation, NaN/Inf (numerical issue) or the user's callback.
+// Shared bookkeeping of the iterative solvers: records each iteration (indicator, error estimate,
+// true error when a reference is known, rank, sparse solves, wall time), and decides when to stop:
+// converged (the error estimate of src/solver/error_estimate.hpp at most the tolerance), iteration
+// limit, stagnation, NaN/Inf (numerical issue) or the user's callback.
 #include <Eigen/Core>
 #include <chrono>
 #include <string>
 
+#include "src/solver/equilibrium_energy.hpp"
+#include "src/solver/error_estimate.hpp"
 #include "src/solver/error_reference.hpp"
 #include "src/solver/solve_summary.hpp"
 
 namespace stc {
 
 struct StoppingRule {
-  double tolerance = 1e-6;      ///< on the indicator
+  double tolerance = 1e-6;      ///< on the error estimate (the true error it estimates, docs/method.md §2)
   int max_iterations = 1000;
   int stagnation_window = 0;    ///< iterations without a 1% decrease of the best indicator (0: off)
+  int estimate_period = 1;      ///< iterations per period of the iteration (ErrorEstimator)
 };
 
 class IterationMonitor {
  public:
-  IterationMonitor(std::string solver, StoppingRule rule, const ErrorReference* reference = nullptr,
-                   IterationCallback callback = {});
+  /// `energy` normalises the error estimate; without it (unit tests of the bookkeeping) the
+  /// indicator stands in for the estimate.
+  IterationMonitor(std::string solver, StoppingRule rule, const EquilibriumEnergy* energy,
+                   const ErrorReference* reference = nullptr, IterationCallback callback = {});
 
-  /// Records one iteration; returns true when the solve must stop (the summary says why).
-  bool record(int relaxations, double indicator, const Eigen::MatrixXd& lambda, int rank, long sparse_solves);
+  /// Records one iteration whose equilibrated iterate is `s`; returns true when the solve must stop
+  /// (the summary says why).
+  bool record(int relaxations, double indicator, const InterfaceHistory& s, int rank, long sparse_solves);
   /// Final summary (termination, message, totals); call once at the end.
   SolveSummary finish();
   double elapsed() const;
@@ -33,6 +40,8 @@ class IterationMonitor {
 
   SolveSummary summary_;
   StoppingRule rule_;
+  const EquilibriumEnergy* energy_;
+  ErrorEstimator estimator_;
   const ErrorReference* reference_;
   IterationCallback callback_;
   std::chrono::steady_clock::time_point start_;

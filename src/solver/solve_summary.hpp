@@ -16,6 +16,9 @@ struct IterationRecord {
   int iteration = 0;
   int relaxations = 0;            ///< fine-level LATIN relaxations so far (global + local stage pairs)
   double indicator = 0.0;         ///< docs/method.md §2 η
+  /// Estimate of the true error without the reference (src/solver/error_estimate.hpp); +∞ until
+  /// the contraction rate is known. What the iterative solvers stop on.
+  double error_estimate = 0.0;
   std::optional<double> error;    ///< true energy error against the reference, when known
   int rank = 0;                   ///< coarse / PGD basis size (0 for plain LATIN)
   int sparse_solves = 0;          ///< right-hand sides solved with the sparse factor so far
@@ -30,6 +33,7 @@ struct SolveSummary {
   int iterations = 0;
   int relaxations = 0;
   double indicator = 0.0;
+  double error_estimate = 0.0;    ///< of the last iteration (0 for the exact incremental solver)
   std::optional<double> error;
   double wall_s = 0.0;
 

@@ -16,8 +16,8 @@ bool fitsProblem(const InterfaceHistory& history, const Problem& problem) {
          history.lambda.cols() == cols;
 }
 
-bool fitsProblem(const Eigen::MatrixXd& spatial_modes, const Problem& problem) {
-  return spatial_modes.rows() == problem.numFreeDofs();
+bool fitsProblem(const Eigen::MatrixXd& directions, const Problem& problem) {
+  return directions.rows() == 2 * problem.contact.size();
 }
 
 void requireFits(const InterfaceHistory& start, const Problem& problem) {
@@ -27,10 +27,10 @@ void requireFits(const InterfaceHistory& start, const Problem& problem) {
                               size(2 * problem.contact.size(), problem.numSteps()));
 }
 
-void requireFits(const Eigen::MatrixXd& spatial_modes, const Problem& problem) {
-  if (fitsProblem(spatial_modes, problem)) return;
-  throw std::invalid_argument("basis seed has " + std::to_string(spatial_modes.rows()) +
-                              " rows, the problem " + std::to_string(problem.numFreeDofs()) + " free dofs");
+void requireFits(const Eigen::MatrixXd& directions, const Problem& problem) {
+  if (fitsProblem(directions, problem)) return;
+  throw std::invalid_argument("basis seed has " + std::to_string(directions.rows()) + " rows, the problem's interface " +
+                              std::to_string(2 * problem.contact.size()));
 }
 
 }  // namespace stc

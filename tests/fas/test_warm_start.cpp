@@ -1,5 +1,5 @@
 // Warm starts through solveByName (src/solver/warm_start.hpp): a solve begun from a neighbouring
-// friction's solution (and, for the a priori bases, its spatial modes) reaches the incremental
+// friction's solution (and, for the a priori bases, its interface directions) reaches the incremental
 // solution of its own friction, in fewer relaxations than from zero; a start of the wrong size is
 // refused. Small seed scene (21 contact nodes, 21 instants), as the sweep's command-line test.
 #include <gtest/gtest.h>
@@ -46,7 +46,7 @@ stc::SolveResult solve(const std::string& solver, const Value& v, const stc::Sol
   inputs.reference = v.reference.get();
   if (previous) {
     inputs.start = &previous->interface;
-    if (previous->spatial_modes.cols() > 0) inputs.basis_seed = &previous->spatial_modes;
+    if (previous->interface_directions.cols() > 0) inputs.basis_seed = &previous->interface_directions;
   }
   return stc::fas::solveByName(solver, v.problem, v.scene.solver, inputs);
 }
@@ -58,11 +58,9 @@ const std::vector<std::string>& iterativeSolvers() {
 
 }  // namespace
 
-// At indicator tolerance 1e-6 the true error must be ~1e-5 or below. The indicator is a step size,
-// not a distance to the solution: it understates the true error by a factor that the friction
-// sweeps of docs/sweep.md measured, over every converged warm solve, up to 11 at these small
-// settings (latin; 10.8 the others); 2e-5 leaves a factor 1.8. (The full seed scene: up to 14.)
-constexpr double kAgreement = 2e-5;
+// The solvers stop on an estimate of the true error (src/solver/error_estimate.hpp): at tolerance
+// 1e-6 the true error must be at most 1e-6, warm start or not.
+constexpr double kAgreement = 1e-6;
 
 TEST(WarmStart, FromANeighbouringFrictionReachesTheIncrementalSolution) {
   for (const std::string& solver : iterativeSolvers()) {
@@ -87,10 +85,12 @@ TEST(WarmStart, NeedsFewerRelaxationsThanAColdStartForLatinAndFasApriori) {
   }
 }
 
-TEST(WarmStart, FromItsOwnSolutionStopsAtOnce) {
-  // The converged solution of the same problem is the iteration's fixed point (to the tolerance):
-  // the first relaxation already measures an indicator below it. Tolerance 1e-8 for the start, so
-  // that its own residual indicator is well below the 1e-6 asked of the restart.
+TEST(WarmStart, FromItsOwnSolutionStopsSoon) {
+  // The converged solution of the same problem is the iteration's fixed point (to the tolerance);
+  // the error estimate still needs a few periods to measure the contraction rate (one period: 1
+  // relaxation for LATIN, a FAS cycle's 2): its first estimate comes at relaxation 4p + 1 (window
+  // of 3 rates, src/solver/error_estimate.hpp). A restart stops within one period of it.
+  // Tolerance 1e-8 for the start, well below the 1e-6 asked of the restart.
   for (const std::string& solver : iterativeSolvers()) {
     const Value& v = value(0.15);
     stc::SolverSpec tight = v.scene.solver;
@@ -99,18 +99,21 @@ TEST(WarmStart, FromItsOwnSolutionStopsAtOnce) {
     ASSERT_TRUE(converged.summary.converged()) << solver;
     const stc::SolveResult restart = solve(solver, v, &converged);
     EXPECT_TRUE(restart.summary.converged()) << solver;
-    EXPECT_LE(restart.summary.relaxations, 1) << solver;
+    const int period = solver.rfind("fas", 0) == 0 ? 2 : 1;
+    EXPECT_LE(restart.summary.relaxations, 5 * period + 1) << solver;
   }
 }
 
-TEST(WarmStart, AprioriModesSeedTheNextBasis) {
+TEST(WarmStart, AprioriDirectionsSeedTheNextBasis) {
   for (const std::string solver : {"latin-pgd", "fas-apriori"}) {
     const stc::SolveResult previous = solve(solver, value(0.15));
-    ASSERT_GT(previous.spatial_modes.cols(), 0) << solver;
+    ASSERT_GT(previous.interface_directions.cols(), 0) << solver;
+    EXPECT_EQ(previous.interface_directions.rows(), 2 * value(0.15).problem.contact.size()) << solver;
+    EXPECT_GT(previous.spatial_modes.cols(), 0) << solver;
     EXPECT_EQ(previous.spatial_modes.rows(), value(0.15).problem.numFreeDofs()) << solver;
     const stc::SolveResult warm = solve(solver, value(0.3), &previous);
-    // The seeded modes stay (re-orthonormalised for the new operator): the basis does not shrink.
-    EXPECT_GE(warm.spatial_modes.cols(), previous.spatial_modes.cols()) << solver;
+    // The seeded directions stay (re-orthonormalised, their responses solved): no shrinking.
+    EXPECT_GE(warm.interface_directions.cols(), previous.interface_directions.cols()) << solver;
   }
   EXPECT_EQ(solve("latin", value(0.15)).spatial_modes.cols(), 0);
 }
@@ -118,7 +121,7 @@ TEST(WarmStart, AprioriModesSeedTheNextBasis) {
 TEST(WarmStart, AStartOfTheWrongSizeIsRefused) {
   const Value& v = value(0.15);
   const stc::InterfaceHistory wrong = stc::InterfaceHistory::zeros(v.problem.contact.size() + 1, v.problem.numSteps());
-  const Eigen::MatrixXd wrong_modes = Eigen::MatrixXd::Zero(v.problem.numFreeDofs() + 2, 3);
+  const Eigen::MatrixXd wrong_modes = Eigen::MatrixXd::Zero(2 * v.problem.contact.size() + 2, 3);
   for (const std::string& solver : iterativeSolvers()) {
     stc::fas::StrategyInputs inputs;
     inputs.start = &wrong;

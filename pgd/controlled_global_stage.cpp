@@ -1,0 +1,108 @@
+#include "pgd/controlled_global_stage.hpp"
+
+#include <Eigen/QR>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "src/core/input_error.hpp"
+#include "src/solver/warm_start.hpp"
+
+namespace stc::pgd {
+namespace {
+
+Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y) {
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(Y.rows(), Y.cols());
+}
+
+// Leading left singular directions of R (rows × m), at most `count`, enough that the rest of R's
+// Frobenius norm is at most `target`: randomized range finder with power iterations.
+Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double target, int count,
+                                  const ControlledStageOptions& o, unsigned seed) {
+  const int samples = std::min<int>({count + o.oversampling, static_cast<int>(R.cols()), static_cast<int>(R.rows())});
+  std::mt19937 rng(20131001u + seed);
+  std::normal_distribution<double> normal;
+  Eigen::MatrixXd omega(R.cols(), samples);
+  for (Eigen::Index j = 0; j < omega.size(); ++j) omega(j) = normal(rng);
+  Eigen::MatrixXd Q = orthonormalColumns(R * omega);
+  for (int it = 0; it < o.power_iterations; ++it) Q = orthonormalColumns(R * (R.transpose() * Q));
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Q.transpose() * R, Eigen::ComputeThinU);
+  const Eigen::VectorXd& sigma = svd.singularValues();
+  double rest = R.squaredNorm();
+  int keep = 0;
+  while (keep < std::min<int>(count, static_cast<int>(sigma.size())) && sigma[keep] > 0.0 &&
+         (keep == 0 || rest > target * target)) {
+    rest -= sigma[keep] * sigma[keep];
+    ++keep;
+  }
+  return Q * svd.matrixU().leftCols(keep);
+}
+
+}  // namespace
+
+void ControlledStageOptions::validate() const {
+  if (!(gap_share > 0.0 && gap_share < 1.0))
+    throw InputError("controlled global stage: gap_share = " + std::to_string(gap_share) + " must be in (0, 1)");
+  if (block < 1) throw InputError("controlled global stage: block = " + std::to_string(block) + " must be >= 1");
+  if (oversampling < 0)
+    throw InputError("controlled global stage: oversampling = " + std::to_string(oversampling) + " must be >= 0");
+  if (power_iterations < 0)
+    throw InputError("controlled global stage: power_iterations = " + std::to_string(power_iterations) +
+                     " must be >= 0");
+}
+
+ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledStageOptions options)
+    : problem_(problem),
+      options_(options),
+      matrix_(latin::searchDirectionOperator(problem)),
+      factor_(matrix_, "K + B^T k B"),
+      basis_(problem, factor_) {
+  options_.validate();
+}
+
+int ControlledGlobalStage::seed(const Eigen::MatrixXd& directions) {
+  requireFits(directions, problem_);
+  return basis_.append(directions);
+}
+
+void ControlledGlobalStage::enrich(Eigen::MatrixXd& r_scaled, double target) {
+  const Eigen::VectorXd& sqrt_k = basis_.sqrtK();
+  while (error_ > target && basis_.size() < basis_.maxSize()) {
+    const int room = std::min(options_.block, basis_.maxSize() - basis_.size());
+    const Eigen::MatrixXd found = leadingDirections(r_scaled, target, room, options_, passes_++);
+    const int before = basis_.size();
+    if (found.cols() == 0 || basis_.append(sqrt_k.asDiagonal() * found) == 0) break;
+    // New directions are k⁻¹-orthogonal to the old ones: their coordinates come from r alone.
+    const int added = basis_.size() - before;
+    const Eigen::MatrixXd scaled_new = basis_.invSqrtK().asDiagonal() * basis_.directions().rightCols(added);
+    const Eigen::MatrixXd c_new = scaled_new.transpose() * r_scaled;
+    c_.conservativeResize(basis_.size(), Eigen::NoChange);
+    c_.bottomRows(added) = c_new;
+    r_scaled.noalias() -= scaled_new * c_new;
+    error_ = r_scaled.norm();
+  }
+}
+
+void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s) {
+  const Eigen::VectorXd& k = problem_.contact.search_direction;
+  const Eigen::VectorXd& inv_sqrt_k = basis_.invSqrtK();
+  // Scaled right-hand sides w̃ = k^{-1/2} (λ̂ + k v̂) and their projection on the directions.
+  const Eigen::MatrixXd w_scaled = inv_sqrt_k.asDiagonal() * (hat.lambda + k.asDiagonal() * hat.v);
+  const Eigen::MatrixXd scaled = inv_sqrt_k.asDiagonal() * basis_.directions();
+  c_.noalias() = scaled.transpose() * w_scaled;
+  Eigen::MatrixXd r_scaled = w_scaled;
+  r_scaled.noalias() -= scaled * c_;
+  error_ = r_scaled.norm();
+  // Before any gap is known (the first solve, or a warm start) the bound is a share of w itself.
+  const double target = target_ >= 0.0 ? target_ : options_.gap_share * w_scaled.norm();
+  enrich(r_scaled, target);
+  s.v = basis_.freeResponse();
+  s.v.noalias() += basis_.traces() * c_;
+  // λ = Z c − k v with Z c = k^{1/2} (w̃ − r̃).
+  s.lambda = basis_.sqrtK().asDiagonal() * (w_scaled - r_scaled);
+  s.lambda -= k.asDiagonal() * s.v;
+}
+
+}  // namespace stc::pgd

@@ -1,0 +1,71 @@
+#pragma once
+// LATIN's global stage in separated form, with its error controlled (docs/method.md §5,
+// "Separated global stage"). With the response basis (pgd/response_basis.hpp) and w = λ̂ + k v̂:
+//   c = Zᵀ k⁻¹ w,   r = w − Z c              (projection on the known directions; r its error)
+//   v = V_F G + T c,   λ = Z c − k v          (the exact global stage of the projected w)
+// so s = (v, λ) is exactly in equilibrium (K_ff u = F g + Bᵀλ with u = U_F g + X c) and departs from
+// the exact global stage of ŝ by δv = −D r, δλ = −(I − k D) r (D = B A⁻¹ Bᵀ). As 0 ≤ k^½ D k^½ ≤ I,
+//   ‖r‖_{k⁻¹} / √2 ≤ ‖δs‖ ≤ ‖r‖_{k⁻¹}     (indicator norm, docs/method.md §2).
+// Control: before s is formed, the directions are enriched with the leading singular directions
+// of r (randomized range finder, Halko–Martinsson–Tropp 2011 alg. 4.4) until ‖r‖_{k⁻¹} ≤ γ ‖s − ŝ‖
+// of the previous iteration (observeGap). A perturbation ε_n ≤ γ ‖s_{n−1} − ŝ_{n−1}‖ keeps a
+// contraction of rate ρ a contraction of rate about ρ + γ (the gap is of the size of the distance to
+// the fixed point), and vanishes with the gap: the iteration converges to the fixed point of the
+// exact global stage. Each solve costs three products with p columns on 2n_C × m interface fields,
+// plus one sparse solve per new direction.
+#include "latin/global_stage.hpp"
+#include "latin/linear_stage.hpp"
+#include "pgd/response_basis.hpp"
+
+namespace stc::pgd {
+
+struct ControlledStageOptions {
+  /// γ: the projection error is kept below γ times the previous iteration's gap ‖s − ŝ‖. Must be
+  /// small against 1 − ρ (LATIN's rate ρ ≈ 0.9 on the seed scene); measured: docs/floor.md.
+  double gap_share = 0.05;
+  int block = 8;            ///< directions added per enrichment pass at most
+  int oversampling = 4;     ///< extra random samples of the range finder
+  int power_iterations = 1; ///< subspace iterations of the range finder
+
+  void validate() const;    ///< throws InputError naming the field
+};
+
+class ControlledGlobalStage : public latin::LinearStage {
+ public:
+  /// Factorises A = K_ff + Bᵀ k B (k = problem.contact.search_direction) and computes the load
+  /// responses.
+  ControlledGlobalStage(const Problem& problem, ControlledStageOptions options);
+
+  void solve(const InterfaceHistory& hat, InterfaceHistory& s) override;
+  void observeGap(double gap) override { target_ = options_.gap_share * gap; }
+  long sparseSolves() const override { return basis_.sparseSolves(); }
+  int rank() const override { return basis_.size(); }
+  const SpdFactor& factor() const override { return factor_; }
+
+  /// Starts the directions from `directions` (2n_C × p, e.g. a neighbouring problem's: a warm
+  /// start), k⁻¹-orthonormalised in order, dependent ones dropped. Returns the number kept.
+  int seed(const Eigen::MatrixXd& directions);
+
+  const ResponseBasis& basis() const { return basis_; }
+  const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
+  /// c of the last solve (p × m): the displacement history is u_k = U_F g_k + X c_k.
+  const Eigen::MatrixXd& coordinates() const { return c_; }
+  /// ‖r‖_{k⁻¹} of the last solve, and the bound it was held to.
+  double projectionError() const { return error_; }
+
+ private:
+  /// Adds directions from the scaled residual r̃ = k^{-1/2} r until ‖r̃‖ ≤ target; updates c and r̃.
+  void enrich(Eigen::MatrixXd& r_scaled, double target);
+
+  const Problem& problem_;
+  ControlledStageOptions options_;
+  Eigen::SparseMatrix<double> matrix_;
+  SpdFactor factor_;
+  ResponseBasis basis_;
+  Eigen::MatrixXd c_;
+  double target_ = -1.0;  ///< < 0: no gap observed yet
+  double error_ = 0.0;
+  unsigned passes_ = 0;   ///< enrichment passes so far (seeds the range finder: deterministic)
+};
+
+}  // namespace stc::pgd

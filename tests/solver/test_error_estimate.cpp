@@ -1,0 +1,90 @@
+// The error estimate of src/solver/error_estimate.hpp on sequences whose error is known exactly, and
+// the energy of src/solver/equilibrium_energy.hpp against the energy of the rebuilt full field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "latin/global_stage.hpp"
+#include "latin/local_stage.hpp"
+#include "src/solver/condensed_interface.hpp"
+#include "src/solver/equilibrium_energy.hpp"
+#include "src/solver/error_estimate.hpp"
+#include "src/solver/error_reference.hpp"
+#include "src/solver/incremental_solver.hpp"
+#include "solver/seed_scene.hpp"
+
+namespace {
+
+// An "equilibrated" iterate whose energy products are Euclidean ones: v = λ = x (Σ δv·δλ = ‖δx‖²).
+stc::InterfaceHistory iterate(const Eigen::VectorXd& x) {
+  Eigen::MatrixXd m = x;
+  return {m, m};
+}
+
+// x_n = x* + e_n with e_n = ρ^t (cos tθ a + sin tθ b), t = n / period, a ⊥ b unit vectors: a
+// dominant eigenvalue ρ e^{iθ} per period. Returns estimate / true error at the last of `count`
+// records (E = 1).
+double estimateOverError(double rho, double theta, int count, int period = 1) {
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(4), b = Eigen::VectorXd::Zero(4), star(4);
+  a[0] = 1.0;
+  b[1] = 1.0;
+  star << 0.3, -0.2, 0.7, 1.1;
+  stc::ErrorEstimator estimator(period);
+  double ratio = NAN;
+  for (int n = 0; n < count; ++n) {
+    const double t = static_cast<double>(n) / period;  // the eigenvalue acts once per period
+    const Eigen::VectorXd e = std::pow(rho, t) * (std::cos(t * theta) * a + std::sin(t * theta) * b);
+    const double estimate = estimator.record(iterate(star + e), 1.0);
+    ratio = estimate / e.norm();
+  }
+  return ratio;
+}
+
+}  // namespace
+
+// The one-mode model is exact for these sequences, so the estimate is the safety factor (2) times
+// the true error, whatever the sign or rotation of the dominant eigenvalue.
+TEST(ErrorEstimator, IsTwiceTheErrorOfAMonotoneContraction) {
+  EXPECT_NEAR(estimateOverError(0.9, 0.0, 30), 2.0, 1e-9);
+}
+
+TEST(ErrorEstimator, IsTwiceTheErrorOfAnAlternatingContraction) {
+  EXPECT_NEAR(estimateOverError(0.9, M_PI, 30), 2.0, 1e-9);
+}
+
+TEST(ErrorEstimator, IsTwiceTheErrorOfARotatingContraction) {
+  EXPECT_NEAR(estimateOverError(0.7, 2.0, 30), 2.0, 1e-9);
+}
+
+TEST(ErrorEstimator, ComparesIteratesOnePeriodApart) {
+  EXPECT_NEAR(estimateOverError(0.5, 0.4, 30, 2), 2.0, 1e-9);
+}
+
+TEST(ErrorEstimator, IsInfiniteUntilTheRateIsKnownAndWhenItIsNotAContraction) {
+  stc::ErrorEstimator estimator;
+  Eigen::VectorXd x(2);
+  x << 1.0, 2.0;
+  EXPECT_TRUE(std::isinf(estimator.record(iterate(x), 1.0)));
+  EXPECT_TRUE(std::isinf(estimator.record(iterate(2 * x), 1.0)));
+  EXPECT_TRUE(std::isinf(estimator.record(iterate(4 * x), 1.0)));  // rate 2: diverging
+  EXPECT_EQ(estimator.record(iterate(4 * x), 1.0), 0.0);             // standing still
+}
+
+// E of docs/method.md §2 for equilibrated iterates, from the interface alone, against the energy of
+// the full displacement rebuilt with K_ff⁻¹: the incremental solution, and a LATIN iterate.
+TEST(EquilibriumEnergy, EqualsTheEnergyOfTheRebuiltFullField) {
+  const stc::Problem problem = stc::buildProblem(stc::test::seedScene(31, 41));
+  const stc::SpdFactor K(problem.stiffness_free, "K");
+  stc::latin::GlobalStage global(problem);
+  const stc::EquilibriumEnergy energy(problem, global.factor());
+  const stc::SolveResult reference = stc::solveIncremental(problem);
+  stc::InterfaceHistory hat, s;
+  stc::latin::localStage(problem.contact, reference.interface, hat);
+  hat.lambda *= 0.7;  // an iterate away from the solution
+  global.solve(hat, s);
+  for (const stc::InterfaceHistory* iterate : {&reference.interface, static_cast<const stc::InterfaceHistory*>(&s)}) {
+    const double expected =
+        stc::spaceTimeEnergy(problem, stc::displacementsFromForces(problem, K, iterate->lambda));
+    EXPECT_NEAR(energy(*iterate), expected, 1e-9 * expected);
+  }
+}
