@@ -116,12 +116,11 @@ void CoarseStep(benchmark::State& state) {
   const stc::ThreadCountScope threads(static_cast<int>(state.range(1)));
   const stc::fas::FasOptions options;  // i_C = 15, start (a)
   stc::InterfaceHistory hat;
-  Eigen::MatrixXd xi;
   for (auto _ : state) {
     state.PauseTiming();
     stc::latin::localStage(z.problem.contact, z.s, hat);  // the coarse step's input s̃
     state.ResumeTiming();
-    stc::fas::coarseStep(z.problem.contact, z.space, options, z.s, hat, xi);
+    stc::fas::coarseStep(z.problem.contact, z.space, options, z.s, hat);
     benchmark::ClobberMemory();
   }
   label(state, z, z.space.rank());

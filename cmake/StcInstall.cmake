@@ -14,5 +14,5 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/stcontactConfigVersion.cm
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/stcontactConfig.cmake
               ${PROJECT_BINARY_DIR}/stcontactConfigVersion.cmake
-              cmake/FindCHOLMOD.cmake cmake/FindARPACK.cmake
+              cmake/FindCHOLMOD.cmake cmake/FindARPACK.cmake cmake/FindOpenBLAS.cmake
         DESTINATION ${stc_cmake_dir})

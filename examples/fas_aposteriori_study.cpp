@@ -250,7 +250,7 @@ struct Cost {
 Cost measureCost(const Study& st, stc::latin::GlobalStage& global, int repeats) {
   const auto& contact = st.problem.contact;
   stc::InterfaceHistory s = stc::InterfaceHistory::zeros(contact.size(), st.problem.numSteps()), hat, s2, hat2;
-  Eigen::MatrixXd xi;
+
   stc::latin::localStage(contact, s, hat);
   global.keepDisplacements(true);
   for (int i = 0; i < 10; ++i) {  // a realistic iterate: ten LATIN iterations in
@@ -286,7 +286,7 @@ Cost measureCost(const Study& st, stc::latin::GlobalStage& global, int repeats) 
     for (std::size_t j = 0; j < c.rows.size(); ++j) {
       renew[j].push_back(seconds([&] { spaces[j] = providers[j]->coarseSpace(s); }));
       hat2 = hat;  // coarseStep overwrites its local-stage iterate: start each repeat from the same one
-      coarse[j].push_back(seconds([&] { stc::fas::coarseStep(contact, spaces[j], o, s, hat2, xi); }));
+      coarse[j].push_back(seconds([&] { stc::fas::coarseStep(contact, spaces[j], o, s, hat2); }));
       rr[j].push_back(renew[j].back() / relax.back());
       cr[j].push_back(coarse[j].back() / relax.back());
     }

@@ -6,15 +6,14 @@
 namespace stc::fas {
 
 void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const FasOptions& options,
-                const InterfaceHistory& s, InterfaceHistory& hat, Eigen::MatrixXd& xi) {
-  const Eigen::VectorXd& k = contact.search_direction;
+                const InterfaceHistory& s, InterfaceHistory& hat) {
+  const Eigen::ArrayXd k = contact.search_direction.array();
   const Eigen::MatrixXd& BY = space.interface();
-  const Eigen::MatrixXd lambda_tilde = hat.lambda;          // λ̃: forces of s̃ (local stage)
-  const Eigen::MatrixXd residual = lambda_tilde - s.lambda;  // res̃ = Bᵀ(λ̃ − λ)
-  Eigen::MatrixXd dv_hat = Eigen::MatrixXd::Zero(s.v.rows(), s.v.cols());
-  if (options.start == CoarseStart::InterfaceMismatch) dv_hat = hat.v - s.v;
-  Eigen::MatrixXd dl_hat = Eigen::MatrixXd::Zero(s.v.rows(), s.v.cols());
-  InterfaceHistory trial;
+  const Eigen::Index rows = s.v.rows(), cols = s.v.cols();
+  const Eigen::MatrixXd W_s = s.lambda + k.matrix().asDiagonal() * s.v;  // the fine stage's w
+  if (options.start == CoarseStart::ZeroCorrection) hat.v = s.v;       // start (a): ŝ = (Bũ, λ̃)
+  Eigen::MatrixXd z(rows, cols), xi;
+  InterfaceHistory trial{Eigen::MatrixXd(rows, cols), Eigen::MatrixXd(rows, cols)};
   // One thread: each coarse iteration is dense products of r × 2n_C by 2n_C × m on this thread
   // around a short local stage (~50 µs on the seed). On 2 threads every one of those local stages
   // had to wake the pool's worker, asleep during the products, and hand over: that cost more than
@@ -22,14 +21,17 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
   // kept awake longer, 8.9 ms; serial here: 7.9 ms; docs/threads.md).
   const ThreadCountScope serial(1);
   for (int it = 0; it < options.coarse_iterations; ++it) {
-    xi.noalias() = BY.transpose() * (residual + dl_hat + k.asDiagonal() * dv_hat);  // seed eq. (8), R A P = I
-    trial.v.noalias() = BY * xi;                                                 // BΔu, seed eq. (7)
-    trial.lambda = dl_hat - k.asDiagonal() * (trial.v - dv_hat);                 // Δλ, seed eq. (5)
-    trial.v += s.v;
-    trial.lambda += lambda_tilde;
+    for (Eigen::Index c = 0; c < cols; ++c)
+      for (Eigen::Index r = 0; r < rows; ++r) z(r, c) = hat.lambda(r, c) + k[r] * hat.v(r, c) - W_s(r, c);
+    xi.noalias() = BY.transpose() * z;   // seed eq. (8) with R A P = I
+    trial.v.noalias() = BY * xi;         // B Δu, seed eq. (7)
+    for (Eigen::Index c = 0; c < cols; ++c)
+      for (Eigen::Index r = 0; r < rows; ++r) {
+        const double v = s.v(r, c) + trial.v(r, c);
+        trial.v(r, c) = v;
+        trial.lambda(r, c) = z(r, c) + W_s(r, c) - k[r] * v;  // λ = W(ŝ) − k v, seed eq. (5)
+      }
     latin::localStage(contact, trial, hat);
-    dv_hat = hat.v - s.v;
-    dl_hat = hat.lambda - lambda_tilde;
   }
 }
 

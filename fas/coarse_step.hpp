@@ -1,11 +1,13 @@
 #pragma once
-// The coarse step of the two-level FAS (seed §4.1, eqs. (3)–(8); docs/method.md §4): i_C iterations of
-//   1. coarse linear stage: (R A P) Ξ = R [res̃ + Bᵀ(Δλ̂ + k Δv̂)], Δu = P Ξ, Δλ = Δλ̂ − k (BΔu − Δv̂);
-//   2. fine local stage on (Bũ + BΔu, λ̃ + Δλ); (Δv̂, Δλ̂) = its result minus (Bũ, λ̃).
-// After a global stage K ũ = f + Bᵀλ, so res̃ = f + Bᵀλ̃ − Kũ = Bᵀ(λ̃ − λ) lives on the interface
-// and, with Y A-orthonormal (R A P = I), each iteration is two products with B Y (2n_C × r).
-#include <Eigen/Core>
-
+// The coarse step of the two-level FAS (seed §4.1, eqs. (3)–(8); docs/method.md §4): i_C iterations
+// of LATIN whose global stage is restricted to the coarse space. With s = (Bũ, λ) the last global
+// stage's iterate, W(ŝ) = λ̂ + k v̂ and W_s = λ + k Bũ its right-hand side, eqs. (5), (7), (8) with
+// R A P = I (Y A-orthonormal) and res̃ = Bᵀ(λ̃ − λ) read
+//   1. coarse linear stage: ξ = (BY)ᵀ (W(ŝ) − W_s),  v = Bũ + BY ξ,  λ = W(ŝ) − k v;
+//   2. fine local stage: ŝ ← its result (in Γ).
+// (The seed's increments Δv̂ = v̂ − Bũ, Δλ̂ = λ̂ − λ̃ give res̃ + Δλ̂ + kΔv̂ = W(ŝ) − W_s.) Start (a)
+// takes ŝ = (Bũ, λ̃), start (b) the local stage's own ŝ = (v̂, λ̃). Each iteration is two products
+// with B Y (2n_C × r), two passes over the interface fields and a local stage.
 #include "fas/coarse_space.hpp"
 #include "fas/fas_options.hpp"
 #include "src/contact/contact_interface.hpp"
@@ -14,9 +16,8 @@
 namespace stc::fas {
 
 /// `s` is the last global-stage iterate (v = Bũ, λ), `hat` the local stage that followed it
-/// (v̂, λ̃ = λ̂); on return `hat` holds the coarse-corrected local-stage iterate (in Γ) and
-/// `xi` (r × m) the coarse coordinates of the displacement correction, Δu = Y ξ.
+/// (v̂, λ̃); on return `hat` holds the coarse-corrected local-stage iterate (in Γ).
 void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const FasOptions& options,
-                const InterfaceHistory& s, InterfaceHistory& hat, Eigen::MatrixXd& xi);
+                const InterfaceHistory& s, InterfaceHistory& hat);
 
 }  // namespace stc::fas

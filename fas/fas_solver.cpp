@@ -108,7 +108,6 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
   FineLevel fine(problem, global, start, monitor);
   CoarseGuard guard(options);
   int rank = 0;
-  Eigen::MatrixXd xi;
   const auto relax = [&] {
     const bool stop = fine.relax(rank);
     if (!stop) guard.judge(fine);
@@ -122,7 +121,7 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
       rank = space.rank();
       if (rank > 0) {
         guard.arm(fine);
-        coarseStep(problem.contact, space, options, fine.s, fine.hat, xi);
+        coarseStep(problem.contact, space, options, fine.s, fine.hat);
       }
     }
     for (int j = 0; j < options.post_relaxations && !stop; ++j) stop = relax();

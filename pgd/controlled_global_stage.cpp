@@ -76,7 +76,7 @@ void ControlledGlobalStage::enrich(Eigen::MatrixXd& r_scaled, double target) {
     if (found.cols() == 0 || basis_.append(sqrt_k.asDiagonal() * found) == 0) break;
     // New directions are k⁻¹-orthogonal to the old ones: their coordinates come from r alone.
     const int added = basis_.size() - before;
-    const Eigen::MatrixXd scaled_new = basis_.invSqrtK().asDiagonal() * basis_.directions().rightCols(added);
+    const auto scaled_new = basis_.scaledDirections().rightCols(added);
     const Eigen::MatrixXd c_new = scaled_new.transpose() * r_scaled;
     c_.conservativeResize(basis_.size(), Eigen::NoChange);
     c_.bottomRows(added) = c_new;
@@ -90,7 +90,7 @@ void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory&
   const Eigen::VectorXd& inv_sqrt_k = basis_.invSqrtK();
   // Scaled right-hand sides w̃ = k^{-1/2} (λ̂ + k v̂) and their projection on the directions.
   const Eigen::MatrixXd w_scaled = inv_sqrt_k.asDiagonal() * (hat.lambda + k.asDiagonal() * hat.v);
-  const Eigen::MatrixXd scaled = inv_sqrt_k.asDiagonal() * basis_.directions();
+  const Eigen::MatrixXd& scaled = basis_.scaledDirections();
   c_.noalias() = scaled.transpose() * w_scaled;
   Eigen::MatrixXd r_scaled = w_scaled;
   r_scaled.noalias() -= scaled * c_;

@@ -11,6 +11,7 @@ ResponseBasis::ResponseBasis(const Problem& problem, const SpdFactor& factor)
   inv_sqrt_k_ = sqrt_k_.cwiseInverse();
   const int rows = static_cast<int>(k.size());
   Z_.resize(rows, 0);
+  Zs_.resize(rows, 0);
   T_.resize(rows, 0);
   X_.resize(problem.numFreeDofs(), 0);
   const SeparatedLoads loads = separatedLoads(problem);
@@ -24,7 +25,7 @@ ResponseBasis::ResponseBasis(const Problem& problem, const SpdFactor& factor)
 
 int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {
   // Work with scaled directions ẑ = k^{-1/2} z, orthonormal in the Euclidean product.
-  Eigen::MatrixXd scaled = inv_sqrt_k_.asDiagonal() * Z_;
+  Eigen::MatrixXd scaled = Zs_;
   Eigen::MatrixXd kept(Z_.rows(), 0);
   for (Eigen::Index j = 0; j < candidates.cols() && scaled.cols() < Z_.rows(); ++j) {
     Eigen::VectorXd y = inv_sqrt_k_.asDiagonal() * candidates.col(j);
@@ -45,6 +46,7 @@ int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {
   sparse_solves_ += added;
   Z_.conservativeResize(Eigen::NoChange, p + added);
   Z_.rightCols(added) = kept;
+  Zs_ = std::move(scaled);
   X_.conservativeResize(Eigen::NoChange, p + added);
   X_.rightCols(added) = X;
   T_.conservativeResize(Eigen::NoChange, p + added);

@@ -22,6 +22,7 @@ class ResponseBasis {
   int size() const { return static_cast<int>(Z_.cols()); }       ///< p
   int maxSize() const { return static_cast<int>(Z_.rows()); }    ///< 2n_C: Z then spans every w
   const Eigen::MatrixXd& directions() const { return Z_; }       ///< Z, 2n_C × p
+  const Eigen::MatrixXd& scaledDirections() const { return Zs_; } ///< k^{-1/2} Z: orthonormal columns
   const Eigen::MatrixXd& responses() const { return X_; }        ///< X = A⁻¹ Bᵀ Z, n_free × p
   const Eigen::MatrixXd& traces() const { return T_; }           ///< T = B X, 2n_C × p
   const Eigen::MatrixXd& loadResponses() const { return UF_; }   ///< U_F = A⁻¹ F, n_free × q
@@ -44,7 +45,7 @@ class ResponseBasis {
   const Problem& problem_;
   const SpdFactor& factor_;
   Eigen::VectorXd sqrt_k_, inv_sqrt_k_;
-  Eigen::MatrixXd Z_, X_, T_, UF_, VF_, UFtF_, G_, v0_;
+  Eigen::MatrixXd Z_, Zs_, X_, T_, UF_, VF_, UFtF_, G_, v0_;
   long sparse_solves_ = 0;
 };
 

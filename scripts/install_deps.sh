@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs every build, test and plotting dependency from Debian 12's archive (run as root).
-# OpenBLAS (serial) replaces the reference BLAS behind CHOLMOD's supernodal solves: ~1.6x faster
-# LATIN iterations on the seed scene, and no threads of its own to make timings noisy.
+# OpenBLAS (serial, with its headers and link library) serves Eigen's dense products (cmake/
+# FindOpenBLAS.cmake: EIGEN_USE_BLAS) and replaces the reference BLAS behind CHOLMOD and ARPACK;
+# serial, so that it starts no threads of its own to make timings noisy.
 # clang-14 + libclang-rt-14-dev (libFuzzer, clang's sanitizer runtimes) build the fuzz targets
 # (scripts/fuzz.sh); llvm-14's llvm-symbolizer puts file:line into sanitizer reports.
 set -euo pipefail
@@ -9,7 +10,7 @@ export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends \
   g++ cmake make pkg-config \
-  libeigen3-dev libsuitesparse-dev libarpack2-dev libgsl-dev libopenblas0-serial \
+  libeigen3-dev libsuitesparse-dev libarpack2-dev libgsl-dev libopenblas-serial-dev \
   libtomlplusplus-dev libcli11-dev libgtest-dev libbenchmark-dev \
   gnuplot-nox clang-14 libclang-rt-14-dev llvm-14 >/dev/null
 echo "dependencies installed"
