@@ -1,5 +1,5 @@
 // Description
-//   A posteriori vs a priori coarse bases (design card; docs/method.md §4–5; issue 6). On one scene,
+//   A posteriori vs a priori coarse bases (docs/method.md §4–5; report: docs/compare_bases.md). On one scene,
 //   runs `latin`, `latin-pgd`, `fas-aposteriori`, `fas-apriori` with the true error of every
 //   relaxation, and `incremental` as the reference point; times each strategy (median of --repeats
 //   runs without the error evaluation); counts the a posteriori SVD (and the solve it needs) apart;

@@ -1,5 +1,5 @@
 #pragma once
-// The a priori coarse space of `fas-apriori` (docs/method.md §5; design card): PGD spatial modes built
+// The a priori coarse space of `fas-apriori` (docs/method.md §5): PGD spatial modes built
 // during the iterations, plus residual vectors. Each cycle, the fine relaxation's displacement
 // history ũ (n_free × m: the exact global stage, ũ_k = A⁻¹ r_k with r_k = f_k + Bᵀ(λ_k + k v_k)) is
 // compared with the modes found so far; greedy rank-one enrichment (pgd/rank_one_enrichment.hpp,

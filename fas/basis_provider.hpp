@@ -1,7 +1,7 @@
 #pragma once
-// Where the FAS coarse space comes from, cycle after cycle. A posteriori (issue 5): SVD modes of a
+// Where the FAS coarse space comes from, cycle after cycle. A posteriori (docs/method.md §4): SVD modes of a
 // converged solution, fixed, plus residual vectors renewed every cycle (seed §4.3). A priori
-// (issue 6): PGD modes built during the iterations, plus residual vectors.
+// (docs/method.md §5): PGD modes built during the iterations, plus residual vectors.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 

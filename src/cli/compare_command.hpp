@@ -1,5 +1,5 @@
 #pragma once
-// stcontact compare SCENE: a work-precision comparison of solution strategies (issue 7, docs/compare.md).
+// stcontact compare SCENE: a work-precision comparison of solution strategies (docs/compare.md).
 #include <optional>
 #include <string>
 #include <vector>

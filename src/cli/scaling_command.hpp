@@ -1,7 +1,6 @@
 #pragma once
 // stcontact scaling SCENE: the comparison of strategies over a mesh series and a time series, with
-// growth exponents, crossover against the incremental solver and memory (issue 7 items 2-3,
-// docs/scaling.md).
+// growth exponents, crossover against the incremental solver and memory (docs/scaling.md).
 #include <optional>
 #include <string>
 #include <vector>

@@ -30,7 +30,7 @@ namespace {
 
 constexpr int kFigureSingularValues = 50;  // seed Fig. 3a shows 50
 constexpr int kFigureModes = 6;            // seed Figs. 2 and 3b show 6
-constexpr int kComparedValues = 10;        // the check: the leading 10 σ, ARPACK vs dense
+constexpr int kComparedValues = 10;        // the check of docs/svd_seed.md: the leading 10 σ, ARPACK vs dense
 constexpr int kMaxDenseCheck = 2000;       // m above which the O(m³) dense check is skipped
 constexpr double kEnergyLevels[] = {0.99, 0.999, 0.9999};
 constexpr const char* kEnergyLabels[] = {"99%", "99.9%", "99.99%"};

@@ -46,7 +46,7 @@ set_tests_properties(cli.solve_writes_every_output PROPERTIES DEPENDS cli.solve_
 # A posteriori space-time SVD (docs/method.md §3): prints the modes for 99%, 99.9%, 99.99% of the energy.
 stc_cli_test(svd_small 0 "99.9" svd ${seed} ${small} --out ${out}/svd)
 
-# Bad input through `solve` (issue 8): exit 1, one "error:" line naming the key, file or entity and
+# Bad input through `solve`: exit 1, one "error:" line naming the key, file or entity and
 # the rule, and no output folder created: the refusal comes before anything is written.
 set(refused ${CMAKE_CURRENT_BINARY_DIR}/refused)
 function(stc_cli_refused name pattern scene)

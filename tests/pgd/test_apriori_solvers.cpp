@@ -1,4 +1,4 @@
-// `latin-pgd` and `fas-apriori` against the incremental solver (issue 6), on a small seed scene.
+// `latin-pgd` and `fas-apriori` against the incremental solver (docs/method.md §5), on a small seed scene.
 #include <gtest/gtest.h>
 
 #include "fas/apriori_basis.hpp"
