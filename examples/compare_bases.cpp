@@ -31,13 +31,13 @@
 #include "fas/aposteriori_basis.hpp"
 #include "fas/apriori_basis.hpp"
 #include "fas/fas_solver.hpp"
-#include "fas/solve_by_name.hpp"
 #include "pgd/basis_verification.hpp"
 #include "pgd/displacement_history.hpp"
 #include "src/core/input_error.hpp"
 #include "src/scene/scene_reader.hpp"
 #include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace fs = std::filesystem;
 
@@ -103,15 +103,15 @@ struct Run {
 };
 
 Run runStrategy(const Setup& st, const std::string& name, int repeats) {
-  stc::fas::StrategyInputs with_error;
+  stc::StrategyInputs with_error;
   with_error.reference = st.reference.get();
   with_error.converged_lambda = &st.incremental.interface.lambda;
-  Run run{name, stc::fas::solveByName(name, st.problem, st.scene.solver, with_error).summary, 0.0};
-  stc::fas::StrategyInputs timed;
+  Run run{name, stc::solveByName(name, st.problem, st.scene.solver, with_error).summary, 0.0};
+  stc::StrategyInputs timed;
   timed.converged_lambda = &st.incremental.interface.lambda;
   std::vector<double> times;
   for (int i = 0; i < repeats; ++i)
-    times.push_back(stc::fas::solveByName(name, st.problem, st.scene.solver, timed).summary.wall_s);
+    times.push_back(stc::solveByName(name, st.problem, st.scene.solver, timed).summary.wall_s);
   run.median_s = median(times);
   return run;
 }
@@ -146,8 +146,8 @@ struct Verification {
 // solution, in the K_ff energy product.
 Verification verify(const Setup& st) {
   stc::latin::GlobalStage global(st.problem);
-  stc::fas::AprioriBasisProvider provider(st.problem, global.matrix(), stc::fas::aprioriOptions(st.scene.solver));
-  stc::fas::solveFas(st.problem, global, provider, stc::fas::fasOptions(st.scene.solver), "fas-apriori");
+  stc::fas::AprioriBasisProvider provider(st.problem, global.matrix(), stc::aprioriOptions(st.scene.solver));
+  stc::fas::solveFas(st.problem, global, provider, stc::fasOptions(st.scene.solver), "fas-apriori");
   const Eigen::MatrixXd& apriori = provider.modes().modes();
   const Eigen::MatrixXd U = stc::displacementsFromForces(st.problem, *st.K, st.incremental.interface.lambda);
   const Eigen::MatrixXd svd = stc::fas::aposterioriModes(st.problem, *st.K, st.incremental.interface.lambda, 20);

@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "fas/solve_by_name.hpp"
 #include "report/csv_table.hpp"
 #include "src/report/comparison.hpp"
 #include "src/report/number_format.hpp"
 #include "src/report/work_precision.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace stc {
 namespace {
@@ -105,18 +105,18 @@ TEST_F(CompareCommand, SummaryCsvHasOneColumnPerTargetAndRatio) {
 }
 
 TEST_F(CompareCommand, EveryAvailableStrategyHasASummaryRowAndBothRepeats) {
-  for (const std::string& solver : fas::availableSolvers()) {
+  for (const std::string& solver : availableSolvers()) {
     ASSERT_NE(summaryRow(solver), nullptr) << solver;
     EXPECT_EQ(summaryRow(solver)->at("repeats"), "2") << solver;
     const auto runs = runsOf(solver);
     ASSERT_EQ(runs.size(), 2u) << solver;
     EXPECT_FALSE(runs[0].points.empty()) << solver;
   }
-  EXPECT_EQ(summary_.rows.size(), fas::availableSolvers().size());
+  EXPECT_EQ(summary_.rows.size(), availableSolvers().size());
 }
 
 TEST_F(CompareCommand, SummaryTimesAreMediansOverRepeatsOfTheFirstReach) {
-  for (const std::string& solver : fas::availableSolvers()) {
+  for (const std::string& solver : availableSolvers()) {
     const auto* row = summaryRow(solver);
     ASSERT_NE(row, nullptr) << solver;
     const auto runs = runsOf(solver);
@@ -134,7 +134,7 @@ TEST_F(CompareCommand, SummaryTimesAreMediansOverRepeatsOfTheFirstReach) {
 }
 
 TEST_F(CompareCommand, ErrorsOfTimedRunsEndAtTheReportedFinalError) {
-  for (const std::string& solver : fas::availableSolvers()) {
+  for (const std::string& solver : availableSolvers()) {
     const auto final_error = number(summaryRow(solver)->at("final_error"));
     ASSERT_TRUE(final_error.has_value()) << solver;
     for (const TimedRun& run : runsOf(solver)) {

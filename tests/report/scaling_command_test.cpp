@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "fas/solve_by_name.hpp"
 #include "report/csv_table.hpp"
 #include "src/report/growth_fit.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace stc {
 namespace {
@@ -75,7 +75,7 @@ TEST_F(ScalingCommand, ExitsZeroAndWritesTheReportAndOneComparisonPerSize) {
 }
 
 TEST_F(ScalingCommand, HasOneRowPerSeriesSizeAndStrategy) {
-  const std::size_t solvers = fas::availableSolvers().size();
+  const std::size_t solvers = availableSolvers().size();
   EXPECT_EQ(rows_.rows.size(), 4 * solvers);
   for (const char* column : {"series", "arc_nodes", "dofs", "contact_nodes", "steps", "solver", "status",
                              "time_to_target_s", "relaxations_to_target", "sparse_solves_to_target", "peak_rss_mb"})
@@ -123,7 +123,7 @@ std::vector<std::string> cellsOf(const std::string& line) {
 }
 
 TEST_F(ScalingCommand, ReportsTheFittedExponentOfEveryStrategyThatReachedTwoSizes) {
-  for (const std::string& solver : fas::availableSolvers()) {
+  for (const std::string& solver : availableSolvers()) {
     const auto at = summary_.find("| " + solver + " |", summary_.find("## Growth exponents"));
     ASSERT_NE(at, std::string::npos) << solver;
     const auto cells = cellsOf(summary_.substr(at, summary_.find('\n', at) - at));

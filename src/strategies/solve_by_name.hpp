@@ -12,7 +12,7 @@
 #include "src/solver/error_reference.hpp"
 #include "src/solver/solve_result.hpp"
 
-namespace stc::fas {
+namespace stc {
 
 /// Names accepted today, and all the names of docs/interface.md.
 const std::vector<std::string>& availableSolvers();
@@ -38,10 +38,10 @@ struct StrategyInputs {
 
 /// The FAS options and the a priori basis options a SolverSpec sets (for programs that build the
 /// FAS themselves, e.g. to inspect the basis).
-FasOptions fasOptions(const SolverSpec& spec);
-AprioriBasisOptions aprioriOptions(const SolverSpec& spec);
+fas::FasOptions fasOptions(const SolverSpec& spec);
+fas::AprioriBasisOptions aprioriOptions(const SolverSpec& spec);
 
 SolveResult solveByName(const std::string& name, const Problem& problem, const SolverSpec& spec,
                         const StrategyInputs& inputs = {});
 
-}  // namespace stc::fas
+}  // namespace stc

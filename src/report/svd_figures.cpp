@@ -1,4 +1,4 @@
-#include "pgd/svd_figures.hpp"
+#include "src/report/svd_figures.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <system_error>
 
-namespace stc::pgd {
+namespace stc {
 namespace {
 
 // A gnuplot double-quoted string: backslash and quote escaped, so that any scene name is safe.
@@ -151,4 +151,4 @@ FigureStatus drawSvdFigures(const std::filesystem::path& dir, std::string& detai
   return FigureStatus::Drawn;
 }
 
-}  // namespace stc::pgd
+}  // namespace stc

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace stc::pgd {
+namespace stc {
 
 struct SvdFigureSpec {
   std::string scene;                 ///< for the titles
@@ -36,4 +36,4 @@ FigureStatus drawSvdFigures(const std::filesystem::path& dir, std::string& detai
 /// The PNGs drawSvdFigures writes.
 const std::vector<std::string>& svdFigureNames();
 
-}  // namespace stc::pgd
+}  // namespace stc
