@@ -18,7 +18,6 @@
 //   incremental to 1e-5 in energy, and reach 1e-4 in fewer relaxations than latin), 3 internal.
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -34,6 +33,7 @@
 #include "pgd/basis_verification.hpp"
 #include "pgd/displacement_history.hpp"
 #include "src/core/input_error.hpp"
+#include "src/report/gnuplot_runner.hpp"
 #include "src/scene/scene_reader.hpp"
 #include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
@@ -226,7 +226,8 @@ void writeSummary(const fs::path& file, const Setup& st, const std::vector<Run>&
 
 void plot(const fs::path& dir) {
   std::ofstream gp(dir / "compare_bases.gp");
-  gp << "set terminal pngcairo size 1200,480 font ',10'\nset output 'compare_bases.png'\n"
+  gp << "if (!exists('suffix')) suffix = ''\n"
+     << "set terminal pngcairo size 1200,480 font ',10'\nset output 'compare_bases.png'.suffix\n"
      << "set datafile separator ','\nset logscale y\nset format y '10^{%L}'\nset key top right\n"
      << "set multiplot layout 1,2\nset xlabel 'fine relaxations'\nset ylabel 'true error (energy, relative)'\n"
      << "files = '" ;
@@ -235,9 +236,10 @@ void plot(const fs::path& dir) {
      << "set xlabel 'wall time (s)'\nset logscale x\n"
      << "plot for [f in files] f.'.csv' using 5:4 with linespoints pt 7 ps 0.4 title f\nunset multiplot\n";
   gp.close();
-  const std::string cmd = "cd '" + dir.string() + "' && gnuplot compare_bases.gp";
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0 || std::system(cmd.c_str()) != 0)
-    std::cerr << "warning: no figure (gnuplot missing or failed); draw it later with: " << cmd << "\n";
+  const stc::PlotJob job{"compare_bases.gp", "", {"compare_bases.png"}, false};
+  if (stc::runPlots(dir, job).status != stc::PlotStatus::Drawn)
+    std::cerr << "warning: no figure (gnuplot missing or failed); draw it later with: cd '" << dir.string()
+              << "' && " << stc::plotCommand(job) << "\n";
 }
 
 Setup setUp(const Options& o) {

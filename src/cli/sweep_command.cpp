@@ -84,10 +84,10 @@ void describe(Sweep& s, const SweepArgs& args, const SweepRange& range, const Sc
 
 /// sweep.png: relaxations and wall time per value, warm against cold (scripts/plots/sweep.gp).
 PlotJob sweepPlot(const Sweep& s) {
-  return {"sweep.gp",
-          "key=" + gnuplotString(s.key) + "; scene=" + gnuplotString(s.scene_name) + "; solver=" +
-              gnuplotString(s.solver) + "; cold=" + (s.independent() ? "1" : "0"),
-          {"sweep.png"}};
+  return reportPlotJob("sweep.gp",
+                       "key=" + gnuplotString(s.key) + "; scene=" + gnuplotString(s.scene_name) + "; solver=" +
+                           gnuplotString(s.solver) + "; cold=" + (s.independent() ? "1" : "0"),
+                       {"sweep.png"});
 }
 
 void printTotals(const Sweep& s) {
