@@ -170,7 +170,6 @@ stc::SolveResult runOne(const Study& st, const RunSpec& r, stc::latin::GlobalSta
   o.max_relaxations = cap;
   o.pre_relaxations = o.post_relaxations = r.nu;
   o.coarse_iterations = r.ic;
-  o.residual_vectors = r.res;
   o.start = r.start;
   o.stagnation_window = 150;
   o.safeguard = st.safeguard;

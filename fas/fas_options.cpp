@@ -18,10 +18,8 @@ void FasOptions::validate() const {
   require(pre_relaxations >= 1, "pre_relaxations", pre_relaxations, "must be >= 1 (the coarse step needs a global stage)");
   require(post_relaxations >= 0, "post_relaxations", post_relaxations, "must be >= 0");
   require(coarse_iterations >= 1, "coarse_iterations", coarse_iterations, "must be >= 1");
-  require(residual_vectors >= 0, "residual_vectors", residual_vectors, "must be >= 0");
   require(max_skip >= 1, "max_skip", max_skip, "must be >= 1");
   require(stagnation_window >= 0, "stagnation_window", stagnation_window, "must be >= 0");
-  require(block_size >= 1, "block_size", block_size, "must be >= 1");
 }
 
 }  // namespace stc::fas

@@ -1,5 +1,7 @@
 #pragma once
 // Options of the two-level FAS with LATIN as smoother (docs/method.md §4; seed paper §4.1–4.2).
+// The coarse space's own options (residual vectors, modes) belong to its BasisProvider, the block
+// size of the solves to the latin::GlobalStage the caller builds.
 namespace stc::fas {
 
 /// How the coarse step starts from s̃ = (ũ, λ̃) (docs/method.md §4, "How the coarse step starts").
@@ -14,7 +16,6 @@ struct FasOptions {
   int pre_relaxations = 1;        ///< ν1 >= 1: the seed's Figs. 4–5 use ν1 = ν2 = 1
   int post_relaxations = 1;       ///< ν2 >= 0
   int coarse_iterations = 15;     ///< i_C: coarse linear stage + fine local stage pairs (seed: 15)
-  int residual_vectors = 15;      ///< N_res, renewed every cycle (seed §4.3: 15)
   CoarseStart start = CoarseStart::ZeroCorrection;
   /// Safeguard: a coarse correction after which the next relaxation's indicator exceeds the one
   /// before the coarse step is rejected (the pre-coarse local stage is restored) and the next
@@ -24,7 +25,6 @@ struct FasOptions {
   bool safeguard = true;
   int max_skip = 8;               ///< >= 1, longest run of skipped coarse steps
   int stagnation_window = 500;    ///< relaxations without a 1% decrease of η before giving up (0: never)
-  int block_size = 32;            ///< instants per multi-right-hand-side solve
 
   void validate() const;  ///< throws InputError naming the field
 };

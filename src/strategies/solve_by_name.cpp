@@ -19,7 +19,6 @@ fas::FasOptions fasOptions(const SolverSpec& spec) {
   o.pre_relaxations = spec.fas.pre_relaxations;
   o.post_relaxations = spec.fas.post_relaxations;
   o.coarse_iterations = spec.fas.coarse_iterations;
-  o.residual_vectors = spec.fas.residual_vectors;
   o.start = spec.fas.coarse_start == "mismatch" ? fas::CoarseStart::InterfaceMismatch : fas::CoarseStart::ZeroCorrection;
   return o;
 }

@@ -106,7 +106,6 @@ TEST(Fas, FineResultAgreesWithIncremental) {
   stc::fas::FasOptions options;
   options.tolerance = 1e-9;
   options.pre_relaxations = options.post_relaxations = 2;
-  options.residual_vectors = 10;
   const auto result = stc::fas::solveFas(f.problem, g, provider, options, "fas");
   ASSERT_TRUE(result.summary.converged()) << result.summary.message;
   EXPECT_LE(relativeDifference(result.interface.lambda, f.reference.interface.lambda), 1e-6);
@@ -138,7 +137,6 @@ stc::SolveResult solveWithFixedBasis(int modes, int residual_vectors, bool safeg
   stc::fas::FasOptions options;
   options.tolerance = 1e-8;
   options.max_relaxations = 400;
-  options.residual_vectors = residual_vectors;
   options.safeguard = safeguard;
   return stc::fas::solveFas(f.problem, g, provider, options, "fas");
 }
