@@ -4,9 +4,11 @@
 
 #include <Eigen/SVD>
 
+#include "fas/apriori_basis.hpp"
 #include "fas/fas_solver.hpp"
 #include "fas/residual_vectors.hpp"
 #include "latin/latin_solver.hpp"
+#include "src/core/input_error.hpp"
 #include "src/solver/incremental_solver.hpp"
 #include "solver/seed_scene.hpp"
 
@@ -167,4 +169,34 @@ TEST(Fas, SafeguardLeavesAGoodCoarseSpaceUntouched) {
   for (std::size_t i = 0; i < plain.summary.history.size(); ++i)
     EXPECT_EQ(plain.summary.history[i].indicator, guarded.summary.history[i].indicator) << "relaxation " << i + 1;
   EXPECT_EQ(guarded.summary.message.find("rejected"), std::string::npos);
+}
+
+namespace {
+std::string validationMessage(const auto& options) {
+  try {
+    options.validate();
+  } catch (const stc::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(FasOptions, ValidateNamesFieldValueAndRuleWithIntegersAsIntegers) {
+  stc::fas::FasOptions options;
+  options.max_skip = 0;
+  EXPECT_EQ(validationMessage(options), "FAS option max_skip = 0: must be >= 1");
+}
+
+TEST(AprioriBasisOptions, ValidateRefusesWhatWasClampedOrUnchecked) {
+  stc::fas::AprioriBasisOptions options;
+  EXPECT_EQ(validationMessage(options), "");
+  options.seed_share = 1.5;  // was clamped to 1 without a word
+  EXPECT_EQ(validationMessage(options), "a priori basis option seed_share = 1.500000: must be in [0, 1]");
+  options = {};
+  options.modes_per_cycle = 0;
+  EXPECT_EQ(validationMessage(options), "a priori basis option modes_per_cycle = 0: must be >= 1");
+  options = {};
+  options.residual_vectors = -1;
+  EXPECT_EQ(validationMessage(options), "a priori basis option residual_vectors = -1: must be >= 0");
 }
