@@ -19,7 +19,7 @@ fas::FasOptions fasOptions(const SolverSpec& spec) {
   o.pre_relaxations = spec.fas.pre_relaxations;
   o.post_relaxations = spec.fas.post_relaxations;
   o.coarse_iterations = spec.fas.coarse_iterations;
-  o.start = spec.fas.coarse_start == "mismatch" ? fas::CoarseStart::InterfaceMismatch : fas::CoarseStart::ZeroCorrection;
+  o.start = spec.fas.coarse_start;
   return o;
 }
 
@@ -93,22 +93,14 @@ std::string joined(const std::vector<std::string>& names) {
 }  // namespace
 
 const std::vector<std::string>& availableSolvers() {
-  static const std::vector<std::string> names = {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori", "incremental"};
-  return names;
-}
-
-const std::vector<std::string>& knownSolvers() {
-  static const std::vector<std::string> names = {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori", "incremental"};
+  static const std::vector<std::string> names(kSolverNames.begin(), kSolverNames.end());
   return names;
 }
 
 void requireAvailable(const std::string& name) {
-  auto has = [&](const std::vector<std::string>& list) { return std::find(list.begin(), list.end(), name) != list.end(); };
-  if (has(availableSolvers())) return;
-  if (has(knownSolvers()))
-    throw InputError("solver '" + name + "' is not available in this version yet (available: " +
-                     joined(availableSolvers()) + ")");
-  throw InputError("unknown solver '" + name + "' (known: " + joined(knownSolvers()) + ")");
+  const auto& names = availableSolvers();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw InputError("unknown solver '" + name + "' (known: " + joined(names) + ")");
 }
 
 SolveResult solveByName(const std::string& name, const Problem& problem, const SolverSpec& spec,

@@ -14,10 +14,9 @@
 
 namespace stc {
 
-/// Names accepted today, and all the names of docs/interface.md.
+/// The strategies' names (kSolverNames of src/core/solver_settings.hpp).
 const std::vector<std::string>& availableSolvers();
-const std::vector<std::string>& knownSolvers();
-/// Throws InputError for an unknown name or one not available yet.
+/// Throws InputError for an unknown name.
 void requireAvailable(const std::string& name);
 
 struct StrategyInputs {
