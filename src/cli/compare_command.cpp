@@ -50,6 +50,9 @@ void printStrategy(const StrategyMeasurement& m) {
 
 }  // namespace
 
+// Split here rather than by CLI11's ->delimiter(','): CLI11 2.1.2 (Debian 12) drops empty items, so
+// "--solvers latin,,incremental" would pass as two names instead of the documented refusal
+// "--solvers: empty name" (docs/compare.md; the ctest case cli.compare_empty_solver_name).
 std::vector<std::string> solverList(const std::string& list) {
   if (trimmed(list).empty()) return availableSolvers();
   std::vector<std::string> names;
