@@ -3,11 +3,8 @@
 // numbers that are the medians of what work_precision.csv records. No wall-clock value is asserted,
 // only relations between the files.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -16,7 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "report/csv_table.hpp"
+#include "cli/csv_table.hpp"
+#include "cli/run_program.hpp"
 #include "src/report/comparison.hpp"
 #include "src/report/number_format.hpp"
 #include "src/report/work_precision.hpp"
@@ -34,16 +32,8 @@ using test::readCsv;
 class CompareCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    // ctest runs each test in its own process, possibly in parallel: one folder per process.
-    out_ = fs::path(STC_BINARY_DIR) / "test_report_scratch" / ("compare_small_" + std::to_string(::getpid()));
-    fs::remove_all(out_);
-    fs::create_directories(out_);
-    const std::string command = "'" STC_BINARY_DIR "/bin/stcontact' compare '" STC_SOURCE_DIR
-                                "/examples/scenes/hemicylinder.toml' --set mesh.arc_nodes=21 --set time.steps=21 "
-                                "--repeats 2 --quiet --out '" +
-                                (out_ / "report").string() + "' 2> '" + (out_ / "stderr.txt").string() + "'";
-    const int status = std::system(command.c_str());
-    exit_status_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    out_ = test::scratchFolder("compare_small");
+    exit_status_ = test::runOnSmallSeed("compare", "--repeats 2", out_);
     work_ = readCsv(out_ / "report" / "work_precision.csv");
     summary_ = readCsv(out_ / "report" / "summary.csv");
   }

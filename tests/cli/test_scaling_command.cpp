@@ -4,18 +4,16 @@
 // it, and growth exponents in the report that are the fits of the CSV's times. No wall-clock value
 // is asserted, only relations between the files.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
-#include "report/csv_table.hpp"
+#include "cli/csv_table.hpp"
+#include "cli/run_program.hpp"
 #include "src/report/growth_fit.hpp"
 #include "src/strategies/solve_by_name.hpp"
 
@@ -33,15 +31,8 @@ constexpr double kTarget = 1e-4;
 class ScalingCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    out_ = fs::path(STC_BINARY_DIR) / "test_report_scratch" / ("scaling_tiny_" + std::to_string(::getpid()));
-    fs::remove_all(out_);
-    fs::create_directories(out_);
-    const std::string command = "'" STC_BINARY_DIR "/bin/stcontact' scaling '" STC_SOURCE_DIR
-                                "/examples/scenes/hemicylinder.toml' --set mesh.arc_nodes=21 --set time.steps=21 "
-                                "--arc-nodes 11,21 --steps 11,21 --repeats 1 --quiet --out '" +
-                                (out_ / "report").string() + "' 2> '" + (out_ / "stderr.txt").string() + "'";
-    const int status = std::system(command.c_str());
-    exit_status_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    out_ = test::scratchFolder("scaling_tiny");
+    exit_status_ = test::runOnSmallSeed("scaling", "--arc-nodes 11,21 --steps 11,21 --repeats 1", out_);
     rows_ = readCsv(out_ / "report" / "scaling.csv");
     summary_ = readText(out_ / "report" / "summary.md");
   }
