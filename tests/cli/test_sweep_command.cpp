@@ -22,11 +22,7 @@ namespace fs = std::filesystem;
 using Row = std::map<std::string, std::string>;
 using Table = stc::test::CsvTable;
 using stc::test::readCsv;
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using stc::test::readText;
 
 long sum(const Table& t, const std::string& column) {
   long total = 0;

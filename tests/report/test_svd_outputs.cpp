@@ -16,6 +16,7 @@
 #include "src/report/svd_figures.hpp"
 #include "src/report/svd_tables.hpp"
 #include "src/solver/incremental_solver.hpp"
+#include "report/text_lines.hpp"
 #include "tests/solver/seed_scene.hpp"
 
 namespace {
@@ -43,12 +44,7 @@ const Case& smallCase() {
   return c;
 }
 
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
+using stc::test::lines;
 
 TEST(SvdTables, SingularValuesCsvListsEveryPairWithCumulativeEnergy) {
   const Case& c = smallCase();
