@@ -35,7 +35,7 @@ constexpr int kMaxDenseCheck = 2000;       // m above which the O(m³) dense che
 constexpr double kEnergyLevels[] = {0.99, 0.999, 0.9999};
 constexpr const char* kEnergyLabels[] = {"99%", "99.9%", "99.99%"};
 // Bands around the contact zone, in units of the scene's length scale (the radius for the seed):
-// 1.5, 3 and 6 element sizes at the seed's arc (pgd/mode_localisation.hpp explains the choice).
+// 1.5, 3 and 6 element sizes at the seed's arc (src/report/mode_localisation.hpp explains the choice).
 constexpr double kBandDepths[] = {0.05, 0.1, 0.2};
 constexpr double kFigureDisplacement = 0.12;  // largest displacement of a drawn mode, × length scale
 
