@@ -20,7 +20,7 @@ const stc::Problem& seedProblem() {
   return problem;
 }
 
-constexpr int kBlock = 32;  // LatinOptions::block_size default
+constexpr int kBlock = stc::defaults::block_size;  // LatinOptions::block_size default
 
 // A state after a few iterations, so that the local stage sees open, stick and slip nodes.
 struct Iterate {

@@ -18,7 +18,6 @@
 //   incremental to 1e-5 in energy, and reach 1e-4 in fewer relaxations than latin), 3 internal.
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -31,13 +30,14 @@
 #include "fas/aposteriori_basis.hpp"
 #include "fas/apriori_basis.hpp"
 #include "fas/fas_solver.hpp"
-#include "fas/solve_by_name.hpp"
 #include "pgd/basis_verification.hpp"
 #include "pgd/displacement_history.hpp"
 #include "src/core/input_error.hpp"
+#include "src/report/gnuplot_runner.hpp"
 #include "src/scene/scene_reader.hpp"
 #include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace fs = std::filesystem;
 
@@ -103,15 +103,15 @@ struct Run {
 };
 
 Run runStrategy(const Setup& st, const std::string& name, int repeats) {
-  stc::fas::StrategyInputs with_error;
+  stc::StrategyInputs with_error;
   with_error.reference = st.reference.get();
   with_error.converged_lambda = &st.incremental.interface.lambda;
-  Run run{name, stc::fas::solveByName(name, st.problem, st.scene.solver, with_error).summary, 0.0};
-  stc::fas::StrategyInputs timed;
+  Run run{name, stc::solveByName(name, st.problem, st.scene.solver, with_error).summary, 0.0};
+  stc::StrategyInputs timed;
   timed.converged_lambda = &st.incremental.interface.lambda;
   std::vector<double> times;
   for (int i = 0; i < repeats; ++i)
-    times.push_back(stc::fas::solveByName(name, st.problem, st.scene.solver, timed).summary.wall_s);
+    times.push_back(stc::solveByName(name, st.problem, st.scene.solver, timed).summary.wall_s);
   run.median_s = median(times);
   return run;
 }
@@ -146,8 +146,8 @@ struct Verification {
 // solution, in the K_ff energy product.
 Verification verify(const Setup& st) {
   stc::latin::GlobalStage global(st.problem);
-  stc::fas::AprioriBasisProvider provider(st.problem, global.matrix(), stc::fas::aprioriOptions(st.scene.solver));
-  stc::fas::solveFas(st.problem, global, provider, stc::fas::fasOptions(st.scene.solver), "fas-apriori");
+  stc::fas::AprioriBasisProvider provider(st.problem, global.matrix(), stc::aprioriOptions(st.scene.solver));
+  stc::fas::solveFas(st.problem, global, provider, stc::fasOptions(st.scene.solver), "fas-apriori");
   const Eigen::MatrixXd& apriori = provider.modes().modes();
   const Eigen::MatrixXd U = stc::displacementsFromForces(st.problem, *st.K, st.incremental.interface.lambda);
   const Eigen::MatrixXd svd = stc::fas::aposterioriModes(st.problem, *st.K, st.incremental.interface.lambda, 20);
@@ -226,7 +226,8 @@ void writeSummary(const fs::path& file, const Setup& st, const std::vector<Run>&
 
 void plot(const fs::path& dir) {
   std::ofstream gp(dir / "compare_bases.gp");
-  gp << "set terminal pngcairo size 1200,480 font ',10'\nset output 'compare_bases.png'\n"
+  gp << "if (!exists('suffix')) suffix = ''\n"
+     << "set terminal pngcairo size 1200,480 font ',10'\nset output 'compare_bases.png'.suffix\n"
      << "set datafile separator ','\nset logscale y\nset format y '10^{%L}'\nset key top right\n"
      << "set multiplot layout 1,2\nset xlabel 'fine relaxations'\nset ylabel 'true error (energy, relative)'\n"
      << "files = '" ;
@@ -235,9 +236,10 @@ void plot(const fs::path& dir) {
      << "set xlabel 'wall time (s)'\nset logscale x\n"
      << "plot for [f in files] f.'.csv' using 5:4 with linespoints pt 7 ps 0.4 title f\nunset multiplot\n";
   gp.close();
-  const std::string cmd = "cd '" + dir.string() + "' && gnuplot compare_bases.gp";
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0 || std::system(cmd.c_str()) != 0)
-    std::cerr << "warning: no figure (gnuplot missing or failed); draw it later with: " << cmd << "\n";
+  const stc::PlotJob job{"compare_bases.gp", "", {"compare_bases.png"}, false};
+  if (stc::runPlots(dir, job).status != stc::PlotStatus::Drawn)
+    std::cerr << "warning: no figure (gnuplot missing or failed); draw it later with: cd '" << dir.string()
+              << "' && " << stc::plotCommand(job) << "\n";
 }
 
 Setup setUp(const Options& o) {

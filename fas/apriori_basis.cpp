@@ -4,21 +4,33 @@
 #include <cmath>
 
 #include "fas/residual_vectors.hpp"
+#include "src/core/option_check.hpp"
 #include "src/solver/warm_start.hpp"
 
 namespace stc::fas {
+
+void AprioriBasisOptions::validate() const {
+  constexpr const char* owner = "a priori basis";
+  requireOption(residual_vectors >= 0, owner, "residual_vectors", residual_vectors, "must be >= 0");
+  requireOption(modes_per_cycle >= 1, owner, "modes_per_cycle", modes_per_cycle, "must be >= 1");
+  requireOption(max_modes >= 0, owner, "max_modes", max_modes, "must be >= 0");
+  requireOption(seed_share >= 0.0 && seed_share <= 1.0, owner, "seed_share", seed_share, "must be in [0, 1]");
+  requireOption(relative_energy_drop >= 0.0 && std::isfinite(relative_energy_drop), owner, "relative_energy_drop",
+                relative_energy_drop, "must be >= 0 and finite");
+  requireOption(enrichment.max_sweeps >= 1, owner, "enrichment.max_sweeps", enrichment.max_sweeps, "must be >= 1");
+}
 
 AprioriBasisProvider::AprioriBasisProvider(const Problem& problem, const Eigen::SparseMatrix<double>& A,
                                            AprioriBasisOptions options)
     : problem_(problem),
       A_(A),
-      options_(options),
+      options_((options.validate(), options)),
       loads_(pgd::separatedLoads(problem)),
       modes_(A, problem.contact.B, loads_.F) {}
 
 int AprioriBasisProvider::seed(const Eigen::MatrixXd& vectors) {
   requireFits(vectors, problem_);
-  const int most = static_cast<int>(std::clamp(options_.seed_share, 0.0, 1.0) * options_.max_modes);
+  const int most = static_cast<int>(options_.seed_share * options_.max_modes);
   for (Eigen::Index j = 0; j < vectors.cols() && modes_.rank() < most; ++j) modes_.add(vectors.col(j));
   return modes_.rank();
 }

@@ -14,28 +14,31 @@
 #include "pgd/energy_modes.hpp"
 #include "pgd/rank_one_enrichment.hpp"
 #include "pgd/separated_loads.hpp"
+#include "src/core/solver_settings.hpp"
 #include "src/problem/problem.hpp"
 
 namespace stc::fas {
 
 struct AprioriBasisOptions {
-  int residual_vectors = 15;   ///< N_res, renewed every cycle
-  int modes_per_cycle = 4;     ///< rank-one pairs added per cycle at most
-  int max_modes = 30;          ///< PGD modes kept at most (then the modes stop growing)
+  int residual_vectors = defaults::residual_vectors;    ///< N_res >= 0, renewed every cycle
+  int modes_per_cycle = defaults::pgd_modes_per_cycle;  ///< rank-one pairs added per cycle at most, >= 1
+  int max_modes = defaults::pgd_max_modes;              ///< PGD modes kept at most, >= 0 (then they stop growing)
   /// A warm start's seed (seed()) fills at most this share of `max_modes`, the leading seed modes;
   /// the rest is left to this problem's own enrichment. Warm relaxations over the seed scene's
   /// friction sweep 0.05:0.5:10 for shares 0, 0.25, 0.5, 0.75, 1: 176, 155, 147, 190, 245 (cold 272;
   /// docs/sweep.md, scene key solver.pgd_seed_share): a full seed leaves no room to adapt to the new
-  /// value, an empty one throws the previous basis away.
-  double seed_share = 0.5;
-  /// A pair is kept only if its energy norm is above this fraction of ũ's (nothing left below).
+  /// value, an empty one throws the previous basis away. In [0, 1].
+  double seed_share = defaults::pgd_seed_share;
+  /// A pair is kept only if its energy norm is above this fraction of ũ's (nothing left below); >= 0.
   double relative_energy_drop = 1e-8;
   pgd::EnrichmentOptions enrichment;
+
+  void validate() const;  ///< throws InputError naming the field, its value and the rule broken
 };
 
 class AprioriBasisProvider : public BasisProvider {
  public:
-  /// `A` = K + Bᵀ k B (the global stage's operator).
+  /// `A` = K + Bᵀ k B (the global stage's operator). Validates `options` (InputError).
   AprioriBasisProvider(const Problem& problem, const Eigen::SparseMatrix<double>& A, AprioriBasisOptions options);
   /// Starts the modes from `vectors` (n_free × r, e.g. a neighbouring problem's modes, leading ones
   /// first: a warm start), A-orthonormalised in order, dependent ones dropped, at most

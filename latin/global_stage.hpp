@@ -10,6 +10,7 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "src/core/solver_settings.hpp"
 #include "src/linalg/spd_factor.hpp"
 #include "src/problem/problem.hpp"
 #include "src/spacetime/interface_history.hpp"
@@ -19,7 +20,7 @@ namespace stc::latin {
 class GlobalStage {
  public:
   /// Factorises K_ff + Bᵀ k B with k = problem.contact.search_direction.
-  explicit GlobalStage(const Problem& problem, int block_size = 32);
+  explicit GlobalStage(const Problem& problem, int block_size = defaults::block_size);
 
   /// s = global stage of ŝ (all instants). Adds m to the sparse-solve count. When `u` is given it
   /// receives the free displacements (n_free × m; FAS builds its residual vectors from them).

@@ -1,13 +1,14 @@
 #pragma once
 // Options of `latin-pgd`: LATIN whose global stage is solved in separated form (docs/method.md §5).
 #include "pgd/rank_one_enrichment.hpp"
+#include "src/core/solver_settings.hpp"
 
 namespace stc::pgd {
 
 struct LatinPgdOptions {
-  double tolerance = 1e-6;      ///< on the indicator, once the global-stage error is checked below it
-  int max_iterations = 5000;
-  int stagnation_window = 500;  ///< as LATIN's (0: never)
+  double tolerance = defaults::tolerance;  ///< on the indicator, once the global-stage error is checked below it
+  int max_iterations = defaults::max_iterations;
+  int stagnation_window = defaults::stagnation_window;  ///< as LATIN's (0: never)
   int max_rank = 400;           ///< modes at most (the exact global stage needs ≤ q + 2n_C of them)
   /// Enrich while the next mode would move s by more than γ = this times max(η, tolerance) in the
   /// indicator's norm. A global-stage error ε per iteration shifts LATIN's fixed point by about

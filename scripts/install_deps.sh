@@ -10,6 +10,6 @@ apt-get update -qq
 apt-get install -y -qq --no-install-recommends \
   g++ cmake make pkg-config \
   libeigen3-dev libsuitesparse-dev libarpack2-dev libgsl-dev libopenblas0-serial \
-  libtomlplusplus-dev libcli11-dev libgtest-dev libbenchmark-dev \
+  libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev \
   gnuplot-nox clang-14 libclang-rt-14-dev llvm-14 >/dev/null
 echo "dependencies installed"

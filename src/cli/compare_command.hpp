@@ -24,7 +24,7 @@ struct CompareArgs {
   bool quiet = false;
 };
 
-/// The comma-separated strategy names of --solvers (empty: fas::availableSolvers()); InputError for
+/// The comma-separated strategy names of --solvers (empty: availableSolvers()); InputError for
 /// an empty, unknown, unavailable or repeated name.
 std::vector<std::string> solverList(const std::string& list);
 

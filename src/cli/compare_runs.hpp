@@ -1,6 +1,6 @@
 #pragma once
 // The runs of `stcontact compare`: the incremental reference, then each strategy's error run and
-// timed repeats through fas::solveByName, with the peak memory of the strategy's runs.
+// timed repeats through solveByName, with the peak memory of the strategy's runs.
 #include <memory>
 #include <optional>
 #include <string>

@@ -5,15 +5,15 @@
 #include <memory>
 #include <sstream>
 
-#include "fas/solve_by_name.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/progress.hpp"
 #include "src/core/input_error.hpp"
-#include "src/solver/condensed_interface.hpp"
 #include "src/io/atomic_file.hpp"
 #include "src/io/run_writer.hpp"
 #include "src/scene/scene_reader.hpp"
+#include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace stc::cli {
 namespace {
@@ -41,11 +41,11 @@ std::unique_ptr<ErrorReference> computeReference(const Problem& problem, bool qu
 SolveResult runSolver(const std::string& name, const Problem& problem, const Scene& scene,
                       const ErrorReference* reference, bool quiet) {
   Progress progress(name, !quiet);
-  fas::StrategyInputs inputs;
+  StrategyInputs inputs;
   inputs.reference = reference;
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
   inputs.callback = progress.callback();
-  SolveResult result = fas::solveByName(name, problem, scene.solver, inputs);
+  SolveResult result = solveByName(name, problem, scene.solver, inputs);
   progress.done();
   return result;
 }
@@ -56,7 +56,7 @@ std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, c
                                            const std::optional<double>& tolerance,
                                            const std::optional<int>& max_iterations) {
   if (solver) {
-    fas::requireAvailable(*solver);
+    requireAvailable(*solver);
     overrides.push_back("solver.name=" + *solver);
   }
   if (tolerance) {
@@ -75,7 +75,7 @@ std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, c
 int runSolve(const SolveArgs& args) {
   const Scene scene = readScene(args.scene, withSolverOptions(args.overrides, args.solver, args.tolerance, args.max_iterations));
   const std::string solver = scene.solver.name;
-  fas::requireAvailable(solver);
+  requireAvailable(solver);
   const std::filesystem::path out = args.out ? std::filesystem::path(*args.out)
                                              : std::filesystem::path("results") / scene.name / solver;
   const Problem problem = buildProblem(scene);  // bad input stops here, before anything is created

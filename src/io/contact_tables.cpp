@@ -3,29 +3,15 @@
 #include <algorithm>
 #include <limits>
 
-#include "src/contact/contact_state.hpp"
+#include "src/contact/contact_state_table.hpp"
 
 namespace stc {
 
 
-ContactStateTable::ContactStateTable(const Problem& problem, const InterfaceHistory& s)
-    : s_(s), mu_(problem.contact.friction) {
-  force_scale_ = std::max(s.lambda.cwiseAbs().maxCoeff(), std::numeric_limits<double>::min());
-  length_scale_ = std::max(s.v.cwiseAbs().maxCoeff(), std::numeric_limits<double>::min());
-}
-
-double ContactStateTable::slip(int i, int k) const {
-  return s_.v(2 * i + 1, k) - (k > 0 ? s_.v(2 * i + 1, k - 1) : 0.0);
-}
-
-ContactState ContactStateTable::state(int i, int k) const {
-  return classifyContact(s_.lambda(2 * i, k), s_.lambda(2 * i + 1, k), slip(i, k), mu_, force_scale_, length_scale_);
-}
-
 void writeReactionsCsv(std::ostream& out, const Problem& problem, const SolveResult& result) {
   const auto& c = problem.contact;
   const auto& lambda = result.interface.lambda;
-  const ContactStateTable states(problem, result.admissible());
+  const ContactStateTable states(problem.contact, result.admissible());
   out.precision(12);
   out << "step,t,normal_force,tangential_force,contact_xmin,contact_xmax,n_contact,n_slip\n";
   for (int k = 0; k < problem.numSteps(); ++k) {
@@ -52,7 +38,7 @@ void writeReactionsCsv(std::ostream& out, const Problem& problem, const SolveRes
 void writeContactCsv(std::ostream& out, const Problem& problem, const SolveResult& result) {
   const auto& c = problem.contact;
   const auto& s = result.interface;
-  const ContactStateTable states(problem, result.admissible());
+  const ContactStateTable states(problem.contact, result.admissible());
   out.precision(12);
   out << "step,node,x,y,normal_force,tangential_force,pressure,shear,gap,slip,state\n";
   for (int k = 0; k < problem.numSteps(); ++k)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
+#include <span>
 #include <sstream>
 #include <utility>
 
@@ -23,8 +24,7 @@ using detail::formatNumber;
 using detail::TableView;
 
 /// Reads a string key that must be one of `allowed`; returns it.
-std::string readKeyword(const TableView& table, std::string_view key,
-                        std::initializer_list<std::string_view> allowed) {
+std::string readKeyword(const TableView& table, std::string_view key, std::span<const std::string_view> allowed) {
   std::string text = table.requiredString(key);
   std::string list;
   for (const auto name : allowed) {
@@ -33,6 +33,11 @@ std::string readKeyword(const TableView& table, std::string_view key,
   }
   const std::string path = table.keyPath(key);
   table.errors().fail(path, "key '" + path + "' = \"" + text + "\" is not one of " + list);
+}
+
+std::string readKeyword(const TableView& table, std::string_view key,
+                        std::initializer_list<std::string_view> allowed) {
+  return readKeyword(table, key, std::span<const std::string_view>(allowed.begin(), allowed.size()));
 }
 
 /// Reads a Component ("x" or "y").
@@ -239,7 +244,10 @@ FasSpec readFas(const TableView& solver) {
   fas.pgd_seed_share = solver.optionalNumber("pgd_seed_share").value_or(fas.pgd_seed_share);
   requireRange(solver, "pgd_seed_share", fas.pgd_seed_share, fas.pgd_seed_share >= 0.0 && fas.pgd_seed_share <= 1.0,
                "must be in [0, 1]");
-  if (solver.has("coarse_start")) fas.coarse_start = readKeyword(solver, "coarse_start", {"zero", "mismatch"});
+  if (solver.has("coarse_start"))
+    fas.coarse_start = readKeyword(solver, "coarse_start", {"zero", "mismatch"}) == "mismatch"
+                           ? CoarseStart::InterfaceMismatch
+                           : CoarseStart::ZeroCorrection;
   return fas;
 }
 
@@ -251,8 +259,7 @@ SolverSpec readSolver(const TableView& root) {
                  "pgd_max_modes", "pgd_modes_per_cycle", "pgd_seed_share"});
   if (!solver) return spec;
   if (solver->has("name")) {
-    spec.name = readKeyword(
-        *solver, "name", {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori", "incremental"});
+    spec.name = readKeyword(*solver, "name", kSolverNames);
   }
   spec.tolerance = solver->optionalNumber("tolerance").value_or(spec.tolerance);
   requireRange(*solver, "tolerance", spec.tolerance, spec.tolerance > 0.0, "must be > 0");

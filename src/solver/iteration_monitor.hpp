@@ -6,14 +6,15 @@
 #include <chrono>
 #include <string>
 
+#include "src/core/solver_settings.hpp"
 #include "src/solver/error_reference.hpp"
 #include "src/solver/solve_summary.hpp"
 
 namespace stc {
 
 struct StoppingRule {
-  double tolerance = 1e-6;      ///< on the indicator
-  int max_iterations = 1000;
+  double tolerance = defaults::tolerance;      ///< on the indicator
+  int max_iterations = defaults::max_iterations;
   int stagnation_window = 0;    ///< iterations without a 1% decrease of the best indicator (0: off)
 };
 

@@ -4,9 +4,11 @@
 
 #include <Eigen/SVD>
 
+#include "fas/apriori_basis.hpp"
 #include "fas/fas_solver.hpp"
 #include "fas/residual_vectors.hpp"
 #include "latin/latin_solver.hpp"
+#include "src/core/input_error.hpp"
 #include "src/solver/incremental_solver.hpp"
 #include "solver/seed_scene.hpp"
 
@@ -106,7 +108,6 @@ TEST(Fas, FineResultAgreesWithIncremental) {
   stc::fas::FasOptions options;
   options.tolerance = 1e-9;
   options.pre_relaxations = options.post_relaxations = 2;
-  options.residual_vectors = 10;
   const auto result = stc::fas::solveFas(f.problem, g, provider, options, "fas");
   ASSERT_TRUE(result.summary.converged()) << result.summary.message;
   EXPECT_LE(relativeDifference(result.interface.lambda, f.reference.interface.lambda), 1e-6);
@@ -138,7 +139,6 @@ stc::SolveResult solveWithFixedBasis(int modes, int residual_vectors, bool safeg
   stc::fas::FasOptions options;
   options.tolerance = 1e-8;
   options.max_relaxations = 400;
-  options.residual_vectors = residual_vectors;
   options.safeguard = safeguard;
   return stc::fas::solveFas(f.problem, g, provider, options, "fas");
 }
@@ -169,4 +169,34 @@ TEST(Fas, SafeguardLeavesAGoodCoarseSpaceUntouched) {
   for (std::size_t i = 0; i < plain.summary.history.size(); ++i)
     EXPECT_EQ(plain.summary.history[i].indicator, guarded.summary.history[i].indicator) << "relaxation " << i + 1;
   EXPECT_EQ(guarded.summary.message.find("rejected"), std::string::npos);
+}
+
+namespace {
+std::string validationMessage(const auto& options) {
+  try {
+    options.validate();
+  } catch (const stc::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(FasOptions, ValidateNamesFieldValueAndRuleWithIntegersAsIntegers) {
+  stc::fas::FasOptions options;
+  options.max_skip = 0;
+  EXPECT_EQ(validationMessage(options), "FAS option max_skip = 0: must be >= 1");
+}
+
+TEST(AprioriBasisOptions, ValidateRefusesWhatWasClampedOrUnchecked) {
+  stc::fas::AprioriBasisOptions options;
+  EXPECT_EQ(validationMessage(options), "");
+  options.seed_share = 1.5;  // was clamped to 1 without a word
+  EXPECT_EQ(validationMessage(options), "a priori basis option seed_share = 1.500000: must be in [0, 1]");
+  options = {};
+  options.modes_per_cycle = 0;
+  EXPECT_EQ(validationMessage(options), "a priori basis option modes_per_cycle = 0: must be >= 1");
+  options = {};
+  options.residual_vectors = -1;
+  EXPECT_EQ(validationMessage(options), "a priori basis option residual_vectors = -1: must be >= 0");
 }

@@ -350,7 +350,7 @@ TEST(SceneReader, FasKeysAreRead) {
   EXPECT_EQ(s.solver.fas.pgd_max_modes, 12);
   EXPECT_EQ(s.solver.fas.pgd_modes_per_cycle, 2);
   EXPECT_EQ(s.solver.fas.pgd_seed_share, 0.25);
-  EXPECT_EQ(s.solver.fas.coarse_start, "mismatch");
+  EXPECT_EQ(s.solver.fas.coarse_start, stc::CoarseStart::InterfaceMismatch);
 }
 
 TEST(SceneReaderErrors, FasRangesAreChecked) {

@@ -8,10 +8,10 @@
 #include <memory>
 #include <stdexcept>
 
-#include "fas/solve_by_name.hpp"
+#include "solver/seed_scene.hpp"
 #include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
-#include "solver/seed_scene.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace {
 
@@ -42,13 +42,13 @@ const Value& value(double mu) {
 }
 
 stc::SolveResult solve(const std::string& solver, const Value& v, const stc::SolveResult* previous = nullptr) {
-  stc::fas::StrategyInputs inputs;
+  stc::StrategyInputs inputs;
   inputs.reference = v.reference.get();
   if (previous) {
     inputs.start = &previous->interface;
     if (previous->spatial_modes.cols() > 0) inputs.basis_seed = &previous->spatial_modes;
   }
-  return stc::fas::solveByName(solver, v.problem, v.scene.solver, inputs);
+  return stc::solveByName(solver, v.problem, v.scene.solver, inputs);
 }
 
 const std::vector<std::string>& iterativeSolvers() {
@@ -95,7 +95,7 @@ TEST(WarmStart, FromItsOwnSolutionStopsAtOnce) {
     const Value& v = value(0.15);
     stc::SolverSpec tight = v.scene.solver;
     tight.tolerance = 1e-8;
-    const stc::SolveResult converged = stc::fas::solveByName(solver, v.problem, tight);
+    const stc::SolveResult converged = stc::solveByName(solver, v.problem, tight);
     ASSERT_TRUE(converged.summary.converged()) << solver;
     const stc::SolveResult restart = solve(solver, v, &converged);
     EXPECT_TRUE(restart.summary.converged()) << solver;
@@ -120,11 +120,11 @@ TEST(WarmStart, AStartOfTheWrongSizeIsRefused) {
   const stc::InterfaceHistory wrong = stc::InterfaceHistory::zeros(v.problem.contact.size() + 1, v.problem.numSteps());
   const Eigen::MatrixXd wrong_modes = Eigen::MatrixXd::Zero(v.problem.numFreeDofs() + 2, 3);
   for (const std::string& solver : iterativeSolvers()) {
-    stc::fas::StrategyInputs inputs;
+    stc::StrategyInputs inputs;
     inputs.start = &wrong;
-    EXPECT_THROW(stc::fas::solveByName(solver, v.problem, v.scene.solver, inputs), std::invalid_argument) << solver;
+    EXPECT_THROW(stc::solveByName(solver, v.problem, v.scene.solver, inputs), std::invalid_argument) << solver;
   }
-  stc::fas::StrategyInputs inputs;
+  stc::StrategyInputs inputs;
   inputs.basis_seed = &wrong_modes;
-  EXPECT_THROW(stc::fas::solveByName("fas-apriori", v.problem, v.scene.solver, inputs), std::invalid_argument);
+  EXPECT_THROW(stc::solveByName("fas-apriori", v.problem, v.scene.solver, inputs), std::invalid_argument);
 }

@@ -1,4 +1,4 @@
-#include "pgd/mode_localisation.hpp"
+#include "src/report/mode_localisation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,11 +6,11 @@
 #include <set>
 #include <string>
 
+#include "src/contact/contact_state_table.hpp"
 #include "src/core/input_error.hpp"
 #include "src/fem/elasticity.hpp"
-#include "src/io/contact_tables.hpp"
 
-namespace stc::pgd {
+namespace stc {
 namespace {
 
 // Distance from p to the segment [a, b] (a point when a = b).
@@ -33,7 +33,7 @@ double distanceToZone(const Mesh& mesh, const ContactZone& zone, const Eigen::Ve
 }  // namespace
 
 ContactZone ContactZone::everClosed(const Problem& problem, const InterfaceHistory& admissible) {
-  const ContactStateTable states(problem, admissible);
+  const ContactStateTable states(problem.contact, admissible);
   ContactZone zone;
   std::set<int> closed;
   for (int i = 0; i < problem.contact.size(); ++i)
@@ -114,4 +114,4 @@ std::vector<double> ModeLocalisation::bandAreaShares() const {
   return shares;
 }
 
-}  // namespace stc::pgd
+}  // namespace stc

@@ -1,4 +1,4 @@
-// Localisation of spatial modes at the contact zone (pgd/mode_localisation.hpp): the element
+// Localisation of spatial modes at the contact zone (src/report/mode_localisation.hpp): the element
 // energies add up to ΥᵀKΥ, rigid motions carry none, a uniform strain spreads its energy like the
 // area, a field living on the contact zone is fully inside the band, the seed's contact zone is the
 // closed arc segment, and the seed's observation (§3.2) that the higher modes localise at the contact.
@@ -7,17 +7,17 @@
 #include <random>
 
 #include "pgd/displacement_history.hpp"
-#include "pgd/mode_localisation.hpp"
 #include "pgd/space_time_svd.hpp"
 #include "src/core/input_error.hpp"
 #include "src/linalg/spd_factor.hpp"
+#include "src/report/mode_localisation.hpp"
 #include "src/solver/incremental_solver.hpp"
 #include "tests/solver/seed_scene.hpp"
 
 namespace {
 
-using stc::pgd::ContactZone;
-using stc::pgd::ModeLocalisation;
+using stc::ContactZone;
+using stc::ModeLocalisation;
 
 struct Solved {
   stc::Problem problem;

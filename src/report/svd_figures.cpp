@@ -1,15 +1,11 @@
-#include "pgd/svd_figures.hpp"
+#include "src/report/svd_figures.hpp"
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 #include <sstream>
-#include <system_error>
 
-namespace stc::pgd {
+#include "src/report/gnuplot_runner.hpp"
+
+namespace stc {
 namespace {
 
 // A gnuplot double-quoted string: backslash and quote escaped, so that any scene name is safe.
@@ -78,33 +74,6 @@ void modesPlot(std::ostream& gp, const SvdFigureSpec& spec) {
   gp << "unset multiplot\n";
 }
 
-bool onPath(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  std::stringstream dirs(path ? path : "");
-  std::string dir;
-  while (std::getline(dirs, dir, ':')) {
-    const std::string candidate = (dir.empty() ? std::string(".") : dir) + "/" + program;
-    if (::access(candidate.c_str(), X_OK) == 0) return true;
-  }
-  return false;
-}
-
-// Runs gnuplot in `dir`; returns its exit status (127: could not be started, −1: killed).
-int runGnuplot(const std::filesystem::path& dir) {
-  std::fflush(nullptr);  // no buffered output duplicated by the child
-  const pid_t pid = ::fork();
-  if (pid < 0) return 127;
-  if (pid == 0) {
-    if (::chdir(dir.c_str()) != 0) ::_exit(127);
-    ::execlp("gnuplot", "gnuplot", "-e", "suffix='.tmp'", "svd_figures.gp", static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 }  // namespace
 
 const std::vector<std::string>& svdFigureNames() {
@@ -127,28 +96,22 @@ std::string svdFiguresScript(const SvdFigureSpec& spec) {
 }
 
 FigureStatus drawSvdFigures(const std::filesystem::path& dir, std::string& detail) {
-  if (!onPath("gnuplot")) {
-    detail = "gnuplot is not on PATH: no PNG drawn (install gnuplot, then run 'gnuplot svd_figures.gp' in " +
-             dir.string() + ")";
-    return FigureStatus::GnuplotMissing;
-  }
-  const int status = runGnuplot(dir);
-  std::error_code ignored;
-  if (status != 0) {
-    for (const auto& name : svdFigureNames()) std::filesystem::remove(dir / (name + ".tmp"), ignored);
-    detail = "gnuplot failed on " + (dir / "svd_figures.gp").string() + " (exit status " + std::to_string(status) +
-             "): no PNG replaced";
-    return FigureStatus::GnuplotFailed;
-  }
-  for (const auto& name : svdFigureNames()) {
-    std::error_code error;
-    std::filesystem::rename(dir / (name + ".tmp"), dir / name, error);
-    if (error) {
-      detail = "could not move " + (dir / (name + ".tmp")).string() + " into place: " + error.message();
+  const PlotOutcome outcome = runPlots(dir, PlotJob{"svd_figures.gp", "", svdFigureNames(), false});
+  switch (outcome.status) {
+    case PlotStatus::Drawn: return FigureStatus::Drawn;
+    case PlotStatus::GnuplotMissing:
+      detail = "gnuplot is not on PATH: no PNG drawn (install gnuplot, then run 'gnuplot svd_figures.gp' in " +
+               dir.string() + ")";
+      return FigureStatus::GnuplotMissing;
+    case PlotStatus::ScriptMissing:
+    case PlotStatus::GnuplotFailed:
+      detail = "gnuplot failed on " + (dir / "svd_figures.gp").string() + " (exit status " +
+               std::to_string(outcome.exit_status) + "): no PNG replaced";
       return FigureStatus::GnuplotFailed;
-    }
+    case PlotStatus::NotMoved: break;
   }
-  return FigureStatus::Drawn;
+  detail = outcome.detail;
+  return FigureStatus::GnuplotFailed;
 }
 
-}  // namespace stc::pgd
+}  // namespace stc

@@ -1,4 +1,4 @@
-// The files of `stcontact svd` (pgd/svd_tables.hpp, pgd/svd_figures.hpp): table layouts, the √σ
+// The files of `stcontact svd` (src/report/svd_tables.hpp, src/report/svd_figures.hpp): table layouts, the √σ
 // scaling of the seed's figure captions, the deformed-mesh data, and the gnuplot run that moves
 // finished PNGs into place (skipped where gnuplot is not installed).
 #include <gtest/gtest.h>
@@ -10,12 +10,13 @@
 #include <sstream>
 
 #include "pgd/displacement_history.hpp"
-#include "pgd/svd_figures.hpp"
-#include "pgd/svd_tables.hpp"
 #include "src/core/input_error.hpp"
 #include "src/io/atomic_file.hpp"
 #include "src/linalg/spd_factor.hpp"
+#include "src/report/svd_figures.hpp"
+#include "src/report/svd_tables.hpp"
 #include "src/solver/incremental_solver.hpp"
+#include "report/text_lines.hpp"
 #include "tests/solver/seed_scene.hpp"
 
 namespace {
@@ -25,7 +26,7 @@ using stc::pgd::SpaceTimeSvd;
 struct Case {
   stc::Problem problem;
   SpaceTimeSvd svd;
-  std::unique_ptr<stc::pgd::ModeLocalisation> localisation;
+  std::unique_ptr<stc::ModeLocalisation> localisation;
 };
 
 // A small seed scene (21 arc nodes, 21 instants), its energy SVD and localisation, built once.
@@ -36,23 +37,18 @@ const Case& smallCase() {
     const stc::SpdFactor factor(c.problem.stiffness_free, "K_ff");
     const Eigen::MatrixXd U = stc::pgd::fullDisplacementHistory(c.problem, factor, solved.interface.lambda);
     c.svd = stc::pgd::energySvd(U, c.problem.stiffness);
-    c.localisation = std::make_unique<stc::pgd::ModeLocalisation>(
-        c.problem, stc::pgd::ContactZone::everClosed(c.problem, solved.admissible()), std::vector<double>{0.1, 0.2});
+    c.localisation = std::make_unique<stc::ModeLocalisation>(
+        c.problem, stc::ContactZone::everClosed(c.problem, solved.admissible()), std::vector<double>{0.1, 0.2});
     return c;
   }();
   return c;
 }
 
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
+using stc::test::lines;
 
 TEST(SvdTables, SingularValuesCsvListsEveryPairWithCumulativeEnergy) {
   const Case& c = smallCase();
-  const auto rows = lines(stc::pgd::singularValuesCsv(c.svd));
+  const auto rows = lines(stc::singularValuesCsv(c.svd));
   ASSERT_EQ(rows.size(), static_cast<std::size_t>(c.svd.size() + 1));
   EXPECT_EQ(rows[0], "i,sigma,energy_fraction,cumulative_energy");
   EXPECT_EQ(rows[1].rfind("1,", 0), 0u);
@@ -62,7 +58,7 @@ TEST(SvdTables, SingularValuesCsvListsEveryPairWithCumulativeEnergy) {
 
 TEST(SvdTables, TimeFunctionsAreScaledBySquareRootOfSigma) {
   const Case& c = smallCase();
-  const auto rows = lines(stc::pgd::timeFunctionsCsv(c.svd, c.problem.times, 3));
+  const auto rows = lines(stc::timeFunctionsCsv(c.svd, c.problem.times, 3));
   ASSERT_EQ(rows.size(), c.problem.times.size() + 1);
   EXPECT_EQ(rows[0], "t,mode_1,mode_2,mode_3");
   // Last instant, mode 1: ν_1(t_20) √σ_1.
@@ -71,13 +67,13 @@ TEST(SvdTables, TimeFunctionsAreScaledBySquareRootOfSigma) {
   std::getline(last, t, ',');
   std::getline(last, mode1, ',');
   EXPECT_NEAR(std::stod(mode1), c.svd.time(20, 0) * std::sqrt(c.svd.sigma[0]), 1e-10 * std::sqrt(c.svd.sigma[0]));
-  EXPECT_THROW(stc::pgd::timeFunctionsCsv(c.svd, c.problem.times, c.svd.size() + 1), stc::InputError);
+  EXPECT_THROW(stc::timeFunctionsCsv(c.svd, c.problem.times, c.svd.size() + 1), stc::InputError);
 }
 
 TEST(SvdTables, LocalisationCsvHasOneColumnPerBandAndEmptyCellsForUnresolvedModes) {
   const Case& c = smallCase();
   ASSERT_LT(c.svd.resolved, 10);  // the small history has few resolved pairs
-  const auto rows = lines(stc::pgd::localisationCsv(c.svd, *c.localisation, 10));
+  const auto rows = lines(stc::localisationCsv(c.svd, *c.localisation, 10));
   ASSERT_EQ(rows.size(), 11u);
   EXPECT_EQ(rows[0],
             "mode,sigma,energy_fraction,resolved,share_d0.1,share_d0.2,concentration_d0.1,concentration_d0.2,"
@@ -89,7 +85,7 @@ TEST(SvdTables, LocalisationCsvHasOneColumnPerBandAndEmptyCellsForUnresolvedMode
 
 TEST(SvdTables, ModesVtuCarriesScaledModesAndEnergyDensities) {
   const Case& c = smallCase();
-  const std::string vtu = stc::pgd::modesVtu(c.problem.mesh, c.svd, 2, c.localisation.get());
+  const std::string vtu = stc::modesVtu(c.problem.mesh, c.svd, 2, c.localisation.get());
   EXPECT_NE(vtu.find("Name=\"mode_1\""), std::string::npos);
   EXPECT_NE(vtu.find("Name=\"mode_2\""), std::string::npos);
   EXPECT_EQ(vtu.find("Name=\"mode_3\""), std::string::npos);
@@ -99,7 +95,7 @@ TEST(SvdTables, ModesVtuCarriesScaledModesAndEnergyDensities) {
 TEST(SvdTables, DeformedModesDataHasOneClosedPolygonPerElementAndTheAskedAmplitude) {
   const Case& c = smallCase();
   std::vector<double> scales;
-  const std::string data = stc::pgd::deformedModesData(c.problem.mesh, c.svd, 2, c.localisation.get(), 0.1, scales);
+  const std::string data = stc::deformedModesData(c.problem.mesh, c.svd, 2, c.localisation.get(), 0.1, scales);
   ASSERT_EQ(scales.size(), 2u);
   int vertices = 0;
   for (const auto& line : lines(data))
@@ -117,20 +113,20 @@ TEST(SvdFigures, GnuplotDrawsEveryPictureAndLeavesNoTemporary) {
   const Case& c = smallCase();
   const auto dir = std::filesystem::temp_directory_path() / ("stc_svd_figures_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  stc::pgd::SvdFigureSpec spec;
+  stc::SvdFigureSpec spec;
   spec.scene = "small \"seed\"";  // quotes must not break the script
   spec.singular_values = c.svd.size();
   spec.time_functions = 4;
-  stc::writeFileAtomically(dir / "singular_values.csv", stc::pgd::singularValuesCsv(c.svd));
-  stc::writeFileAtomically(dir / "time_functions.csv", stc::pgd::timeFunctionsCsv(c.svd, c.problem.times, 4));
-  stc::writeFileAtomically(dir / "modes_deformed.dat", stc::pgd::deformedModesData(c.problem.mesh, c.svd, 4,
+  stc::writeFileAtomically(dir / "singular_values.csv", stc::singularValuesCsv(c.svd));
+  stc::writeFileAtomically(dir / "time_functions.csv", stc::timeFunctionsCsv(c.svd, c.problem.times, 4));
+  stc::writeFileAtomically(dir / "modes_deformed.dat", stc::deformedModesData(c.problem.mesh, c.svd, 4,
                                                                                    c.localisation.get(), 0.1,
                                                                                    spec.mode_scales));
   for (int i = 0; i < 4; ++i) spec.mode_energy.push_back(c.svd.energyFraction(i));
-  stc::writeFileAtomically(dir / "svd_figures.gp", stc::pgd::svdFiguresScript(spec));
+  stc::writeFileAtomically(dir / "svd_figures.gp", stc::svdFiguresScript(spec));
   std::string detail;
-  EXPECT_EQ(stc::pgd::drawSvdFigures(dir, detail), stc::pgd::FigureStatus::Drawn) << detail;
-  for (const auto& name : stc::pgd::svdFigureNames()) {
+  EXPECT_EQ(stc::drawSvdFigures(dir, detail), stc::FigureStatus::Drawn) << detail;
+  for (const auto& name : stc::svdFigureNames()) {
     EXPECT_GT(std::filesystem::file_size(dir / name), 1000u) << name;
     EXPECT_FALSE(std::filesystem::exists(dir / (name + ".tmp"))) << name;
   }
@@ -144,7 +140,7 @@ TEST(SvdFigures, FailingScriptReplacesNoPicture) {
   stc::writeFileAtomically(dir / "modes.png", "old");
   stc::writeFileAtomically(dir / "svd_figures.gp", "set output 'modes.png'.suffix\nplot 'no_such_file.csv'\n");
   std::string detail;
-  EXPECT_EQ(stc::pgd::drawSvdFigures(dir, detail), stc::pgd::FigureStatus::GnuplotFailed);
+  EXPECT_EQ(stc::drawSvdFigures(dir, detail), stc::FigureStatus::GnuplotFailed);
   EXPECT_NE(detail.find("exit status"), std::string::npos) << detail;
   std::ifstream in(dir / "modes.png");
   std::string content;

@@ -4,10 +4,7 @@
 // of its value, fewer relaxations warm than cold over the sweep, summary totals equal to the CSV's
 // sums, plot or warning. Relaxation counts are deterministic; no wall-clock value is asserted.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -15,7 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "report/csv_table.hpp"
+#include "cli/csv_table.hpp"
+#include "cli/run_program.hpp"
 
 namespace {
 
@@ -24,11 +22,7 @@ namespace fs = std::filesystem;
 using Row = std::map<std::string, std::string>;
 using Table = stc::test::CsvTable;
 using stc::test::readCsv;
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using stc::test::readText;
 
 long sum(const Table& t, const std::string& column) {
   long total = 0;
@@ -47,14 +41,7 @@ struct SweepRun {
 SweepRun runSweep(const fs::path& dir, const std::string& options) {
   SweepRun run;
   run.dir = dir;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  const std::string command = "'" STC_BINARY_DIR "/bin/stcontact' sweep '" STC_SOURCE_DIR
-                              "/examples/scenes/hemicylinder.toml' --set mesh.arc_nodes=21 --set time.steps=21 " +
-                              options + " --quiet --out '" + (dir / "report").string() + "' 2> '" +
-                              (dir / "stderr.txt").string() + "'";
-  const int status = std::system(command.c_str());
-  run.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.exit_status = stc::test::runOnSmallSeed("sweep", options, dir);
   run.csv = readCsv(dir / "report" / "sweep.csv");
   run.summary = readText(dir / "report" / "summary.md");
   run.stderr_text = readText(dir / "stderr.txt");
@@ -63,14 +50,14 @@ SweepRun runSweep(const fs::path& dir, const std::string& options) {
 
 // At indicator tolerance 1e-6 (the scene's) the true error is ~1e-5 or below: the friction sweeps of
 // docs/sweep.md measured error/indicator up to 11 over every converged warm solve at these settings
-// (tests/fas/test_warm_start.cpp says the same); 2e-5 leaves a factor 1.8.
+// (tests/strategies/test_warm_start.cpp says the same); 2e-5 leaves a factor 1.8.
 constexpr double kAgreement = 2e-5;
 
 class SweepCommand : public ::testing::TestWithParam<std::string> {
  protected:
   static void SetUpTestSuite() {
     // ctest runs each test in its own process, possibly in parallel: one folder per process.
-    scratch_ = fs::path(STC_BINARY_DIR) / "test_report_scratch" / ("sweep_" + std::to_string(::getpid()));
+    scratch_ = stc::test::scratchFolder("sweep");
     for (const std::string solver : {"fas-apriori", "latin"})
       runs_[solver] = runSweep(scratch_ / solver, "--solver " + solver + " --set-range contact.friction=0.05:0.5:10");
   }
@@ -145,7 +132,7 @@ TEST_P(SweepCommand, DrawsThePlotOrSaysHowToDrawItLater) {
 INSTANTIATE_TEST_SUITE_P(Solvers, SweepCommand, ::testing::Values("fas-apriori", "latin"));
 
 TEST(SweepCommandOptions, NoIndependentLeavesColdEmptyAndWriteSolutionsWritesEachValue) {
-  const fs::path dir = fs::path(STC_BINARY_DIR) / "test_report_scratch" / ("sweep_options_" + std::to_string(::getpid()));
+  const fs::path dir = stc::test::scratchFolder("sweep_options");
   const SweepRun result = runSweep(dir, "--solver latin --set-range contact.friction=0.1:0.3:3 --no-independent --write-solutions");
   EXPECT_EQ(result.exit_status, 0) << result.stderr_text;
   ASSERT_EQ(result.csv.rows.size(), 3u);

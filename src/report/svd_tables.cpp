@@ -1,4 +1,4 @@
-#include "pgd/svd_tables.hpp"
+#include "src/report/svd_tables.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,10 +7,10 @@
 #include "src/core/input_error.hpp"
 #include "src/io/vtu_writer.hpp"
 
-namespace stc::pgd {
+namespace stc {
 namespace {
 
-void checkModes(const SpaceTimeSvd& svd, int modes) {
+void checkModes(const pgd::SpaceTimeSvd& svd, int modes) {
   if (modes < 1 || modes > svd.size())
     throw InputError("SVD output: " + std::to_string(modes) + " modes asked, " + std::to_string(svd.size()) +
                      " computed");
@@ -23,14 +23,14 @@ std::ostringstream csvStream() {
 }
 
 // Υ_i √σ_i as a 2 × nodes matrix (dofs interleaved: u_x of node j at 2j, u_y at 2j + 1).
-Eigen::MatrixXd scaledMode(const SpaceTimeSvd& svd, int i) {
+Eigen::MatrixXd scaledMode(const pgd::SpaceTimeSvd& svd, int i) {
   const Eigen::VectorXd u = svd.space.col(i) * std::sqrt(svd.sigma[i]);
   return Eigen::Map<const Eigen::MatrixXd>(u.data(), 2, u.size() / 2);
 }
 
 }  // namespace
 
-std::string singularValuesCsv(const SpaceTimeSvd& svd) {
+std::string singularValuesCsv(const pgd::SpaceTimeSvd& svd) {
   auto out = csvStream();
   out << "i,sigma,energy_fraction,cumulative_energy\n";
   for (int i = 0; i < svd.size(); ++i)
@@ -38,7 +38,7 @@ std::string singularValuesCsv(const SpaceTimeSvd& svd) {
   return out.str();
 }
 
-std::string timeFunctionsCsv(const SpaceTimeSvd& svd, const std::vector<double>& times, int modes) {
+std::string timeFunctionsCsv(const pgd::SpaceTimeSvd& svd, const std::vector<double>& times, int modes) {
   checkModes(svd, modes);
   if (static_cast<Eigen::Index>(times.size()) != svd.time.rows())
     throw InputError("SVD output: " + std::to_string(times.size()) + " instants for time functions of " +
@@ -55,7 +55,7 @@ std::string timeFunctionsCsv(const SpaceTimeSvd& svd, const std::vector<double>&
   return out.str();
 }
 
-std::string localisationCsv(const SpaceTimeSvd& svd, const ModeLocalisation& localisation, int modes) {
+std::string localisationCsv(const pgd::SpaceTimeSvd& svd, const ModeLocalisation& localisation, int modes) {
   checkModes(svd, modes);
   const auto& depths = localisation.bandDepths();
   const std::vector<double> area_share = localisation.bandAreaShares();
@@ -79,7 +79,7 @@ std::string localisationCsv(const SpaceTimeSvd& svd, const ModeLocalisation& loc
   return out.str();
 }
 
-std::string modesVtu(const Mesh& mesh, const SpaceTimeSvd& svd, int modes, const ModeLocalisation* localisation) {
+std::string modesVtu(const Mesh& mesh, const pgd::SpaceTimeSvd& svd, int modes, const ModeLocalisation* localisation) {
   checkModes(svd, modes);
   std::vector<PointField> points;
   std::vector<CellField> cells;
@@ -93,7 +93,7 @@ std::string modesVtu(const Mesh& mesh, const SpaceTimeSvd& svd, int modes, const
   return vtuDocument(mesh, points, cells);
 }
 
-std::string deformedModesData(const Mesh& mesh, const SpaceTimeSvd& svd, int modes,
+std::string deformedModesData(const Mesh& mesh, const pgd::SpaceTimeSvd& svd, int modes,
                               const ModeLocalisation* localisation, double max_displacement,
                               std::vector<double>& scales) {
   checkModes(svd, modes);
@@ -124,4 +124,4 @@ std::string deformedModesData(const Mesh& mesh, const SpaceTimeSvd& svd, int mod
   return out.str();
 }
 
-}  // namespace stc::pgd
+}  // namespace stc

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace stc::pgd {
+namespace stc {
 
 struct SvdFigureSpec {
   std::string scene;                 ///< for the titles
@@ -28,7 +28,7 @@ enum class FigureStatus {
   GnuplotFailed,   ///< gnuplot ran and failed: no PNG replaced; `detail` says how
 };
 
-/// Runs `gnuplot -e "suffix='.tmp'" svd_figures.gp` in `dir` (fork, chdir, exec), then renames
+/// Runs `gnuplot -e "suffix='.tmp'" svd_figures.gp` in `dir` (runPlots, gnuplot_runner.hpp), then renames
 /// each <name>.png.tmp to <name>.png; temporaries of a failed run are removed. `detail` receives
 /// a one-line explanation when the status is not Drawn.
 FigureStatus drawSvdFigures(const std::filesystem::path& dir, std::string& detail);
@@ -36,4 +36,4 @@ FigureStatus drawSvdFigures(const std::filesystem::path& dir, std::string& detai
 /// The PNGs drawSvdFigures writes.
 const std::vector<std::string>& svdFigureNames();
 
-}  // namespace stc::pgd
+}  // namespace stc

@@ -3,11 +3,8 @@
 // numbers that are the medians of what work_precision.csv records. No wall-clock value is asserted,
 // only relations between the files.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -16,11 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "fas/solve_by_name.hpp"
-#include "report/csv_table.hpp"
+#include "cli/csv_table.hpp"
+#include "cli/run_program.hpp"
 #include "src/report/comparison.hpp"
 #include "src/report/number_format.hpp"
 #include "src/report/work_precision.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace stc {
 namespace {
@@ -34,16 +32,8 @@ using test::readCsv;
 class CompareCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    // ctest runs each test in its own process, possibly in parallel: one folder per process.
-    out_ = fs::path(STC_BINARY_DIR) / "test_report_scratch" / ("compare_small_" + std::to_string(::getpid()));
-    fs::remove_all(out_);
-    fs::create_directories(out_);
-    const std::string command = "'" STC_BINARY_DIR "/bin/stcontact' compare '" STC_SOURCE_DIR
-                                "/examples/scenes/hemicylinder.toml' --set mesh.arc_nodes=21 --set time.steps=21 "
-                                "--repeats 2 --quiet --out '" +
-                                (out_ / "report").string() + "' 2> '" + (out_ / "stderr.txt").string() + "'";
-    const int status = std::system(command.c_str());
-    exit_status_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    out_ = test::scratchFolder("compare_small");
+    exit_status_ = test::runOnSmallSeed("compare", "--repeats 2", out_);
     work_ = readCsv(out_ / "report" / "work_precision.csv");
     summary_ = readCsv(out_ / "report" / "summary.csv");
   }
@@ -105,18 +95,18 @@ TEST_F(CompareCommand, SummaryCsvHasOneColumnPerTargetAndRatio) {
 }
 
 TEST_F(CompareCommand, EveryAvailableStrategyHasASummaryRowAndBothRepeats) {
-  for (const std::string& solver : fas::availableSolvers()) {
+  for (const std::string& solver : availableSolvers()) {
     ASSERT_NE(summaryRow(solver), nullptr) << solver;
     EXPECT_EQ(summaryRow(solver)->at("repeats"), "2") << solver;
     const auto runs = runsOf(solver);
     ASSERT_EQ(runs.size(), 2u) << solver;
     EXPECT_FALSE(runs[0].points.empty()) << solver;
   }
-  EXPECT_EQ(summary_.rows.size(), fas::availableSolvers().size());
+  EXPECT_EQ(summary_.rows.size(), availableSolvers().size());
 }
 
 TEST_F(CompareCommand, SummaryTimesAreMediansOverRepeatsOfTheFirstReach) {
-  for (const std::string& solver : fas::availableSolvers()) {
+  for (const std::string& solver : availableSolvers()) {
     const auto* row = summaryRow(solver);
     ASSERT_NE(row, nullptr) << solver;
     const auto runs = runsOf(solver);
@@ -134,7 +124,7 @@ TEST_F(CompareCommand, SummaryTimesAreMediansOverRepeatsOfTheFirstReach) {
 }
 
 TEST_F(CompareCommand, ErrorsOfTimedRunsEndAtTheReportedFinalError) {
-  for (const std::string& solver : fas::availableSolvers()) {
+  for (const std::string& solver : availableSolvers()) {
     const auto final_error = number(summaryRow(solver)->at("final_error"));
     ASSERT_TRUE(final_error.has_value()) << solver;
     for (const TimedRun& run : runsOf(solver)) {

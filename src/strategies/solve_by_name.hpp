@@ -12,12 +12,11 @@
 #include "src/solver/error_reference.hpp"
 #include "src/solver/solve_result.hpp"
 
-namespace stc::fas {
+namespace stc {
 
-/// Names accepted today, and all the names of docs/interface.md.
+/// The strategies' names (kSolverNames of src/core/solver_settings.hpp).
 const std::vector<std::string>& availableSolvers();
-const std::vector<std::string>& knownSolvers();
-/// Throws InputError for an unknown name or one not available yet.
+/// Throws InputError for an unknown name.
 void requireAvailable(const std::string& name);
 
 struct StrategyInputs {
@@ -38,10 +37,10 @@ struct StrategyInputs {
 
 /// The FAS options and the a priori basis options a SolverSpec sets (for programs that build the
 /// FAS themselves, e.g. to inspect the basis).
-FasOptions fasOptions(const SolverSpec& spec);
-AprioriBasisOptions aprioriOptions(const SolverSpec& spec);
+fas::FasOptions fasOptions(const SolverSpec& spec);
+fas::AprioriBasisOptions aprioriOptions(const SolverSpec& spec);
 
 SolveResult solveByName(const std::string& name, const Problem& problem, const SolverSpec& spec,
                         const StrategyInputs& inputs = {});
 
-}  // namespace stc::fas
+}  // namespace stc

@@ -1,4 +1,4 @@
-#include "fas/solve_by_name.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 #include <algorithm>
 
@@ -10,22 +10,21 @@
 #include "src/core/input_error.hpp"
 #include "src/solver/incremental_solver.hpp"
 
-namespace stc::fas {
+namespace stc {
 
-FasOptions fasOptions(const SolverSpec& spec) {
-  FasOptions o;
+fas::FasOptions fasOptions(const SolverSpec& spec) {
+  fas::FasOptions o;
   o.tolerance = spec.tolerance;
   o.max_relaxations = spec.max_iterations;
   o.pre_relaxations = spec.fas.pre_relaxations;
   o.post_relaxations = spec.fas.post_relaxations;
   o.coarse_iterations = spec.fas.coarse_iterations;
-  o.residual_vectors = spec.fas.residual_vectors;
-  o.start = spec.fas.coarse_start == "mismatch" ? CoarseStart::InterfaceMismatch : CoarseStart::ZeroCorrection;
+  o.start = spec.fas.coarse_start;
   return o;
 }
 
-AprioriBasisOptions aprioriOptions(const SolverSpec& spec) {
-  AprioriBasisOptions basis;
+fas::AprioriBasisOptions aprioriOptions(const SolverSpec& spec) {
+  fas::AprioriBasisOptions basis;
   basis.residual_vectors = spec.fas.residual_vectors;
   basis.max_modes = spec.fas.pgd_max_modes;
   basis.modes_per_cycle = spec.fas.pgd_modes_per_cycle;
@@ -50,18 +49,18 @@ SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, con
   Eigen::MatrixXd lambda;
   if (inputs.converged_lambda) lambda = *inputs.converged_lambda;
   else lambda = solveIncremental(problem).interface.lambda;
-  const Eigen::MatrixXd modes = aposterioriModes(problem, K, lambda, spec.fas.svd_modes);
+  const Eigen::MatrixXd modes = fas::aposterioriModes(problem, K, lambda, spec.fas.svd_modes);
   latin::GlobalStage global(problem);
-  FixedBasisProvider provider(modes, spec.fas.residual_vectors, global.matrix(), problem.contact.B);
-  return solveFas(problem, global, provider, startOf(problem, inputs), fasOptions(spec), "fas-aposteriori",
+  fas::FixedBasisProvider provider(modes, spec.fas.residual_vectors, global.matrix(), problem.contact.B);
+  return fas::solveFas(problem, global, provider, startOf(problem, inputs), fasOptions(spec), "fas-aposteriori",
                   inputs.reference, inputs.callback);
 }
 
 SolveResult solveApriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
   latin::GlobalStage global(problem);
-  AprioriBasisProvider provider(problem, global.matrix(), aprioriOptions(spec));
+  fas::AprioriBasisProvider provider(problem, global.matrix(), aprioriOptions(spec));
   provider.seed(seedOf(problem, inputs));
-  SolveResult result = solveFas(problem, global, provider, startOf(problem, inputs), fasOptions(spec), "fas-apriori",
+  SolveResult result = fas::solveFas(problem, global, provider, startOf(problem, inputs), fasOptions(spec), "fas-apriori",
                                 inputs.reference, inputs.callback);
   result.spatial_modes = provider.modes().modes();
   return result;
@@ -94,22 +93,14 @@ std::string joined(const std::vector<std::string>& names) {
 }  // namespace
 
 const std::vector<std::string>& availableSolvers() {
-  static const std::vector<std::string> names = {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori", "incremental"};
-  return names;
-}
-
-const std::vector<std::string>& knownSolvers() {
-  static const std::vector<std::string> names = {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori", "incremental"};
+  static const std::vector<std::string> names(kSolverNames.begin(), kSolverNames.end());
   return names;
 }
 
 void requireAvailable(const std::string& name) {
-  auto has = [&](const std::vector<std::string>& list) { return std::find(list.begin(), list.end(), name) != list.end(); };
-  if (has(availableSolvers())) return;
-  if (has(knownSolvers()))
-    throw InputError("solver '" + name + "' is not available in this version yet (available: " +
-                     joined(availableSolvers()) + ")");
-  throw InputError("unknown solver '" + name + "' (known: " + joined(knownSolvers()) + ")");
+  const auto& names = availableSolvers();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw InputError("unknown solver '" + name + "' (known: " + joined(names) + ")");
 }
 
 SolveResult solveByName(const std::string& name, const Problem& problem, const SolverSpec& spec,
@@ -122,4 +113,4 @@ SolveResult solveByName(const std::string& name, const Problem& problem, const S
   return solveLatinFrom(problem, spec, inputs);
 }
 
-}  // namespace stc::fas
+}  // namespace stc

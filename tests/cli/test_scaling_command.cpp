@@ -4,20 +4,18 @@
 // it, and growth exponents in the report that are the fits of the CSV's times. No wall-clock value
 // is asserted, only relations between the files.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
-#include "fas/solve_by_name.hpp"
-#include "report/csv_table.hpp"
+#include "cli/csv_table.hpp"
+#include "cli/run_program.hpp"
 #include "src/report/growth_fit.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace stc {
 namespace {
@@ -33,15 +31,8 @@ constexpr double kTarget = 1e-4;
 class ScalingCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    out_ = fs::path(STC_BINARY_DIR) / "test_report_scratch" / ("scaling_tiny_" + std::to_string(::getpid()));
-    fs::remove_all(out_);
-    fs::create_directories(out_);
-    const std::string command = "'" STC_BINARY_DIR "/bin/stcontact' scaling '" STC_SOURCE_DIR
-                                "/examples/scenes/hemicylinder.toml' --set mesh.arc_nodes=21 --set time.steps=21 "
-                                "--arc-nodes 11,21 --steps 11,21 --repeats 1 --quiet --out '" +
-                                (out_ / "report").string() + "' 2> '" + (out_ / "stderr.txt").string() + "'";
-    const int status = std::system(command.c_str());
-    exit_status_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    out_ = test::scratchFolder("scaling_tiny");
+    exit_status_ = test::runOnSmallSeed("scaling", "--arc-nodes 11,21 --steps 11,21 --repeats 1", out_);
     rows_ = readCsv(out_ / "report" / "scaling.csv");
     summary_ = readText(out_ / "report" / "summary.md");
   }
@@ -75,7 +66,7 @@ TEST_F(ScalingCommand, ExitsZeroAndWritesTheReportAndOneComparisonPerSize) {
 }
 
 TEST_F(ScalingCommand, HasOneRowPerSeriesSizeAndStrategy) {
-  const std::size_t solvers = fas::availableSolvers().size();
+  const std::size_t solvers = availableSolvers().size();
   EXPECT_EQ(rows_.rows.size(), 4 * solvers);
   for (const char* column : {"series", "arc_nodes", "dofs", "contact_nodes", "steps", "solver", "status",
                              "time_to_target_s", "relaxations_to_target", "sparse_solves_to_target", "peak_rss_mb"})
@@ -123,7 +114,7 @@ std::vector<std::string> cellsOf(const std::string& line) {
 }
 
 TEST_F(ScalingCommand, ReportsTheFittedExponentOfEveryStrategyThatReachedTwoSizes) {
-  for (const std::string& solver : fas::availableSolvers()) {
+  for (const std::string& solver : availableSolvers()) {
     const auto at = summary_.find("| " + solver + " |", summary_.find("## Growth exponents"));
     ASSERT_NE(at, std::string::npos) << solver;
     const auto cells = cellsOf(summary_.substr(at, summary_.find('\n', at) - at));

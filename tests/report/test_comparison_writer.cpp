@@ -9,6 +9,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "report/text_lines.hpp"
+
 namespace stc {
 namespace {
 
@@ -40,12 +42,7 @@ Comparison handMade() {
 
 int count(const std::string& text, char c) { return static_cast<int>(std::count(text.begin(), text.end(), c)); }
 
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
+using test::lines;
 
 TEST(SummaryMarkdown, EveryTableRowHasTheHeadersNumberOfCells) {
   const auto all = lines(summaryMarkdown(handMade()));

@@ -2,11 +2,11 @@
 #include <gtest/gtest.h>
 
 #include "fas/apriori_basis.hpp"
-#include "fas/solve_by_name.hpp"
 #include "latin/global_stage.hpp"
+#include "solver/seed_scene.hpp"
 #include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
-#include "solver/seed_scene.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace {
 
@@ -28,9 +28,9 @@ stc::SolveResult solve(const std::string& name, double tolerance) {
   const auto& f = fixture();
   stc::SolverSpec spec = f.scene.solver;
   spec.tolerance = tolerance;
-  stc::fas::StrategyInputs inputs;
+  stc::StrategyInputs inputs;
   inputs.reference = &f.reference;
-  return stc::fas::solveByName(name, f.problem, spec, inputs);
+  return stc::solveByName(name, f.problem, spec, inputs);
 }
 
 double relativeForceDifference(const stc::SolveResult& r) {

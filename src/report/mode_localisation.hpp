@@ -25,7 +25,7 @@
 #include "src/problem/problem.hpp"
 #include "src/spacetime/interface_history.hpp"
 
-namespace stc::pgd {
+namespace stc {
 
 /// The potential contact nodes closed at some instant, and the boundary edges between two of them.
 struct ContactZone {
@@ -73,4 +73,4 @@ class ModeLocalisation {
   std::vector<double> depths_;
 };
 
-}  // namespace stc::pgd
+}  // namespace stc
