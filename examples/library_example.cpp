@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "fas/solve_by_name.hpp"
 #include "src/core/input_error.hpp"
 #include "src/problem/problem.hpp"
 #include "src/scene/scene_reader.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 int main(int argc, char** argv) {
   if (argc < 2) {
@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
     const stc::Scene scene = stc::readScene(argv[1], overrides);          // 1. read and validate
     const stc::Problem problem = stc::buildProblem(scene);                // 2. K, loads, contact interface
     const std::string name = argc > 2 ? argv[2] : scene.solver.name;      //    e.g. "fas-apriori"
-    const stc::SolveResult result = stc::fas::solveByName(name, problem, scene.solver);  // 3. solve
+    const stc::SolveResult result = stc::solveByName(name, problem, scene.solver);  // 3. solve
     const stc::SolveSummary& summary = result.summary;                    // 4. report
     std::cout << summary.solver << ": " << stc::toString(summary.termination) << " (" << summary.message
               << ")\n  " << problem.numDofs() << " dofs, " << problem.contact.size() << " contact nodes, "
