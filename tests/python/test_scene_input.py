@@ -70,7 +70,7 @@ def test_bad_dict_values_give_the_programs_message(cli, tmp_path, section, key, 
     assert key in expected
 
 
-def test_a_missing_section_in_a_dict_is_named(cli, tmp_path):
+def test_a_missing_section_in_a_dict_is_named():
     scene = seed_dict()
     del scene["material"]
     with pytest.raises(ValueError, match="missing required key 'material'"):

@@ -5,7 +5,6 @@ import numpy as np
 import pytest
 
 import stcontact
-from conftest import SEED_SCENE, SMALL
 
 
 @pytest.fixture(scope="module")

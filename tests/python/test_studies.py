@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import stcontact
-from conftest import SEED_SCENE, SMALL, read_csv, run_cli
+from conftest import SEED_SCENE, SMALL, cli_error, read_csv, run_cli
 
 SMALL_ARGS = [arg for s in SMALL for arg in ("--set", s)]
 
@@ -28,9 +28,11 @@ def test_svd_equals_the_programs(cli, small_scene, tmp_path):
     assert result.modes_for_energy["99.9%"] is not None and result.modes_for_energy["99.9%"] <= 40
 
 
-def test_svd_refuses_what_the_program_refuses(cli, small_scene):
-    with pytest.raises(ValueError, match=r"^--modes = 41 must be in \[1, 40\]"):
+def test_svd_refuses_what_the_program_refuses(cli, small_scene, tmp_path):
+    expected = cli_error(cli, "svd", SEED_SCENE, *SMALL_ARGS, "--modes", 41, "--out", tmp_path)
+    with pytest.raises(ValueError) as raised:
         stcontact.svd(small_scene, modes=41)
+    assert str(raised.value) == expected and expected.startswith("--modes = 41 must be in [1, 40]")
 
 
 @pytest.fixture(scope="module")
