@@ -56,7 +56,7 @@ RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool meas
   inputs.callback = [&](const IterationRecord& r) {
     if (!setup_s) setup_s = secondsSince(start) - r.wall_s;
     const bool shown = show(r);
-    return shown && (!go_on || go_on(r));
+    return shown && (!go_on || go_on(r)) && (!c.keep_going || c.keep_going(r));
   };
   RunOutcome out;
   out.result = solveByName(solver, c.problem, c.spec, inputs);

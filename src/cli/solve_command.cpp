@@ -18,24 +18,13 @@
 namespace stc::cli {
 namespace {
 
-// Beyond this many contact nodes the dense Delassus operator of the reference (32 n_C² bytes)
-// and its per-iteration error evaluation become a noticeable cost: skip the reference.
-constexpr int kMaxReferenceContactNodes = 1000;
-
-// A reference that fails (Newton stops at some instant) is not an internal failure: the solve
-// goes on without a true error, and a warning says why.
 std::unique_ptr<ErrorReference> computeReference(const Problem& problem, bool quiet) {
   Progress progress("reference (incremental)", !quiet);
-  SolveResult ref = solveIncremental(problem, {}, progress.callback());
+  std::string warning;
+  std::unique_ptr<ErrorReference> reference = solveReference(problem, progress.callback(), warning);
   progress.done();
-  if (!ref.summary.converged()) {
-    std::cerr << "warning: no true error: the incremental reference did not converge ("
-              << ref.summary.message << ")" << std::endl;
-    return nullptr;
-  }
-  const SpdFactor factor(problem.stiffness_free, "K_ff");
-  const CondensedInterface condensed = CondensedInterface::build(problem, factor);
-  return std::make_unique<ErrorReference>(problem, factor, condensed.delassus, ref.interface.lambda);
+  if (!warning.empty()) std::cerr << "warning: " << warning << std::endl;
+  return reference;
 }
 
 SolveResult runSolver(const std::string& name, const Problem& problem, const Scene& scene,
@@ -51,6 +40,20 @@ SolveResult runSolver(const std::string& name, const Problem& problem, const Sce
 }
 
 }  // namespace
+
+// A reference that fails (Newton stops at some instant) is not an internal failure: the solve
+// goes on without a true error, and the warning says why.
+std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
+                                               std::string& warning) {
+  SolveResult ref = solveIncremental(problem, {}, callback);
+  if (!ref.summary.converged()) {
+    warning = "no true error: the incremental reference did not converge (" + ref.summary.message + ")";
+    return nullptr;
+  }
+  const SpdFactor factor(problem.stiffness_free, "K_ff");
+  const CondensedInterface condensed = CondensedInterface::build(problem, factor);
+  return std::make_unique<ErrorReference>(problem, factor, condensed.delassus, ref.interface.lambda);
+}
 
 std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, const std::optional<std::string>& solver,
                                            const std::optional<double>& tolerance,

@@ -2,11 +2,21 @@
 // The contact output tables of docs/interface.md: reactions.csv (one row per instant) and contact.csv
 // (one row per contact node and instant), computed from a solution's interface histories.
 #include <ostream>
+#include <vector>
 
 #include "src/problem/problem.hpp"
 #include "src/solver/solve_result.hpp"
 
 namespace stc {
+
+/// The rows of reactions.csv as columns, one entry per instant: the totals of the contact forces on
+/// the body, the x-range of the closed nodes (NaN when none is closed), their count and the count of
+/// slipping ones. What writeReactionsCsv writes and the Python module returns (docs/python.md).
+struct ReactionTable {
+  std::vector<double> t, normal_force, tangential_force, contact_xmin, contact_xmax;
+  std::vector<int> n_contact, n_slip;
+};
+ReactionTable reactionTable(const Problem& problem, const SolveResult& result);
 
 /// step,t,normal_force,tangential_force,contact_xmin,contact_xmax,n_contact,n_slip — totals of the
 /// contact forces on the body; x-range, count of closed nodes and count of slipping nodes.
