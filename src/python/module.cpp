@@ -5,10 +5,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "fas/solve_by_name.hpp"
 #include "src/core/input_error.hpp"
 #include "src/io/output_error.hpp"
 #include "src/python/bindings.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace {
 
@@ -37,7 +37,7 @@ PYBIND11_MODULE(_core, module) {
       PyErr_SetString(PyExc_OSError, oneLine(e.what()).c_str());
     }
   });
-  module.def("available_solvers", &stc::fas::availableSolvers, "The strategies solve() and compare() accept.");
+  module.def("available_solvers", &stc::availableSolvers, "The strategies solve() and compare() accept.");
   stc::python::bindScene(module);
   stc::python::bindSolve(module);
   stc::python::bindStudies(module);

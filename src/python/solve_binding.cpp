@@ -8,7 +8,6 @@
 
 #include <sstream>
 
-#include "fas/solve_by_name.hpp"
 #include "pgd/displacement_history.hpp"
 #include "src/cli/commands.hpp"
 #include "src/io/atomic_file.hpp"
@@ -19,6 +18,7 @@
 #include "src/python/numpy_arrays.hpp"
 #include "src/python/scene_handle.hpp"
 #include "src/solver/warm_start.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace stc::python {
 namespace {
@@ -49,7 +49,7 @@ struct ProblemRef {
 /// The start history and basis seed for `problem`; ValueError when a part is missing or its sizes
 /// do not fit (stc::requireFits names both sizes).
 void applyWarmStart(WarmStart& warm, const Problem& problem, std::optional<InterfaceHistory>& start,
-                    fas::StrategyInputs& inputs) {
+                    StrategyInputs& inputs) {
   if (warm.forces.has_value() != warm.displacements.has_value())
     throw std::invalid_argument("a warm start needs both the interface forces and the interface displacements");
   if (warm.forces) {
@@ -124,7 +124,7 @@ py::dict resultDict(const ProblemPtr& problem, const Scene& scene, SolveResult&&
 }
 
 /// The reference (unless not wanted, see solve_command.cpp), then the strategy; the lock released.
-SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_reference, fas::StrategyInputs inputs,
+SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_reference, StrategyInputs inputs,
                      CallbackBridge& bridge, std::string& warning) {
   py::gil_scoped_release unlocked;
   std::unique_ptr<ErrorReference> reference;
@@ -135,7 +135,7 @@ SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_refer
   inputs.reference = reference.get();
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
   inputs.callback = bridge.withUserCallback();
-  return fas::solveByName(scene.solver.name, problem, scene.solver, inputs);
+  return solveByName(scene.solver.name, problem, scene.solver, inputs);
 }
 
 py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart warm, py::object callback) {
@@ -143,11 +143,11 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   const SceneHandle run = handle.withOverrides(
       cli::withSolverOptions(options.sets, options.solver, options.tolerance, options.max_iterations));
   const Scene& scene = run.scene();
-  fas::requireAvailable(scene.solver.name);
+  requireAvailable(scene.solver.name);
   const ProblemPtr problem = run.problem();
   if (options.out) ensureWritableDirectory(*options.out);  // fail before the solve, not after
   std::optional<InterfaceHistory> start;
-  fas::StrategyInputs inputs;
+  StrategyInputs inputs;
   applyWarmStart(warm, *problem, start, inputs);
 
   CallbackBridge bridge(std::move(callback));
