@@ -1,6 +1,6 @@
 // Cost of one LATIN iteration against the bare multi-right-hand-side CHOLMOD solve it contains
-// (issue: "overhead of at most 30% over that solve"), on the seed scene (1088 free dofs, 101
-// contact nodes, 201 instants), κ = 3, on one thread (the ratio of issue 3; threads: bench_stages).
+// (the goal of docs/latin_iteration_cost.md: "overhead of at most 30% over that solve"), on the seed
+// scene (1088 free dofs, 101 contact nodes, 201 instants), κ = 3, on one thread (threads: bench_stages).
 //   cmake -B build -DSTC_BUILD_BENCHMARKS=ON && cmake --build build --target bench_latin
 //   build/bench/bench_latin --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -20,7 +20,7 @@ const stc::Problem& seedProblem() {
   return problem;
 }
 
-constexpr int kBlock = 32;  // LatinOptions::block_size default
+constexpr int kBlock = stc::defaults::block_size;  // LatinOptions::block_size default
 
 // A state after a few iterations, so that the local stage sees open, stick and slip nodes.
 struct Iterate {

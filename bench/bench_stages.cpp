@@ -1,4 +1,4 @@
-// Micro-benchmarks of the pieces of a solve, each on the seed scene (arc_nodes 101: n = 1088 free
+// Micro-benchmarks of the pieces of a solve (docs/micro_benchmarks.md, docs/threads.md), each on the seed scene (arc_nodes 101: n = 1088 free
 // dofs, n_C = 101, m = 201) and on a finer mesh of it (arc_nodes 401), on 1 and 2 threads where the
 // piece is threaded; every row is labelled with its sizes.
 //   LocalStage       the contact law on all nodes × instants (docs/method.md §2)

@@ -27,6 +27,9 @@ stc_require(GSL_FOUND libgsl-dev "GSL")
 find_package(tomlplusplus QUIET)
 stc_require(tomlplusplus_FOUND libtomlplusplus-dev "toml++")
 
+find_package(nlohmann_json 3 QUIET)
+stc_require(nlohmann_json_FOUND nlohmann-json3-dev "nlohmann-json")
+
 find_package(CLI11 QUIET)
 stc_require(CLI11_FOUND libcli11-dev "CLI11")
 

@@ -1,11 +1,16 @@
 # stc_add_library(NAME folder DEPS ...): one library per top-level folder, sources globbed from it
 # (the folder *is* the component), includes relative to the repository root ("latin/...").
+# EXCLUDE names subfolders that are other targets: neither compiled nor installed with this one.
 function(stc_add_library name)
   cmake_parse_arguments(ARG "" "" "DEPS;EXCLUDE" ${ARGN})
-  file(GLOB_RECURSE sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.cpp")
-  foreach(pattern IN LISTS ARG_EXCLUDE)
-    list(FILTER sources EXCLUDE REGEX "${pattern}")
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS RELATIVE "${CMAKE_CURRENT_SOURCE_DIR}"
+       "${CMAKE_CURRENT_SOURCE_DIR}/*.cpp")
+  set(excluded_headers)
+  foreach(subfolder IN LISTS ARG_EXCLUDE)
+    list(FILTER sources EXCLUDE REGEX "^${subfolder}/")
+    list(APPEND excluded_headers PATTERN "${subfolder}" EXCLUDE)
   endforeach()
+  list(TRANSFORM sources PREPEND "${CMAKE_CURRENT_SOURCE_DIR}/")
   set(target stcontact_${name})
   if(sources)
     add_library(${target} ${sources})
@@ -29,6 +34,6 @@ function(stc_add_library name)
   file(RELATIVE_PATH folder "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
   install(DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}/"
           DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/stcontact/${folder}"
-          FILES_MATCHING PATTERN "*.hpp" PATTERN "cli" EXCLUDE)
+          FILES_MATCHING PATTERN "*.hpp" ${excluded_headers})
   set_property(GLOBAL APPEND PROPERTY STC_EXPORTED_TARGETS ${target})
 endfunction()

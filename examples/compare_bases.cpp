@@ -1,5 +1,5 @@
 // Description
-//   A posteriori vs a priori coarse bases (design card; docs/method.md §4–5; issue 6). On one scene,
+//   A posteriori vs a priori coarse bases (docs/method.md §4–5; report: docs/compare_bases.md). On one scene,
 //   runs `latin`, `latin-pgd`, `fas-aposteriori`, `fas-apriori` with the true error of every
 //   relaxation, and `incremental` as the reference point; times each strategy (median of --repeats
 //   runs without the error evaluation); counts the a posteriori SVD (and the solve it needs) apart;
@@ -18,7 +18,6 @@
 //   incremental to 1e-5 in energy, and reach 1e-4 in fewer relaxations than latin), 3 internal.
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -31,13 +30,14 @@
 #include "fas/aposteriori_basis.hpp"
 #include "fas/apriori_basis.hpp"
 #include "fas/fas_solver.hpp"
-#include "fas/solve_by_name.hpp"
 #include "pgd/basis_verification.hpp"
 #include "pgd/displacement_history.hpp"
 #include "src/core/input_error.hpp"
+#include "src/report/gnuplot_runner.hpp"
 #include "src/scene/scene_reader.hpp"
 #include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace fs = std::filesystem;
 
@@ -103,15 +103,15 @@ struct Run {
 };
 
 Run runStrategy(const Setup& st, const std::string& name, int repeats) {
-  stc::fas::StrategyInputs with_error;
+  stc::StrategyInputs with_error;
   with_error.reference = st.reference.get();
   with_error.converged_lambda = &st.incremental.interface.lambda;
-  Run run{name, stc::fas::solveByName(name, st.problem, st.scene.solver, with_error).summary, 0.0};
-  stc::fas::StrategyInputs timed;
+  Run run{name, stc::solveByName(name, st.problem, st.scene.solver, with_error).summary, 0.0};
+  stc::StrategyInputs timed;
   timed.converged_lambda = &st.incremental.interface.lambda;
   std::vector<double> times;
   for (int i = 0; i < repeats; ++i)
-    times.push_back(stc::fas::solveByName(name, st.problem, st.scene.solver, timed).summary.wall_s);
+    times.push_back(stc::solveByName(name, st.problem, st.scene.solver, timed).summary.wall_s);
   run.median_s = median(times);
   return run;
 }
@@ -147,7 +147,7 @@ struct Verification {
 Verification verify(const Setup& st) {
   // The energy modes of the a priori expansion at the end of the solve (pgd/separated_history.hpp):
   // what the coarse space takes its leading modes from.
-  const Eigen::MatrixXd apriori = stc::fas::solveByName("fas-apriori", st.problem, st.scene.solver).spatial_modes;
+  const Eigen::MatrixXd apriori = stc::solveByName("fas-apriori", st.problem, st.scene.solver).spatial_modes;
   const Eigen::MatrixXd U = stc::displacementsFromForces(st.problem, *st.K, st.incremental.interface.lambda);
   const Eigen::MatrixXd svd = stc::fas::aposterioriModes(st.problem, *st.K, st.incremental.interface.lambda, 20);
   const auto& M = st.problem.stiffness_free;
@@ -225,7 +225,8 @@ void writeSummary(const fs::path& file, const Setup& st, const std::vector<Run>&
 
 void plot(const fs::path& dir) {
   std::ofstream gp(dir / "compare_bases.gp");
-  gp << "set terminal pngcairo size 1200,480 font ',10'\nset output 'compare_bases.png'\n"
+  gp << "if (!exists('suffix')) suffix = ''\n"
+     << "set terminal pngcairo size 1200,480 font ',10'\nset output 'compare_bases.png'.suffix\n"
      << "set datafile separator ','\nset logscale y\nset format y '10^{%L}'\nset key top right\n"
      << "set multiplot layout 1,2\nset xlabel 'fine relaxations'\nset ylabel 'true error (energy, relative)'\n"
      << "files = '" ;
@@ -234,9 +235,10 @@ void plot(const fs::path& dir) {
      << "set xlabel 'wall time (s)'\nset logscale x\n"
      << "plot for [f in files] f.'.csv' using 5:4 with linespoints pt 7 ps 0.4 title f\nunset multiplot\n";
   gp.close();
-  const std::string cmd = "cd '" + dir.string() + "' && gnuplot compare_bases.gp";
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0 || std::system(cmd.c_str()) != 0)
-    std::cerr << "warning: no figure (gnuplot missing or failed); draw it later with: " << cmd << "\n";
+  const stc::PlotJob job{"compare_bases.gp", "", {"compare_bases.png"}, false};
+  if (stc::runPlots(dir, job).status != stc::PlotStatus::Drawn)
+    std::cerr << "warning: no figure (gnuplot missing or failed); draw it later with: cd '" << dir.string()
+              << "' && " << stc::plotCommand(job) << "\n";
 }
 
 Setup setUp(const Options& o) {

@@ -22,7 +22,6 @@
 // Exit status: 0 ok, 1 bad input, 2 the check of step 7 failed, 3 internal failure.
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -42,6 +41,7 @@
 #include "latin/latin_solver.hpp"
 #include "latin/local_stage.hpp"
 #include "src/core/input_error.hpp"
+#include "src/report/gnuplot_runner.hpp"
 #include "src/scene/scene_reader.hpp"
 #include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
@@ -170,7 +170,6 @@ stc::SolveResult runOne(const Study& st, const RunSpec& r, stc::latin::GlobalSta
   o.max_relaxations = cap;
   o.pre_relaxations = o.post_relaxations = r.nu;
   o.coarse_iterations = r.ic;
-  o.residual_vectors = r.res;
   o.start = r.start;
   o.stagnation_window = 150;
   o.safeguard = st.safeguard;
@@ -419,13 +418,14 @@ std::string labelOf(const std::vector<Outcome>& all, const std::string& name) {
 void writeGnuplot(const fs::path& file, const std::vector<Figure>& figs, const std::vector<Outcome>& all, int cap) {
   std::ofstream gp(file);
   gp << "# Written by fas_aposteriori_study: run with `gnuplot fas_study.gp` in this folder.\n"
+     << "if (!exists('suffix')) suffix = ''\n"
      << "set datafile separator ','\nset logscale y\nset format y '1e%T'\nset grid\nset yrange [1e-9:3]\n"
      << "set xrange [0:" << std::min(cap, 200) << "]  # stalled runs go on to the cap in their CSV\n"
      << "set xlabel 'fine relaxations'\nset ylabel 'true error (relative energy)'\n"
      << "set key top right font ',8' opaque\n";
   for (const auto& f : figs) {
     gp << "set terminal pngcairo size " << 560 * f.panels.size() << ",440 font ',9' noenhanced\nset output '" << f.file
-       << "'\nset multiplot layout 1," << f.panels.size() << "\n";
+       << "'.suffix\nset multiplot layout 1," << f.panels.size() << "\n";
     for (const auto& p : f.panels) {
       gp << "set title '" << p.title << "'\nset key " << p.key << "\nplot ";
       for (std::size_t i = 0; i < p.runs.size(); ++i) {
@@ -442,12 +442,14 @@ void writeGnuplot(const fs::path& file, const std::vector<Figure>& figs, const s
 
 void drawFigures(const fs::path& out, const std::vector<Figure>& figs, const std::vector<Outcome>& all, int cap) {
   writeGnuplot(out / "fas_study.gp", figs, all, cap);
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+  std::vector<std::string> files;
+  for (const auto& f : figs) files.push_back(f.file);
+  const stc::PlotStatus status = stc::runPlots(out, {"fas_study.gp", "", files, false}).status;
+  if (status == stc::PlotStatus::GnuplotMissing) {
     std::cout << "   gnuplot not found: figures skipped (CSV, summary.md and fas_study.gp are written)\n";
     return;
   }
-  const std::string cmd = "cd '" + out.string() + "' && gnuplot fas_study.gp";
-  if (std::system(cmd.c_str()) != 0)
+  if (status != stc::PlotStatus::Drawn)
     std::cout << "   gnuplot failed (see its message above)\n";
   else
     for (const auto& f : figs) std::cout << "   " << (out / f.file).string() << "\n";

@@ -3,16 +3,16 @@
 #include <Eigen/QR>
 
 #include "pgd/separated_history.hpp"
-#include "src/core/input_error.hpp"
+#include "src/core/option_check.hpp"
 
 namespace stc::fas {
 
 void AprioriBasisOptions::validate() const {
-  if (modes < 0) throw InputError("a priori basis: modes = " + std::to_string(modes) + " must be >= 0");
-  if (increment_modes < 0)
-    throw InputError("a priori basis: increment_modes = " + std::to_string(increment_modes) + " must be >= 0");
-  if (modes + increment_modes < 1)
-    throw InputError("a priori basis: modes + increment_modes = 0: the coarse space would be empty");
+  constexpr const char* kOwner = "a priori basis";
+  requireOption(modes >= 0, kOwner, "modes", modes, "must be >= 0");
+  requireOption(increment_modes >= 0, kOwner, "increment_modes", increment_modes, "must be >= 0");
+  requireOption(modes + increment_modes >= 1, kOwner, "modes + increment_modes", modes + increment_modes,
+                "must be >= 1 (an empty coarse space)");
 }
 
 AprioriBasisProvider::AprioriBasisProvider(const pgd::ControlledGlobalStage& stage, AprioriBasisOptions options)

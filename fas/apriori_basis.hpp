@@ -14,12 +14,13 @@
 
 #include "fas/basis_provider.hpp"
 #include "pgd/controlled_global_stage.hpp"
+#include "src/core/solver_settings.hpp"
 
 namespace stc::fas {
 
 struct AprioriBasisOptions {
-  int modes = 10;            ///< leading energy-SVD modes of ũ in the coarse space
-  int increment_modes = 10;  ///< leading modes of ũ's change since the previous coarse step
+  int modes = defaults::pgd_max_modes;              ///< leading energy-SVD modes of ũ in the coarse space
+  int increment_modes = defaults::residual_vectors;  ///< leading modes of ũ's change since the last coarse step
 
   void validate() const;     ///< throws InputError naming the field
 };

@@ -1,27 +1,21 @@
 #include "fas/fas_options.hpp"
 
 #include <cmath>
-#include <string>
 
-#include "src/core/input_error.hpp"
+#include "src/core/option_check.hpp"
 
 namespace stc::fas {
-namespace {
-void require(bool ok, const char* field, double value, const char* rule) {
-  if (!ok) throw InputError(std::string("FAS option ") + field + " = " + std::to_string(value) + ": " + rule);
-}
-}  // namespace
 
 void FasOptions::validate() const {
-  require(tolerance > 0.0 && std::isfinite(tolerance), "tolerance", tolerance, "must be > 0");
-  require(max_relaxations >= 1, "max_relaxations", max_relaxations, "must be >= 1");
-  require(pre_relaxations >= 1, "pre_relaxations", pre_relaxations, "must be >= 1 (the coarse step needs a global stage)");
-  require(post_relaxations >= 0, "post_relaxations", post_relaxations, "must be >= 0");
-  require(coarse_iterations >= 1, "coarse_iterations", coarse_iterations, "must be >= 1");
-  require(residual_vectors >= 0, "residual_vectors", residual_vectors, "must be >= 0");
-  require(max_skip >= 1, "max_skip", max_skip, "must be >= 1");
-  require(stagnation_window >= 0, "stagnation_window", stagnation_window, "must be >= 0");
-  require(block_size >= 1, "block_size", block_size, "must be >= 1");
+  constexpr const char* kOwner = "FAS";
+  requireOption(tolerance > 0.0 && std::isfinite(tolerance), kOwner, "tolerance", tolerance, "must be > 0");
+  requireOption(max_relaxations >= 1, kOwner, "max_relaxations", max_relaxations, "must be >= 1");
+  requireOption(pre_relaxations >= 1, kOwner, "pre_relaxations", pre_relaxations,
+                "must be >= 1 (the coarse step needs a global stage)");
+  requireOption(post_relaxations >= 0, kOwner, "post_relaxations", post_relaxations, "must be >= 0");
+  requireOption(coarse_iterations >= 1, kOwner, "coarse_iterations", coarse_iterations, "must be >= 1");
+  requireOption(max_skip >= 1, kOwner, "max_skip", max_skip, "must be >= 1");
+  requireOption(stagnation_window >= 0, kOwner, "stagnation_window", stagnation_window, "must be >= 0");
 }
 
 }  // namespace stc::fas

@@ -1,21 +1,24 @@
 #pragma once
 // Options of the two-level FAS with LATIN as smoother (docs/method.md §4; seed paper §4.1–4.2).
+// Defaults: src/core/solver_settings.hpp. The coarse space's own options (residual vectors, modes)
+// belong to its BasisProvider, the block size of the solves to the latin::GlobalStage the caller
+// builds.
+#include "src/core/solver_settings.hpp"
+
 namespace stc::fas {
 
-/// How the coarse step starts from s̃ = (ũ, λ̃) (docs/method.md §4, "How the coarse step starts").
-enum class CoarseStart {
-  ZeroCorrection,     ///< (a) Δv̂ = 0, Δλ̂ = 0, taking v = Bũ (discards v̂ − Bũ)
-  InterfaceMismatch,  ///< (b) Δv̂ = v̂ − Bũ, Δλ̂ = 0 (exact when the coarse space is the whole space)
-};
+using stc::CoarseStart;
 
 struct FasOptions {
-  double tolerance = 1e-6;        ///< on the fine-level LATIN indicator, tested after every relaxation
-  int max_relaxations = 5000;     ///< fine relaxations in all (the cost unit of the seed's Figs. 4–5)
-  int pre_relaxations = 1;        ///< ν1 >= 1: the seed's Figs. 4–5 use ν1 = ν2 = 1
-  int post_relaxations = 1;       ///< ν2 >= 0
-  int coarse_iterations = 15;     ///< i_C: coarse linear stage + fine local stage pairs (seed: 15)
-  int residual_vectors = 15;      ///< N_res, renewed every cycle (seed §4.3: 15)
-  CoarseStart start = CoarseStart::ZeroCorrection;
+  /// On the fine-level LATIN indicator, tested after every relaxation.
+  double tolerance = defaults::tolerance;
+  /// Fine relaxations in all (the cost unit of the seed's Figs. 4–5).
+  int max_relaxations = defaults::max_iterations;
+  int pre_relaxations = defaults::pre_relaxations;    ///< ν1 >= 1: the seed's Figs. 4–5 use ν1 = ν2 = 1
+  int post_relaxations = defaults::post_relaxations;  ///< ν2 >= 0
+  /// i_C: coarse linear stage + fine local stage pairs (seed: 15).
+  int coarse_iterations = defaults::coarse_iterations;
+  CoarseStart start = defaults::coarse_start;
   /// Safeguard: a coarse correction after which the next relaxation's indicator exceeds the one
   /// before the coarse step is rejected (the pre-coarse local stage is restored) and the next
   /// coarse steps are skipped for 1, 2, 4, … up to max_skip cycles while rejections repeat. Without
@@ -23,8 +26,7 @@ struct FasOptions {
   /// a 2-cycle at true error 0.1-0.2 (docs/compare_bases.md). Off: the seed's plain cycle.
   bool safeguard = true;
   int max_skip = 8;               ///< >= 1, longest run of skipped coarse steps
-  int stagnation_window = 500;    ///< relaxations without a 1% decrease of η before giving up (0: never)
-  int block_size = 32;            ///< instants per multi-right-hand-side solve
+  int stagnation_window = defaults::stagnation_window;  ///< relaxations without a 1% decrease of η (0: never)
 
   void validate() const;  ///< throws InputError naming the field
 };

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "latin/linear_stage.hpp"
+#include "src/core/solver_settings.hpp"
 #include "src/linalg/spd_factor.hpp"
 #include "src/problem/problem.hpp"
 #include "src/spacetime/interface_history.hpp"
@@ -20,7 +21,7 @@ namespace stc::latin {
 class GlobalStage : public LinearStage {
  public:
   /// Factorises K_ff + Bᵀ k B with k = problem.contact.search_direction.
-  explicit GlobalStage(const Problem& problem, int block_size = 32);
+  explicit GlobalStage(const Problem& problem, int block_size = defaults::block_size);
 
   /// s = global stage of ŝ (all instants). Adds m to the sparse-solve count.
   void solve(const InterfaceHistory& hat, InterfaceHistory& s) override { solve(hat, s, keep_ ? &u_ : nullptr); }

@@ -1,8 +1,11 @@
 #include "pgd/arpack_eigen.hpp"
 
+#include <arpack/arpack.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <mutex>
 #include <numeric>
 #include <random>
@@ -10,20 +13,6 @@
 #include <string>
 
 #include "src/core/input_error.hpp"
-
-// The Fortran 77 entry points of ARPACK-NG (libarpack2, 32-bit integers: arpackdef.h has
-// INTERFACE64 = 0). gfortran passes every argument by reference, LOGICAL as a 4-byte int (0 false,
-// 1 true), and appends one hidden length (size_t, gfortran ≥ 8) per CHARACTER argument, in order.
-extern "C" {
-void dsaupd_(int* ido, const char* bmat, const int* n, const char* which, const int* nev, const double* tol,
-             double* resid, const int* ncv, double* v, const int* ldv, int* iparam, int* ipntr, double* workd,
-             double* workl, const int* lworkl, int* info, std::size_t bmat_len, std::size_t which_len);
-void dseupd_(const int* rvec, const char* howmny, int* select, double* d, double* z, const int* ldz,
-             const double* sigma, const char* bmat, const int* n, const char* which, const int* nev,
-             const double* tol, double* resid, const int* ncv, double* v, const int* ldv, int* iparam, int* ipntr,
-             double* workd, double* workl, const int* lworkl, int* info, std::size_t howmny_len,
-             std::size_t bmat_len, std::size_t which_len);
-}
 
 namespace stc::pgd {
 namespace {
@@ -34,13 +23,13 @@ std::mutex& arpackMutex() {
   return mutex;
 }
 
-const char* whichCode(ArpackWhich which) {
+arpack::which whichCode(ArpackWhich which) {
   switch (which) {
-    case ArpackWhich::LargestAlgebraic: return "LA";
-    case ArpackWhich::SmallestAlgebraic: return "SA";
-    case ArpackWhich::LargestMagnitude: return "LM";
+    case ArpackWhich::LargestAlgebraic: return arpack::which::largest_algebraic;
+    case ArpackWhich::SmallestAlgebraic: return arpack::which::smallest_algebraic;
+    case ArpackWhich::LargestMagnitude: return arpack::which::largest_magnitude;
   }
-  return "LA";
+  return arpack::which::largest_algebraic;
 }
 
 [[noreturn]] void fail(const char* routine, int info, int nconv) {
@@ -121,9 +110,11 @@ ArpackResult ArpackEigen::compute(const Operator& op) {
   iparam[2] = options_.max_restarts;  // MXITER
   iparam[3] = 1;                      // NB: block size 1 (the only one implemented)
   iparam[6] = 1;                      // MODE 1: A x = λ x
-  // dsaupd replaces TOL ≤ 0 by dlamch('EpsMach') in place; dseupd must see that same value, or its
-  // recount of the converged Ritz values differs and it returns INFO = -17.
-  tol_ = options_.tolerance;
+  // dsaupd replaces TOL ≤ 0 by dlamch('EpsMach'), but the C binding passes TOL by value, so the
+  // replaced value never comes back; dseupd must see the same value as dsaupd, or its recount of the
+  // converged Ritz values differs and it returns INFO = -17. So we pass dlamch('EpsMach') ourselves:
+  // LAPACK's relative machine precision with rounding, ε/2 = 2⁻⁵³ (dlamch.f).
+  tol_ = options_.tolerance > 0.0 ? options_.tolerance : std::numeric_limits<double>::epsilon() / 2;
   iterate(op, iparam, ipntr);
   return extract(iparam, ipntr);
 }
@@ -132,8 +123,8 @@ void ArpackEigen::iterate(const Operator& op, int iparam[11], int ipntr[11]) {
   const int nev = options_.eigenvalues, lworkl = static_cast<int>(workl_.size());
   int ido = 0, info = 1;
   for (;;) {
-    dsaupd_(&ido, "I", &n_, whichCode(options_.which), &nev, &tol_, resid_.data(), &ncv_, v_.data(), &n_, iparam,
-            ipntr, workd_.data(), workl_.data(), &lworkl, &info, 1, 2);
+    arpack::saupd(ido, arpack::bmat::identity, n_, whichCode(options_.which), nev, tol_, resid_.data(), ncv_,
+                  v_.data(), n_, iparam, ipntr, workd_.data(), workl_.data(), lworkl, info);
     if (ido == 99) break;
     if (ido != -1 && ido != 1)  // mode 1 only ever asks for y = OP x
       throw std::runtime_error("ARPACK dsaupd asked for an unexpected action IDO = " + std::to_string(ido));
@@ -148,13 +139,13 @@ void ArpackEigen::iterate(const Operator& op, int iparam[11], int ipntr[11]) {
 ArpackResult ArpackEigen::extract(int iparam[11], int ipntr[11]) {
   const int nev = options_.eigenvalues, lworkl = static_cast<int>(workl_.size());
   const double sigma = 0.0;
-  const int rvec = 1;
+  const int rvec = 1;  // LOGICAL .true.: Ritz vectors wanted
   Eigen::VectorXd d(nev);
   Eigen::MatrixXd z(n_, nev);
   int info = 0;
-  dseupd_(&rvec, "A", select_.data(), d.data(), z.data(), &n_, &sigma, "I", &n_, whichCode(options_.which), &nev,
-          &tol_, resid_.data(), &ncv_, v_.data(), &n_, iparam, ipntr, workd_.data(), workl_.data(), &lworkl, &info,
-          1, 1, 2);
+  arpack::seupd(rvec, arpack::howmny::ritz_vectors, select_.data(), d.data(), z.data(), n_, sigma,
+                arpack::bmat::identity, n_, whichCode(options_.which), nev, tol_, resid_.data(), ncv_, v_.data(), n_,
+                iparam, ipntr, workd_.data(), workl_.data(), lworkl, info);
   if (info != 0) fail("dseupd", info, iparam[4]);
   const int nconv = iparam[4];
   if (nconv < nev) fail("dsaupd", 1, nconv);

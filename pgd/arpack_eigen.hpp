@@ -1,7 +1,8 @@
 #pragma once
 // A few extreme eigenpairs of a real symmetric operator given only as y = A x, through ARPACK-NG's
-// implicitly restarted Lanczos method called directly: the reverse-communication routines dsaupd_
-// (iteration) and dseupd_ (Ritz vectors), mode 1 (standard problem, BMAT = 'I'), exact shifts.
+// implicitly restarted Lanczos method called through ARPACK-NG's typed C++ interface
+// (arpack/arpack.hpp): the reverse-communication routines dsaupd (iteration) and dseupd (Ritz
+// vectors), mode 1 (standard problem, BMAT = 'I'), exact shifts.
 // Method: Sorensen, SIAM J. Matrix Anal. Appl. 13 (1992); Lehoucq, Sorensen & Yang, "ARPACK Users'
 // Guide" (SIAM 1998), §§2–3; the argument and error-code meanings are those of dsaupd.f/dseupd.f.
 //
@@ -60,7 +61,7 @@ class ArpackEigen {
   /// Validates the options (InputError) and allocates the workspaces for an operator of size n.
   ArpackEigen(int n, ArpackOptions options);
 
-  /// Runs dsaupd_ to convergence, then dseupd_ for the Ritz vectors.
+  /// Runs dsaupd to convergence, then dseupd for the Ritz vectors.
   ArpackResult compute(const Operator& op);
 
   int size() const { return n_; }
@@ -70,7 +71,7 @@ class ArpackEigen {
   int n_;
   int ncv_;
   ArpackOptions options_;
-  double tol_ = 0.0;  ///< TOL shared by dsaupd_ (which may rewrite it) and dseupd_
+  double tol_ = 0.0;  ///< TOL passed to dsaupd and dseupd (0 replaced by dlamch('EpsMach'))
   std::vector<double> resid_, v_, workd_, workl_;
   std::vector<int> select_;
 

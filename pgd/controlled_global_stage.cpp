@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "src/core/input_error.hpp"
+#include "src/core/option_check.hpp"
 #include "src/solver/warm_start.hpp"
 
 namespace stc::pgd {
@@ -43,14 +43,11 @@ Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double target, int c
 }  // namespace
 
 void ControlledStageOptions::validate() const {
-  if (!(gap_share > 0.0 && gap_share < 1.0))
-    throw InputError("controlled global stage: gap_share = " + std::to_string(gap_share) + " must be in (0, 1)");
-  if (block < 1) throw InputError("controlled global stage: block = " + std::to_string(block) + " must be >= 1");
-  if (oversampling < 0)
-    throw InputError("controlled global stage: oversampling = " + std::to_string(oversampling) + " must be >= 0");
-  if (power_iterations < 0)
-    throw InputError("controlled global stage: power_iterations = " + std::to_string(power_iterations) +
-                     " must be >= 0");
+  constexpr const char* kOwner = "separated global stage";
+  requireOption(gap_share > 0.0 && gap_share < 1.0, kOwner, "gap_share", gap_share, "must be in (0, 1)");
+  requireOption(block >= 1, kOwner, "block", block, "must be >= 1");
+  requireOption(oversampling >= 0, kOwner, "oversampling", oversampling, "must be >= 0");
+  requireOption(power_iterations >= 0, kOwner, "power_iterations", power_iterations, "must be >= 0");
 }
 
 ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledStageOptions options)

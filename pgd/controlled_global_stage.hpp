@@ -16,13 +16,14 @@
 #include "latin/global_stage.hpp"
 #include "latin/linear_stage.hpp"
 #include "pgd/response_basis.hpp"
+#include "src/core/solver_settings.hpp"
 
 namespace stc::pgd {
 
 struct ControlledStageOptions {
   /// γ: the projection error is kept below γ times the previous iteration's gap ‖s − ŝ‖. Must be
   /// small against 1 − ρ (LATIN's rate ρ ≈ 0.9 on the seed scene); measured: docs/floor.md.
-  double gap_share = 0.05;
+  double gap_share = defaults::pgd_gap_share;
   int block = 8;            ///< directions added per enrichment pass at most
   int oversampling = 4;     ///< extra random samples of the range finder
   int power_iterations = 1; ///< subspace iterations of the range finder

@@ -41,7 +41,7 @@ command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install
 
 cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Debug \
   -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DCMAKE_CXX_FLAGS="-D_GLIBCXX_ASSERTIONS" \
-  -DSTC_BUILD_FUZZERS=ON -DSTC_BUILD_TESTS=OFF >/dev/null
+  -DSTC_BUILD_FUZZERS=ON -DSTC_BUILD_TESTS=OFF -DSTC_BUILD_PYTHON=OFF >/dev/null
 cmake --build "$build" -j "${STC_JOBS:-$(nproc)}" --target "${targets[@]/#/fuzz_}"
 
 # seeds TARGET: the shipped inputs of the target's kind, copied afresh into one folder.

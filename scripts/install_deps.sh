@@ -5,12 +5,15 @@
 # serial, so that it starts no threads of its own to make timings noisy.
 # clang-14 + libclang-rt-14-dev (libFuzzer, clang's sanitizer runtimes) build the fuzz targets
 # (scripts/fuzz.sh); llvm-14's llvm-symbolizer puts file:line into sanitizer reports.
+# pybind11, the Python headers, NumPy, pytest and matplotlib: the Python module, its tests and
+# examples (docs/python.md), for Debian's /usr/bin/python3.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends \
   g++ cmake make pkg-config \
   libeigen3-dev libsuitesparse-dev libarpack2-dev libgsl-dev libopenblas-serial-dev \
-  libtomlplusplus-dev libcli11-dev libgtest-dev libbenchmark-dev \
-  gnuplot-nox clang-14 libclang-rt-14-dev llvm-14 >/dev/null
+  libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev \
+  gnuplot-nox clang-14 libclang-rt-14-dev llvm-14 \
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib >/dev/null
 echo "dependencies installed"

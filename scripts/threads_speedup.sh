@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Speed-up of whole solves on 2 threads against 1 (issue 7 part 6, docs/threads.md): the solve's
+# Speed-up of whole solves on 2 threads against 1 (docs/threads.md): the solve's
 # wall time as summary.json records it (wall_s: from the start of the iterations, the factorisation
 # and the incremental reference excluded), for each solver and mesh size, REPEATS runs per thread
 # count, alternating 1 and 2 threads so that a change of the machine's load hits both alike.

@@ -8,7 +8,7 @@
 namespace stc::cli {
 
 int runCheck(const CheckArgs& args) {
-  const Scene scene = readScene(args.scene, args.overrides);
+  const Scene scene = loadScene(args.scene, args.overrides);
   const Problem p = buildProblem(scene);
   const auto& c = p.contact;
   std::cout << "scene            " << scene.name << " (" << args.scene << ")\n"

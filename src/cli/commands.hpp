@@ -1,8 +1,14 @@
 #pragma once
 // Sub-commands of the stcontact program (docs/interface.md "Command line").
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "src/problem/problem.hpp"
+#include "src/scene/scene.hpp"
+#include "src/solver/error_reference.hpp"
+#include "src/solver/solve_summary.hpp"
 
 namespace stc::cli {
 
@@ -29,6 +35,21 @@ struct SvdArgs {
   int modes = 10;                       ///< pairs written to the per-mode files and tables
   std::string solver = "incremental";   ///< the only one accepted: the analysis of the exact solution
 };
+
+/// readScene (src/scene/scene_reader.hpp), then each of the scene's warnings (deprecated keys) on
+/// standard error as "warning: FILE: MESSAGE", once per message and run.
+Scene loadScene(const std::string& file, const std::vector<std::string>& overrides);
+
+/// `stcontact solve` computes no incremental reference (no true error) beyond this many contact
+/// nodes: the dense Delassus operator of the reference (32 n_C² bytes) and its per-iteration error
+/// evaluation become a noticeable cost. The Python module's solve follows the same rule.
+inline constexpr int kMaxReferenceContactNodes = 1000;
+
+/// The true-error reference of `solve`: the incremental solution and the error measure on it; nullptr,
+/// with the reason in `warning`, when the incremental solve stops early (the solve then goes on
+/// without a true error). `callback` sees the incremental solver's records (progress, Ctrl-C).
+std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
+                                               std::string& warning);
 
 /// `overrides` followed by --solver, --tol and --max-iterations as scene overrides (each checked:
 /// a known solver, tol > 0, max-iterations >= 1), so that a scene's parameters say what was solved.

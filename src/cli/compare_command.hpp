@@ -1,5 +1,5 @@
 #pragma once
-// stcontact compare SCENE: a work-precision comparison of solution strategies (issue 7, docs/compare.md).
+// stcontact compare SCENE: a work-precision comparison of solution strategies (docs/compare.md).
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,7 +24,7 @@ struct CompareArgs {
   bool quiet = false;
 };
 
-/// The comma-separated strategy names of --solvers (empty: fas::availableSolvers()); InputError for
+/// The comma-separated strategy names of --solvers (empty: availableSolvers()); InputError for
 /// an empty, unknown, unavailable or repeated name.
 std::vector<std::string> solverList(const std::string& list);
 

@@ -24,7 +24,9 @@ std::string scriptVariables(const Comparison& c) {
          "; reference=" + gnuplotString(reference) + "; scene=" + gnuplotString(c.scene_name);
 }
 
-PlotJob workPrecisionJob(const Comparison& c) { return {"work_precision.gp", scriptVariables(c), workPrecisionPlotNames()}; }
+PlotJob workPrecisionJob(const Comparison& c) {
+  return reportPlotJob("work_precision.gp", scriptVariables(c), workPrecisionPlotNames());
+}
 
 }  // namespace
 

@@ -5,12 +5,12 @@
 #include <optional>
 #include <stdexcept>
 
-#include "fas/solve_by_name.hpp"
 #include "src/cli/progress.hpp"
 #include "src/report/number_format.hpp"
 #include "src/report/peak_memory.hpp"
 #include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace stc::cli {
 namespace {
@@ -22,7 +22,7 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 /// The exact solver: its solution is the reference, so it is reported as one point of error 0.
 bool isReferenceSolver(const std::string& solver) { return solver == "incremental"; }
 
-/// Strategies that take a converged solution as input (fas::StrategyInputs::converged_lambda).
+/// Strategies that take a converged solution as input (StrategyInputs::converged_lambda).
 bool needsConvergedSolution(const std::string& solver) { return solver == "fas-aposteriori"; }
 
 struct RunOutcome {
@@ -48,7 +48,7 @@ RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool meas
                    const IterationCallback& go_on = {}) {
   Progress progress(label, !c.quiet);
   const IterationCallback show = progress.callback();
-  fas::StrategyInputs inputs;
+  StrategyInputs inputs;
   inputs.reference = measure_error ? c.reference.reference.get() : nullptr;
   inputs.converged_lambda = &c.reference.reference->referenceForces();
   std::optional<double> setup_s;
@@ -56,10 +56,10 @@ RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool meas
   inputs.callback = [&](const IterationRecord& r) {
     if (!setup_s) setup_s = secondsSince(start) - r.wall_s;
     const bool shown = show(r);
-    return shown && (!go_on || go_on(r));
+    return shown && (!go_on || go_on(r)) && (!c.keep_going || c.keep_going(r));
   };
   RunOutcome out;
-  out.result = fas::solveByName(solver, c.problem, c.spec, inputs);
+  out.result = solveByName(solver, c.problem, c.spec, inputs);
   out.total_s = secondsSince(start);
   progress.done();
   const SolveSummary& s = out.result.summary;

@@ -1,6 +1,6 @@
 #pragma once
 // The runs of `stcontact compare`: the incremental reference, then each strategy's error run and
-// timed repeats through fas::solveByName, with the peak memory of the strategy's runs.
+// timed repeats through solveByName, with the peak memory of the strategy's runs.
 #include <memory>
 #include <optional>
 #include <string>
@@ -40,6 +40,9 @@ struct CompareContext {
   int repeats = 3;
   bool quiet = false;
   EarlyStop stop = {};
+  /// Called after every record of every run (error and timed); false stops that run, like a
+  /// solver's callback (the Python module's Ctrl-C and per-iteration callback). None by default.
+  IterationCallback keep_going = {};
 };
 
 /// One error run (iterative strategies only), then `repeats` timed runs; see docs/compare.md. With

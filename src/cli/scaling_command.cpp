@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <iostream>
-#include <sstream>
 
+#include "src/cli/commands.hpp"
 #include "src/cli/compare_command.hpp"
 #include "src/cli/compare_runs.hpp"
 #include "src/cli/scaling_plots.hpp"
@@ -32,13 +32,12 @@ struct PlannedSize {
   bool in_mesh = false, in_time = false;
 };
 
-/// "101,201" as sizes, each >= `minimum`; "none" (or an empty list) is an empty series.
-std::vector<int> sizeList(const std::string& list, const std::string& option, int minimum) {
+/// The items of "101,201" (split by the option's delimiter) as sizes, each >= `minimum`; "none" (or
+/// an empty list) is an empty series.
+std::vector<int> sizeList(const std::vector<std::string>& items, const std::string& option, int minimum) {
   std::vector<int> sizes;
-  if (list == "none") return sizes;
-  std::stringstream items(list);
-  std::string item;
-  while (std::getline(items, item, ',')) {
+  if (items == std::vector<std::string>{"none"} || items == std::vector<std::string>{""}) return sizes;
+  for (const std::string& item : items) {
     std::size_t used = 0;
     int value = 0;
     try {
@@ -77,13 +76,17 @@ std::vector<PlannedSize> planSizes(const ScalingArgs& a, const Scene& base) {
   return plan;
 }
 
+std::string commaList(const std::vector<std::string>& items) {
+  std::string list;
+  for (const auto& item : items) list += (list.empty() ? "" : ",") + item;
+  return list;
+}
+
 std::string commandLine(const ScalingArgs& a, const std::vector<std::string>& solvers,
                         const std::filesystem::path& out) {
-  std::string joined;
-  for (const auto& s : solvers) joined += (joined.empty() ? "" : ",") + s;
-  std::string line = "stcontact scaling " + a.scene + " --solvers " + joined + " --out " + out.string() +
-                     " --repeats " + std::to_string(a.repeats) + " --arc-nodes '" + a.arc_nodes + "' --steps '" +
-                     a.steps + "' --target-error " + targetLabel(a.target_error) + " --tol " +
+  std::string line = "stcontact scaling " + a.scene + " --solvers " + commaList(solvers) + " --out " + out.string() +
+                     " --repeats " + std::to_string(a.repeats) + " --arc-nodes '" + commaList(a.arc_nodes) +
+                     "' --steps '" + commaList(a.steps) + "' --target-error " + targetLabel(a.target_error) + " --tol " +
                      shortNumber(a.tolerance, 6);
   if (a.max_iterations) line += " --max-iterations " + std::to_string(*a.max_iterations);
   if (a.time_cap_s) line += " --time-cap " + shortNumber(*a.time_cap_s, 6);
@@ -95,7 +98,7 @@ Scene sceneAt(const ScalingArgs& a, const PlannedSize& size) {
   std::vector<std::string> overrides = a.overrides;
   if (size.in_mesh) overrides.push_back("mesh.arc_nodes=" + std::to_string(size.arc_nodes));
   overrides.push_back("time.steps=" + std::to_string(size.steps));
-  Scene scene = readScene(a.scene, overrides);
+  Scene scene = loadScene(a.scene, overrides);
   scene.solver.tolerance = a.tolerance;
   if (a.max_iterations) scene.solver.max_iterations = *a.max_iterations;
   return scene;
@@ -158,8 +161,12 @@ CLI::App* addScalingCommand(CLI::App& app, ScalingArgs& a) {
   cmd->add_option("--solvers", a.solvers, "comma-separated strategies (default: every available one)");
   cmd->add_option("--out", a.out, "report folder (default results/<scene name>/scaling)");
   cmd->add_option("--repeats", a.repeats, "timed runs per strategy and size, medians over them")->capture_default_str();
-  cmd->add_option("--arc-nodes", a.arc_nodes, "mesh series: arc nodes, at the scene's instants ('none': no series)")->capture_default_str();
-  cmd->add_option("--steps", a.steps, "time series: instants m, at the scene's mesh ('none': no series)")->capture_default_str();
+  cmd->add_option("--arc-nodes", a.arc_nodes, "mesh series: arc nodes, at the scene's instants ('none': no series)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--steps", a.steps, "time series: instants m, at the scene's mesh ('none': no series)")
+      ->delimiter(',')
+      ->capture_default_str();
   cmd->add_option("--target-error", a.target_error, "true error whose time is measured")->capture_default_str();
   cmd->add_option("--tol", a.tolerance, "tolerance on the indicator")->capture_default_str();
   cmd->add_option("--max-iterations", a.max_iterations, "iteration limit (default: the scene's)");
@@ -172,7 +179,7 @@ CLI::App* addScalingCommand(CLI::App& app, ScalingArgs& a) {
 int runScaling(const ScalingArgs& a) {
   const auto start = Clock::now();
   validate(a);
-  const Scene base = readScene(a.scene, a.overrides);
+  const Scene base = loadScene(a.scene, a.overrides);
   const std::vector<PlannedSize> plan = planSizes(a, base);
   ScalingStudy study;
   study.solvers = solverList(a.solvers);

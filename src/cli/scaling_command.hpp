@@ -1,7 +1,6 @@
 #pragma once
 // stcontact scaling SCENE: the comparison of strategies over a mesh series and a time series, with
-// growth exponents, crossover against the incremental solver and memory (issue 7 items 2-3,
-// docs/scaling.md).
+// growth exponents, crossover against the incremental solver and memory (docs/scaling.md).
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,8 +16,10 @@ struct ScalingArgs {
   std::string solvers;                        ///< comma-separated; empty: every available strategy
   std::optional<std::string> out;             ///< default results/<scene name>/scaling
   int repeats = 3;                            ///< timed runs per strategy and size (medians over them)
-  std::string arc_nodes = "101,201,401,801";  ///< mesh series, at the scene's instants
-  std::string steps = "201,801,2001";         ///< time series, at the scene's mesh
+  /// Mesh series, at the scene's instants (--arc-nodes 101,201,...; "none": no series).
+  std::vector<std::string> arc_nodes = {"101", "201", "401", "801"};
+  /// Time series, at the scene's mesh (--steps 201,801,...; "none": no series).
+  std::vector<std::string> steps = {"201", "801", "2001"};
   double target_error = 1e-4;                 ///< true error whose time is measured
   /// Indicator tolerance: low, so that no iterative strategy stops on its indicator before the
   /// target error (the runs stop at the target anyway, so it costs nothing when reached).

@@ -33,7 +33,7 @@ bool drawScalingPlots(const std::filesystem::path& dir, const ScalingStudy& stud
   const std::string variables = "solvers=" + gnuplotString(solvers) + "; target=" +
                                 gnuplotString(targetLabel(study.target_error)) + "; scene=" +
                                 gnuplotString(study.scene_name) + "; series=" + gnuplotString(seriesWithSizes(study));
-  return drawPlots(dir, PlotJob{"scaling.gp", variables, scalingPlotNames(study)}, warning);
+  return drawPlots(dir, reportPlotJob("scaling.gp", variables, scalingPlotNames(study)), warning);
 }
 
 }  // namespace stc::cli

@@ -5,32 +5,49 @@
 #include <memory>
 #include <sstream>
 
-#include "fas/solve_by_name.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/progress.hpp"
 #include "src/core/input_error.hpp"
-#include "src/solver/condensed_interface.hpp"
 #include "src/io/atomic_file.hpp"
 #include "src/io/run_writer.hpp"
 #include "src/scene/scene_reader.hpp"
+#include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace stc::cli {
 namespace {
 
-// Beyond this many contact nodes the dense Delassus operator of the reference (32 n_C² bytes)
-// and its per-iteration error evaluation become a noticeable cost: skip the reference.
-constexpr int kMaxReferenceContactNodes = 1000;
-
-// A reference that fails (Newton stops at some instant) is not an internal failure: the solve
-// goes on without a true error, and a warning says why.
 std::unique_ptr<ErrorReference> computeReference(const Problem& problem, bool quiet) {
   Progress progress("reference (incremental)", !quiet);
-  SolveResult ref = solveIncremental(problem, {}, progress.callback());
+  std::string warning;
+  std::unique_ptr<ErrorReference> reference = solveReference(problem, progress.callback(), warning);
   progress.done();
+  if (!warning.empty()) std::cerr << "warning: " << warning << std::endl;
+  return reference;
+}
+
+SolveResult runSolver(const std::string& name, const Problem& problem, const Scene& scene,
+                      const ErrorReference* reference, bool quiet) {
+  Progress progress(name, !quiet);
+  StrategyInputs inputs;
+  inputs.reference = reference;
+  inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
+  inputs.callback = progress.callback();
+  SolveResult result = solveByName(name, problem, scene.solver, inputs);
+  progress.done();
+  return result;
+}
+
+}  // namespace
+
+// A reference that fails (Newton stops at some instant) is not an internal failure: the solve
+// goes on without a true error, and the warning says why.
+std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
+                                               std::string& warning) {
+  SolveResult ref = solveIncremental(problem, {}, callback);
   if (!ref.summary.converged()) {
-    std::cerr << "warning: no true error: the incremental reference did not converge ("
-              << ref.summary.message << ")" << std::endl;
+    warning = "no true error: the incremental reference did not converge (" + ref.summary.message + ")";
     return nullptr;
   }
   const SpdFactor factor(problem.stiffness_free, "K_ff");
@@ -38,25 +55,11 @@ std::unique_ptr<ErrorReference> computeReference(const Problem& problem, bool qu
   return std::make_unique<ErrorReference>(problem, factor, condensed.delassus, ref.interface.lambda);
 }
 
-SolveResult runSolver(const std::string& name, const Problem& problem, const Scene& scene,
-                      const ErrorReference* reference, bool quiet) {
-  Progress progress(name, !quiet);
-  fas::StrategyInputs inputs;
-  inputs.reference = reference;
-  inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
-  inputs.callback = progress.callback();
-  SolveResult result = fas::solveByName(name, problem, scene.solver, inputs);
-  progress.done();
-  return result;
-}
-
-}  // namespace
-
 std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, const std::optional<std::string>& solver,
                                            const std::optional<double>& tolerance,
                                            const std::optional<int>& max_iterations) {
   if (solver) {
-    fas::requireAvailable(*solver);
+    requireAvailable(*solver);
     overrides.push_back("solver.name=" + *solver);
   }
   if (tolerance) {
@@ -73,9 +76,9 @@ std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, c
 }
 
 int runSolve(const SolveArgs& args) {
-  const Scene scene = readScene(args.scene, withSolverOptions(args.overrides, args.solver, args.tolerance, args.max_iterations));
+  const Scene scene = loadScene(args.scene, withSolverOptions(args.overrides, args.solver, args.tolerance, args.max_iterations));
   const std::string solver = scene.solver.name;
-  fas::requireAvailable(solver);
+  requireAvailable(solver);
   const std::filesystem::path out = args.out ? std::filesystem::path(*args.out)
                                              : std::filesystem::path("results") / scene.name / solver;
   const Problem problem = buildProblem(scene);  // bad input stops here, before anything is created

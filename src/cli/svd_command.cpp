@@ -2,7 +2,7 @@
 // (Figs. 2 and 3). Solves the scene with the incremental solver (exact to round-off), builds the
 // full displacement history U (n × m), computes its SVD in the energy product with ARPACK
 // (U = Σ σ_i Υ_i ν_iᵀ, Υᵀ K Υ = I; pgd/space_time_svd.hpp), checks it against the dense eigensolver
-// when m is small, measures each mode's localisation at the contact zone (pgd/mode_localisation.hpp)
+// when m is small, measures each mode's localisation at the contact zone (src/report/mode_localisation.hpp)
 // and writes every file atomically into --out (default results/<scene>/svd):
 //   singular_values.csv, time_functions.csv, localisation.csv, modes.vtu, modes_deformed.dat,
 //   svd_figures.gp, svd_summary.json and, through gnuplot, singular_values.png, time_functions.png,
@@ -14,14 +14,14 @@
 #include <memory>
 
 #include "pgd/displacement_history.hpp"
-#include "pgd/mode_localisation.hpp"
 #include "pgd/space_time_svd.hpp"
-#include "pgd/svd_figures.hpp"
-#include "pgd/svd_tables.hpp"
 #include "src/cli/commands.hpp"
 #include "src/core/input_error.hpp"
 #include "src/io/atomic_file.hpp"
 #include "src/io/json_writer.hpp"
+#include "src/report/mode_localisation.hpp"
+#include "src/report/svd_figures.hpp"
+#include "src/report/svd_tables.hpp"
 #include "src/scene/scene_reader.hpp"
 #include "src/solver/incremental_solver.hpp"
 
@@ -30,12 +30,12 @@ namespace {
 
 constexpr int kFigureSingularValues = 50;  // seed Fig. 3a shows 50
 constexpr int kFigureModes = 6;            // seed Figs. 2 and 3b show 6
-constexpr int kComparedValues = 10;        // the check: the leading 10 σ, ARPACK vs dense
+constexpr int kComparedValues = 10;        // the check of docs/svd_seed.md: the leading 10 σ, ARPACK vs dense
 constexpr int kMaxDenseCheck = 2000;       // m above which the O(m³) dense check is skipped
 constexpr double kEnergyLevels[] = {0.99, 0.999, 0.9999};
 constexpr const char* kEnergyLabels[] = {"99%", "99.9%", "99.99%"};
 // Bands around the contact zone, in units of the scene's length scale (the radius for the seed):
-// 1.5, 3 and 6 element sizes at the seed's arc (pgd/mode_localisation.hpp explains the choice).
+// 1.5, 3 and 6 element sizes at the seed's arc (src/report/mode_localisation.hpp explains the choice).
 constexpr double kBandDepths[] = {0.05, 0.1, 0.2};
 constexpr double kFigureDisplacement = 0.12;  // largest displacement of a drawn mode, × length scale
 
@@ -75,7 +75,7 @@ Analysis analyse(const Eigen::MatrixXd& U, const Eigen::SparseMatrix<double>& K,
   return a;
 }
 
-std::string summaryJson(const Problem& problem, const Analysis& a, const pgd::ModeLocalisation* loc,
+std::string summaryJson(const Problem& problem, const Analysis& a, const ModeLocalisation* loc,
                         double solve_s) {
   JsonObject levels;
   for (int j = 0; j < 3; ++j) levels.add(kEnergyLabels[j], a.svd.modesFor(kEnergyLevels[j]));
@@ -113,25 +113,25 @@ std::string summaryJson(const Problem& problem, const Analysis& a, const pgd::Mo
 
 // Figures: data, script, then gnuplot; a missing or failing gnuplot is reported, not fatal.
 void writeFigures(const std::filesystem::path& out, const Problem& problem, const Analysis& a,
-                  const pgd::ModeLocalisation* loc) {
+                  const ModeLocalisation* loc) {
   const int drawn = std::min({kFigureModes, a.svd.size()});
-  pgd::SvdFigureSpec spec;
+  SvdFigureSpec spec;
   spec.scene = problem.name;
   spec.singular_values = std::min(kFigureSingularValues, a.svd.size());
   spec.time_functions = drawn;
   writeFileAtomically(out / "modes_deformed.dat",
-                      pgd::deformedModesData(problem.mesh, a.svd, drawn, loc,
+                      deformedModesData(problem.mesh, a.svd, drawn, loc,
                                              kFigureDisplacement * problem.length_scale, spec.mode_scales));
   for (int i = 0; i < drawn; ++i) spec.mode_energy.push_back(a.svd.energyFraction(i));
-  writeFileAtomically(out / "svd_figures.gp", pgd::svdFiguresScript(spec));
+  writeFileAtomically(out / "svd_figures.gp", svdFiguresScript(spec));
   std::string detail;
-  const pgd::FigureStatus status = pgd::drawSvdFigures(out, detail);
-  if (status == pgd::FigureStatus::GnuplotMissing) std::cerr << "note: " << detail << "\n";
-  if (status == pgd::FigureStatus::GnuplotFailed) std::cerr << "warning: " << detail << "\n";
+  const FigureStatus status = drawSvdFigures(out, detail);
+  if (status == FigureStatus::GnuplotMissing) std::cerr << "note: " << detail << "\n";
+  if (status == FigureStatus::GnuplotFailed) std::cerr << "warning: " << detail << "\n";
 }
 
 void report(const std::filesystem::path& out, const Problem& problem, const Analysis& a,
-            const pgd::ModeLocalisation* loc, int modes) {
+            const ModeLocalisation* loc, int modes) {
   std::printf("svd: %s, %d dofs x %d instants, energy SVD by ARPACK: %d pairs (%d resolved), %d products, %.3g s\n",
               problem.name.c_str(), problem.numDofs(), problem.numSteps(), a.svd.size(), a.svd.resolved,
               a.svd.operator_applications, a.svd_s);
@@ -168,7 +168,7 @@ void report(const std::filesystem::path& out, const Problem& problem, const Anal
 }  // namespace
 
 int runSvd(const SvdArgs& args) {
-  const Scene scene = readScene(args.scene, args.overrides);
+  const Scene scene = loadScene(args.scene, args.overrides);
   if (args.solver != "incremental")
     throw InputError("svd analyses the incremental solution: --solver must be 'incremental', not '" + args.solver +
                      "'");
@@ -195,20 +195,20 @@ int runSvd(const SvdArgs& args) {
   const Analysis a = analyse(U, problem.stiffness, args.modes);
   const int modes = std::min(args.modes, a.svd.size());
 
-  std::unique_ptr<pgd::ModeLocalisation> loc;
-  pgd::ContactZone zone = pgd::ContactZone::everClosed(problem, solved.admissible());
+  std::unique_ptr<ModeLocalisation> loc;
+  ContactZone zone = ContactZone::everClosed(problem, solved.admissible());
   if (!zone.empty()) {
     std::vector<double> depths;
     for (double d : kBandDepths) depths.push_back(d * problem.length_scale);
-    loc = std::make_unique<pgd::ModeLocalisation>(problem, std::move(zone), depths);
+    loc = std::make_unique<ModeLocalisation>(problem, std::move(zone), depths);
   } else {
     std::cerr << "note: no contact node ever closes: no contact zone, no localisation.csv\n";
   }
 
-  writeFileAtomically(out / "singular_values.csv", pgd::singularValuesCsv(a.svd));
-  writeFileAtomically(out / "time_functions.csv", pgd::timeFunctionsCsv(a.svd, problem.times, modes));
-  if (loc) writeFileAtomically(out / "localisation.csv", pgd::localisationCsv(a.svd, *loc, modes));
-  writeFileAtomically(out / "modes.vtu", pgd::modesVtu(problem.mesh, a.svd, modes, loc.get()));
+  writeFileAtomically(out / "singular_values.csv", singularValuesCsv(a.svd));
+  writeFileAtomically(out / "time_functions.csv", timeFunctionsCsv(a.svd, problem.times, modes));
+  if (loc) writeFileAtomically(out / "localisation.csv", localisationCsv(a.svd, *loc, modes));
+  writeFileAtomically(out / "modes.vtu", modesVtu(problem.mesh, a.svd, modes, loc.get()));
   writeFileAtomically(out / "svd_summary.json", summaryJson(problem, a, loc.get(), solve_s));
   if (a.svd.total_energy > 0.0) writeFigures(out, problem, a, loc.get());
   else std::cerr << "note: zero elastic energy over the history: no figures\n";

@@ -7,7 +7,6 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
-#include "fas/solve_by_name.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/gnuplot_plots.hpp"
 #include "src/cli/sweep_runs.hpp"
@@ -16,6 +15,7 @@
 #include "src/report/number_format.hpp"
 #include "src/report/sweep_writer.hpp"
 #include "src/scene/scene_reader.hpp"
+#include "src/strategies/solve_by_name.hpp"
 #include "stc_git_commit.hpp"  // STC_GIT_COMMIT, generated at build time
 
 namespace stc::cli {
@@ -43,7 +43,7 @@ std::vector<Scene> valueScenes(const SweepArgs& args, const SweepRange& range, S
   for (std::size_t i = 0; i < range.values.size(); ++i) {
     std::vector<std::string> overrides = common;
     overrides.push_back(range.override(i));
-    scenes.push_back(readScene(args.scene, overrides));
+    scenes.push_back(loadScene(args.scene, overrides));
     const Problem problem = buildProblem(scenes.back());
     if (i > 0) continue;
     sweep.n_dofs = problem.numDofs();
@@ -55,7 +55,7 @@ std::vector<Scene> valueScenes(const SweepArgs& args, const SweepRange& range, S
 
 std::string solverOf(const Scene& first) {
   const std::string solver = first.solver.name;
-  fas::requireAvailable(solver);
+  requireAvailable(solver);
   if (solver == "incremental")
     throw InputError("--solver incremental: a sweep compares warm and cold starts of an iterative strategy, "
                      "and the incremental solver always starts from the unloaded state");
@@ -84,10 +84,10 @@ void describe(Sweep& s, const SweepArgs& args, const SweepRange& range, const Sc
 
 /// sweep.png: relaxations and wall time per value, warm against cold (scripts/plots/sweep.gp).
 PlotJob sweepPlot(const Sweep& s) {
-  return {"sweep.gp",
-          "key=" + gnuplotString(s.key) + "; scene=" + gnuplotString(s.scene_name) + "; solver=" +
-              gnuplotString(s.solver) + "; cold=" + (s.independent() ? "1" : "0"),
-          {"sweep.png"}};
+  return reportPlotJob("sweep.gp",
+                       "key=" + gnuplotString(s.key) + "; scene=" + gnuplotString(s.scene_name) + "; solver=" +
+                           gnuplotString(s.solver) + "; cold=" + (s.independent() ? "1" : "0"),
+                       {"sweep.png"});
 }
 
 void printTotals(const Sweep& s) {

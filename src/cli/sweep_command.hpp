@@ -1,7 +1,7 @@
 #pragma once
 // stcontact sweep SCENE --set-range KEY=FROM:TO:COUNT: one scene solved for every value of one key,
 // each warm-started from the previous value's solution, and (unless --no-independent) cold, so that
-// the report gives the sweep's total cost both ways (issue 7, docs/sweep.md).
+// the report gives the sweep's total cost both ways (docs/sweep.md).
 #include <optional>
 #include <string>
 #include <vector>

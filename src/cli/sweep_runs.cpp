@@ -3,13 +3,13 @@
 #include <chrono>
 #include <iostream>
 
-#include "fas/solve_by_name.hpp"
 #include "src/cli/compare_runs.hpp"
 #include "src/cli/progress.hpp"
 #include "src/io/atomic_file.hpp"
 #include "src/io/run_writer.hpp"
 #include "src/report/number_format.hpp"
 #include "src/solver/warm_start.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace stc::cli {
 namespace {
@@ -23,15 +23,15 @@ struct TimedSolve {
 
 /// One solve through solveByName, timed from the call to its return (set-up included), its true
 /// error measured afterwards on the returned solution (the solve itself does not pay for it).
-TimedSolve timedSolve(const Problem& problem, const Scene& scene, const fas::StrategyInputs& base,
+TimedSolve timedSolve(const Problem& problem, const Scene& scene, const StrategyInputs& base,
                       const ReferenceSolution& reference, const std::string& label, const SweepSettings& settings) {
   Progress progress(label, !settings.quiet);
-  fas::StrategyInputs inputs = base;
+  StrategyInputs inputs = base;
   inputs.converged_lambda = &reference.reference->referenceForces();  // fas-aposteriori's modes, not timed
   inputs.callback = progress.callback();
   const auto start = Clock::now();
   TimedSolve out;
-  out.result = fas::solveByName(settings.solver, problem, scene.solver, inputs);
+  out.result = solveByName(settings.solver, problem, scene.solver, inputs);
   out.cost = costOf(out.result.summary, std::chrono::duration<double>(Clock::now() - start).count());
   progress.done();
   out.cost.error = reference.reference->relativeError(out.result.interface.lambda);
@@ -71,7 +71,7 @@ SweepPoint WarmChain::solveValue(const Scene& scene, const SweepRange& range, st
   point.value = range.values[index];
   point.reference_s = reference.total_s;
 
-  fas::StrategyInputs warm;
+  StrategyInputs warm;
   if (interface_ && fitsProblem(*interface_, problem)) {
     warm.start = &*interface_;
     point.start = WarmStart::Previous;

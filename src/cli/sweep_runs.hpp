@@ -1,7 +1,7 @@
 #pragma once
 // The solves of `stcontact sweep`, value after value: the incremental reference (for the true error),
 // the warm solve from the previous value's solution and spatial modes, and the cold solve from zero,
-// each through fas::solveByName with a problem (and factorisation) built for that value.
+// each through solveByName with a problem (and factorisation) built for that value.
 #include <filesystem>
 #include <optional>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Threads for the work that is independent (issue 7 part 6): the LATIN local stage over contact
+// Threads for the work that is independent (docs/threads.md): the LATIN local stage over contact
 // nodes (docs/method.md §2: "embarrassingly parallel over nodes") and the global stage over blocks of
 // instants (one right-hand side per instant, the factor only read). A pool of workers started once
 // (src/core/worker_pool.hpp); the count is process-wide, like Eigen::setNbThreads.

@@ -3,31 +3,15 @@
 #include <algorithm>
 #include <limits>
 
-#include "src/contact/contact_state.hpp"
+#include "src/contact/contact_state_table.hpp"
 
 namespace stc {
 
-
-ContactStateTable::ContactStateTable(const Problem& problem, const InterfaceHistory& s)
-    : s_(s), mu_(problem.contact.friction) {
-  force_scale_ = std::max(s.lambda.cwiseAbs().maxCoeff(), std::numeric_limits<double>::min());
-  length_scale_ = std::max(s.v.cwiseAbs().maxCoeff(), std::numeric_limits<double>::min());
-}
-
-double ContactStateTable::slip(int i, int k) const {
-  return s_.v(2 * i + 1, k) - (k > 0 ? s_.v(2 * i + 1, k - 1) : 0.0);
-}
-
-ContactState ContactStateTable::state(int i, int k) const {
-  return classifyContact(s_.lambda(2 * i, k), s_.lambda(2 * i + 1, k), slip(i, k), mu_, force_scale_, length_scale_);
-}
-
-void writeReactionsCsv(std::ostream& out, const Problem& problem, const SolveResult& result) {
+ReactionTable reactionTable(const Problem& problem, const SolveResult& result) {
   const auto& c = problem.contact;
   const auto& lambda = result.interface.lambda;
-  const ContactStateTable states(problem, result.admissible());
-  out.precision(12);
-  out << "step,t,normal_force,tangential_force,contact_xmin,contact_xmax,n_contact,n_slip\n";
+  const ContactStateTable states(problem.contact, result.admissible());
+  ReactionTable table;
   for (int k = 0; k < problem.numSteps(); ++k) {
     double normal = 0.0, tangential = 0.0;
     double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin;
@@ -42,17 +26,34 @@ void writeReactionsCsv(std::ostream& out, const Problem& problem, const SolveRes
       xmin = std::min(xmin, problem.mesh.nodes(0, c.nodes[i]));
       xmax = std::max(xmax, problem.mesh.nodes(0, c.nodes[i]));
     }
-    out << k << ',' << problem.times[k] << ',' << normal << ',' << tangential << ',';
-    if (closed > 0) out << xmin << ',' << xmax;
+    if (closed == 0) xmin = xmax = std::numeric_limits<double>::quiet_NaN();
+    table.t.push_back(problem.times[k]);
+    table.normal_force.push_back(normal);
+    table.tangential_force.push_back(tangential);
+    table.contact_xmin.push_back(xmin);
+    table.contact_xmax.push_back(xmax);
+    table.n_contact.push_back(closed);
+    table.n_slip.push_back(slipping);
+  }
+  return table;
+}
+
+void writeReactionsCsv(std::ostream& out, const Problem& problem, const SolveResult& result) {
+  const ReactionTable table = reactionTable(problem, result);
+  out.precision(12);
+  out << "step,t,normal_force,tangential_force,contact_xmin,contact_xmax,n_contact,n_slip\n";
+  for (std::size_t k = 0; k < table.t.size(); ++k) {
+    out << k << ',' << table.t[k] << ',' << table.normal_force[k] << ',' << table.tangential_force[k] << ',';
+    if (table.n_contact[k] > 0) out << table.contact_xmin[k] << ',' << table.contact_xmax[k];
     else out << ',';
-    out << ',' << closed << ',' << slipping << '\n';
+    out << ',' << table.n_contact[k] << ',' << table.n_slip[k] << '\n';
   }
 }
 
 void writeContactCsv(std::ostream& out, const Problem& problem, const SolveResult& result) {
   const auto& c = problem.contact;
   const auto& s = result.interface;
-  const ContactStateTable states(problem, result.admissible());
+  const ContactStateTable states(problem.contact, result.admissible());
   out.precision(12);
   out << "step,node,x,y,normal_force,tangential_force,pressure,shear,gap,slip,state\n";
   for (int k = 0; k < problem.numSteps(); ++k)

@@ -2,26 +2,21 @@
 // The contact output tables of docs/interface.md: reactions.csv (one row per instant) and contact.csv
 // (one row per contact node and instant), computed from a solution's interface histories.
 #include <ostream>
+#include <vector>
 
-#include "src/contact/contact_state.hpp"
 #include "src/problem/problem.hpp"
 #include "src/solver/solve_result.hpp"
 
 namespace stc {
 
-/// Open/stick/slip of every node and instant of a history (classifyContact with the history's
-/// largest |λ| and |v| as scales). Use the contact-admissible iterate (SolveResult::admissible()).
-class ContactStateTable {
- public:
-  ContactStateTable(const Problem& problem, const InterfaceHistory& s);
-  /// Δv_t = v_t(t_k) − v_t(t_{k−1}), with v_t(t_{−1}) = 0.
-  double slip(int i, int k) const;
-  ContactState state(int i, int k) const;
-
- private:
-  const InterfaceHistory& s_;
-  double mu_, force_scale_, length_scale_;
+/// The rows of reactions.csv as columns, one entry per instant: the totals of the contact forces on
+/// the body, the x-range of the closed nodes (NaN when none is closed), their count and the count of
+/// slipping ones. What writeReactionsCsv writes and the Python module returns (docs/python.md).
+struct ReactionTable {
+  std::vector<double> t, normal_force, tangential_force, contact_xmin, contact_xmax;
+  std::vector<int> n_contact, n_slip;
 };
+ReactionTable reactionTable(const Problem& problem, const SolveResult& result);
 
 /// step,t,normal_force,tangential_force,contact_xmin,contact_xmax,n_contact,n_slip — totals of the
 /// contact forces on the body; x-range, count of closed nodes and count of slipping nodes.

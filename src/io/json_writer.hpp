@@ -1,7 +1,8 @@
 #pragma once
-// A small ordered JSON object builder for summary.json (docs/interface.md). Members keep the order of
-// add(); strings are escaped (RFC 8259 §7); doubles are written in the shortest form that reads
-// back to the same value (std::to_chars); non-finite doubles, which JSON cannot express, as null.
+// The ordered JSON object builder for summary.json (docs/interface.md), over nlohmann-json's
+// ordered_json (kept out of this header). Members keep the order of add(), a key added twice is
+// refused; strings are escaped (RFC 8259 §7); doubles are written in a shortest form that reads
+// back to the same value; non-finite doubles, which JSON cannot express, as null.
 #include <concepts>
 #include <memory>
 #include <optional>
@@ -12,8 +13,8 @@
 
 namespace stc {
 
-/// An already formatted JSON value, inserted verbatim (e.g. the scene's parameters as read).
-/// The caller vouches for its validity; only an empty text is rejected.
+/// An already formatted JSON value (e.g. the scene's parameters as read), parsed and inserted in
+/// its place, its members in their order. An empty or invalid text is refused.
 struct RawJson {
   std::string text;
 };
@@ -28,18 +29,26 @@ concept JsonInteger = std::integral<T> && !std::same_as<T, bool> && !std::same_a
 
 class JsonObject {
  public:
+  JsonObject();
+  ~JsonObject();
+  JsonObject(const JsonObject& other);
+  JsonObject(JsonObject&& other) noexcept;
+  JsonObject& operator=(const JsonObject& other);
+  JsonObject& operator=(JsonObject&& other) noexcept;
+
   JsonObject& add(std::string key, std::string_view value);
   JsonObject& add(std::string key, const char* value);  ///< nullptr is written as null
   JsonObject& add(std::string key, double value);       ///< NaN and ±inf are written as null
   JsonObject& add(std::string key, bool value);
   JsonObject& add(std::string key, std::nullopt_t);
-  JsonObject& add(std::string key, JsonObject value);
+  JsonObject& add(std::string key, const JsonObject& value);
   JsonObject& add(std::string key, const std::vector<double>& values);
-  JsonObject& add(std::string key, RawJson value);
+  JsonObject& add(std::string key, const RawJson& value);
 
   template <detail::JsonInteger T>
   JsonObject& add(std::string key, T value) {
-    return addText(std::move(key), std::to_string(value));
+    if constexpr (std::is_signed_v<T>) return addSigned(std::move(key), static_cast<long long>(value));
+    else return addUnsigned(std::move(key), static_cast<unsigned long long>(value));
   }
 
   /// The value, or null when empty (e.g. the error when no reference solution is known).
@@ -48,26 +57,24 @@ class JsonObject {
     return value ? add(std::move(key), *value) : add(std::move(key), std::nullopt);
   }
 
-  /// The document; indent > 0 puts one member per line, indent <= 0 writes a single line.
+  /// The document; indent > 0 puts one member per line (and a final line break), indent <= 0
+  /// writes a single line.
   std::string str(int indent = 2) const;
-  bool empty() const { return members_.empty(); }
+  bool empty() const;
 
  private:
-  struct Member {
-    std::string key;
-    std::string text;                          ///< the rendered value, unless `object` is set
-    std::shared_ptr<const JsonObject> object;  ///< a nested object, rendered at its depth
-  };
-  std::vector<Member> members_;
+  struct Document;  ///< nlohmann::ordered_json
+  std::unique_ptr<Document> document_;
 
-  JsonObject& addText(std::string key, std::string text);
-  void write(std::string& out, int indent, int depth) const;
+  JsonObject& addSigned(std::string key, long long value);
+  JsonObject& addUnsigned(std::string key, unsigned long long value);
+  JsonObject& addDocument(std::string key, Document value);
 };
 
 /// `text` as a quoted JSON string: quote, backslash and control characters escaped
-/// (\n, \t... or \u00XX); other bytes, UTF-8 included, are copied.
+/// (\n, \t... or \u00XX); other bytes, UTF-8 included, are copied (invalid UTF-8: U+FFFD).
 std::string jsonString(std::string_view text);
-/// The shortest decimal that reads back (strtod) to exactly `value`; "null" if not finite.
+/// A shortest decimal that reads back (strtod) to exactly `value`; "null" if not finite.
 std::string jsonNumber(double value);
 
 }  // namespace stc

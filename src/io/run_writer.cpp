@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "src/contact/contact_state.hpp"
+#include "src/contact/contact_state_table.hpp"
 #include "src/core/threads.hpp"
 #include "src/fem/elasticity.hpp"
 #include "src/io/atomic_file.hpp"
@@ -33,7 +33,7 @@ std::string frameName(int k) {
 void contactFields(const Problem& problem, const SolveResult& result, int k, Eigen::MatrixXd& force,
                    Eigen::MatrixXd& state) {
   const auto& c = problem.contact;
-  const ContactStateTable states(problem, result.admissible());
+  const ContactStateTable states(problem.contact, result.admissible());
   force = Eigen::MatrixXd::Zero(2, problem.mesh.numNodes());
   state = Eigen::MatrixXd::Constant(1, problem.mesh.numNodes(), -1.0);
   for (int i = 0; i < c.size(); ++i) {

@@ -1,5 +1,5 @@
 #pragma once
-// A comparison of solution strategies on one scene (issue 7, `stcontact compare`): what was measured
+// A comparison of solution strategies on one scene (`stcontact compare`, docs/compare.md): what was measured
 // for each strategy, and the per-strategy statistics of the report (medians over repeats of the
 // work needed to first reach true errors 1e-2, 1e-4, 1e-6; docs/method.md §2 error).
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// Growth exponents of a scaling study (issue 7 item 2): the power law t = C · s^p fitted by least
+// Growth exponents of a scaling study (docs/scaling.md): the power law t = C · s^p fitted by least
 // squares on log-log axes, log t = log C + p log s (GSL gsl_fit_linear), and where two such laws cross.
 #include <optional>
 #include <vector>

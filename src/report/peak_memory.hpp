@@ -1,5 +1,5 @@
 #pragma once
-// Peak resident memory of this process over a stretch of work (issue 7 item 3).
+// Peak resident memory of this process over a stretch of work (docs/compare.md, "Memory").
 //
 // Method (Linux ≥ 4.0): reset() first gives freed heap back to the system (malloc_trim), then writes
 // "5" to /proc/self/clear_refs, which sets the kernel's resident high-water mark (VmHWM of

@@ -1,5 +1,5 @@
 #pragma once
-// A scaling study (issue 7 items 2-3, `stcontact scaling`, docs/scaling.md): the comparison of
+// A scaling study (`stcontact scaling`, docs/scaling.md): the comparison of
 // strategies repeated over a mesh series (contact nodes on the arc, at the scene's instants) and a
 // time series (instants m, at the scene's mesh); per strategy, the time to first reach one true
 // error at every size, its growth exponent on log-log axes, where it beats the incremental solver,

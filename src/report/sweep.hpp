@@ -37,7 +37,7 @@ EndForces endForces(const InterfaceHistory& s);
 
 /// How a warm solve began.
 enum class WarmStart {
-  Previous,  ///< from the previous value's solution (and modes)
+  Previous,  ///< from the previous value's solution (and interface directions)
   Zero,      ///< from s = 0: the first value, or the previous one had other sizes (mesh, time grid)
 };
 const char* toString(WarmStart start);
@@ -46,8 +46,8 @@ struct SweepPoint {
   std::string text;          ///< the value as written into the override
   double value = 0.0;
   WarmStart start = WarmStart::Zero;
-  int seed_modes = 0;        ///< spatial modes offered to the warm solve as its starting basis (it keeps
-                             ///< at most solver.pgd_seed_share × pgd_max_modes for fas-apriori)
+  int seed_modes = 0;        ///< interface directions offered to the warm solve as its starting basis
+                             ///< (fas-apriori, latin-pgd: SolveResult::interface_directions)
   SolveCost warm;
   std::optional<SolveCost> cold;  ///< absent with --no-independent
   EndForces forces;          ///< of the warm solve's solution

@@ -63,7 +63,7 @@ void valueTable(std::ostream& out, const Sweep& s) {
   for (const SweepPoint& p : s.points) {
     const auto pair = [&](const std::string& w, const std::string& c) { return w + " / " + (p.cold ? c : "—"); };
     const SolveCost cold = p.cold.value_or(SolveCost{});
-    out << "| " << p.text << " | " << toString(p.start) << (p.seed_modes ? ", " + std::to_string(p.seed_modes) + " modes offered" : "")
+    out << "| " << p.text << " | " << toString(p.start) << (p.seed_modes ? ", " + std::to_string(p.seed_modes) + " directions offered" : "")
         << " | " << pair(std::to_string(p.warm.relaxations), std::to_string(cold.relaxations)) << " | "
         << pair(std::to_string(p.warm.sparse_solves), std::to_string(cold.sparse_solves)) << " | "
         << pair(shortNumber(p.warm.wall_s, 3), shortNumber(cold.wall_s, 3)) << " | "

@@ -1,5 +1,5 @@
 #pragma once
-// Work against precision of one strategy (issue 7): the points of its runs (work spent so far, true
+// Work against precision of one strategy (docs/compare.md): the points of its runs (work spent so far, true
 // error reached) and the statistics the comparison reports, e.g. the median over repeats of the
 // time a strategy needs to first reach a true error of 1e-4 (docs/method.md §2 error).
 #include <optional>

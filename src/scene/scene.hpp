@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "src/core/solver_settings.hpp"
+
 namespace stc {
 
 enum class PlaneModel { Strain, Stress };
@@ -70,27 +72,26 @@ struct LoadSpec {
   History history;
 };
 
-/// [solver] keys of the two-level FAS (docs/method.md §4; defaults: the seed paper's §4.2 settings,
-/// ν1 = ν2 = 1, i_C = 15, N_res = 15; ν = 1 beat ν = 2 for both bases on the seed scene:
-/// docs/fas_aposteriori.md, docs/compare_bases.md).
+/// [solver] keys of the two-level FAS (docs/method.md §4; defaults: src/core/solver_settings.hpp, the
+/// seed paper's §4.2 settings).
 struct FasSpec {
-  int pre_relaxations = 1;      ///< ν1 >= 1
-  int post_relaxations = 1;     ///< ν2 >= 0
-  int coarse_iterations = 15;   ///< i_C >= 1
-  int residual_vectors = 15;    ///< N_res >= 0
-  int svd_modes = 10;           ///< fas-aposteriori: leading energy-SVD modes of the converged solution (>= 0)
-  int pgd_max_modes = 30;       ///< fas-apriori: PGD modes kept at most (>= 0; 0: residual vectors only)
-  int pgd_modes_per_cycle = 4;  ///< fas-apriori: rank-one pairs added per cycle at most (>= 1)
-  double pgd_seed_share = 0.5;  ///< fas-apriori warm start: share of pgd_max_modes a seed may fill, in
-                                ///< [0, 1] (fas::AprioriBasisOptions::seed_share, docs/sweep.md)
-  std::string coarse_start = "zero";  ///< "zero" (docs/method.md §4 option a) or "mismatch" (option b)
+  int pre_relaxations = defaults::pre_relaxations;          ///< ν1 >= 1
+  int post_relaxations = defaults::post_relaxations;        ///< ν2 >= 0
+  int coarse_iterations = defaults::coarse_iterations;      ///< i_C >= 1
+  int residual_vectors = defaults::residual_vectors;        ///< N_res >= 0
+  int svd_modes = defaults::svd_modes;                      ///< fas-aposteriori: leading energy-SVD modes (>= 0)
+  /// fas-apriori: leading energy modes of the a priori expansion in the coarse space (>= 0; 0:
+  /// the modes of its change alone, residual_vectors of them).
+  int pgd_max_modes = defaults::pgd_max_modes;
+  double pgd_gap_share = defaults::pgd_gap_share;  ///< latin-pgd, fas-apriori: γ in (0, 1)
+  CoarseStart coarse_start = defaults::coarse_start;        ///< "zero" (docs/method.md §4 option a) or "mismatch" (b)
 };
 
 /// [solver]: choice and common options (each solver validates its own further options).
 struct SolverSpec {
   std::string name = "fas-apriori";  ///< latin, latin-pgd, fas-aposteriori, fas-apriori, incremental
-  double tolerance = 1e-6;           ///< on the LATIN indicator (docs/method.md §2), > 0
-  int max_iterations = 2000;         ///< >= 1
+  double tolerance = defaults::tolerance;         ///< on the LATIN indicator (docs/method.md §2), > 0
+  int max_iterations = defaults::max_iterations;  ///< >= 1
   double search_scale = 4.0;         ///< kappa of docs/method.md §2, > 0; 4 from docs/search_direction.md
   double relaxation = 1.0;           ///< omega in (0, 1]
   FasSpec fas;                       ///< keys pre_relaxations … coarse_start of [solver]
@@ -116,6 +117,9 @@ struct Scene {
   SolverSpec solver;
   OutputSpec output;
   std::string parameters_json;  ///< the scene as read (overrides applied), as a JSON object
+  /// Keys read but without effect (deprecated, docs/changelog.md): one message each, for the
+  /// program to print as warnings.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace stc

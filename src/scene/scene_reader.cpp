@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
+#include <span>
 #include <sstream>
 #include <utility>
 
@@ -23,8 +24,7 @@ using detail::formatNumber;
 using detail::TableView;
 
 /// Reads a string key that must be one of `allowed`; returns it.
-std::string readKeyword(const TableView& table, std::string_view key,
-                        std::initializer_list<std::string_view> allowed) {
+std::string readKeyword(const TableView& table, std::string_view key, std::span<const std::string_view> allowed) {
   std::string text = table.requiredString(key);
   std::string list;
   for (const auto name : allowed) {
@@ -33,6 +33,11 @@ std::string readKeyword(const TableView& table, std::string_view key,
   }
   const std::string path = table.keyPath(key);
   table.errors().fail(path, "key '" + path + "' = \"" + text + "\" is not one of " + list);
+}
+
+std::string readKeyword(const TableView& table, std::string_view key,
+                        std::initializer_list<std::string_view> allowed) {
+  return readKeyword(table, key, std::span<const std::string_view>(allowed.begin(), allowed.size()));
 }
 
 /// Reads a Component ("x" or "y").
@@ -227,6 +232,19 @@ void readCount(const TableView& table, std::string_view key, int minimum, int& v
   requireRange(table, key, value, value >= minimum, minimum == 0 ? "must be >= 0" : "must be >= 1");
 }
 
+/// Keys of [solver] that have no effect since 0.2.0 (docs/changelog.md): still range-checked as in
+/// 0.1.0, so that a scene 0.1.0 accepted is accepted, with a warning each.
+void readDeprecated(const TableView& solver, std::vector<std::string>& warnings) {
+  int modes_per_cycle = 1;
+  readCount(solver, "pgd_modes_per_cycle", 1, modes_per_cycle);
+  const double share = solver.optionalNumber("pgd_seed_share").value_or(0.0);
+  requireRange(solver, "pgd_seed_share", share, share >= 0.0 && share <= 1.0, "must be in [0, 1]");
+  for (const char* key : {"pgd_modes_per_cycle", "pgd_seed_share"})
+    if (solver.has(key))
+      warnings.push_back(std::string("key 'solver.") + key +
+                         "' has no effect since version 0.2.0 and will be refused from 0.3.0 (docs/changelog.md)");
+}
+
 FasSpec readFas(const TableView& solver) {
   FasSpec fas;
   readCount(solver, "pre_relaxations", 1, fas.pre_relaxations);
@@ -235,24 +253,25 @@ FasSpec readFas(const TableView& solver) {
   readCount(solver, "residual_vectors", 0, fas.residual_vectors);
   readCount(solver, "svd_modes", 0, fas.svd_modes);
   readCount(solver, "pgd_max_modes", 0, fas.pgd_max_modes);
-  readCount(solver, "pgd_modes_per_cycle", 1, fas.pgd_modes_per_cycle);
-  fas.pgd_seed_share = solver.optionalNumber("pgd_seed_share").value_or(fas.pgd_seed_share);
-  requireRange(solver, "pgd_seed_share", fas.pgd_seed_share, fas.pgd_seed_share >= 0.0 && fas.pgd_seed_share <= 1.0,
-               "must be in [0, 1]");
-  if (solver.has("coarse_start")) fas.coarse_start = readKeyword(solver, "coarse_start", {"zero", "mismatch"});
+  fas.pgd_gap_share = solver.optionalNumber("pgd_gap_share").value_or(fas.pgd_gap_share);
+  requireRange(solver, "pgd_gap_share", fas.pgd_gap_share, fas.pgd_gap_share > 0.0 && fas.pgd_gap_share < 1.0,
+               "must be in (0, 1)");
+  if (solver.has("coarse_start"))
+    fas.coarse_start = readKeyword(solver, "coarse_start", {"zero", "mismatch"}) == "mismatch"
+                           ? CoarseStart::InterfaceMismatch
+                           : CoarseStart::ZeroCorrection;
   return fas;
 }
 
-SolverSpec readSolver(const TableView& root) {
+SolverSpec readSolver(const TableView& root, std::vector<std::string>& warnings) {
   SolverSpec spec;
   const auto solver = root.optionalTable(
       "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
                  "post_relaxations", "coarse_iterations", "residual_vectors", "svd_modes", "coarse_start",
-                 "pgd_max_modes", "pgd_modes_per_cycle", "pgd_seed_share"});
+                 "pgd_max_modes", "pgd_gap_share", "pgd_modes_per_cycle", "pgd_seed_share"});
   if (!solver) return spec;
   if (solver->has("name")) {
-    spec.name = readKeyword(
-        *solver, "name", {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori", "incremental"});
+    spec.name = readKeyword(*solver, "name", kSolverNames);
   }
   spec.tolerance = solver->optionalNumber("tolerance").value_or(spec.tolerance);
   requireRange(*solver, "tolerance", spec.tolerance, spec.tolerance > 0.0, "must be > 0");
@@ -265,6 +284,7 @@ SolverSpec readSolver(const TableView& root) {
   requireRange(*solver, "relaxation", spec.relaxation,
                spec.relaxation > 0.0 && spec.relaxation <= 1.0, "must be in (0, 1]");
   spec.fas = readFas(*solver);
+  readDeprecated(*solver, warnings);
   return spec;
 }
 
@@ -301,7 +321,7 @@ Scene readTable(const toml::table& table, const std::filesystem::path& source,
   scene.time = readTime(root);
   scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet");
   scene.loads = readHistories<LoadSpec>(root, "load");
-  scene.solver = readSolver(root);
+  scene.solver = readSolver(root, scene.warnings);
   scene.output = readOutput(root);
   scene.parameters_json = toJson(table);
   return scene;

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <string>
 
+#include "src/core/solver_settings.hpp"
 #include "src/solver/equilibrium_energy.hpp"
 #include "src/solver/error_estimate.hpp"
 #include "src/solver/error_reference.hpp"
@@ -15,8 +16,8 @@
 namespace stc {
 
 struct StoppingRule {
-  double tolerance = 1e-6;      ///< on the error estimate (the true error it estimates, docs/method.md §2)
-  int max_iterations = 1000;
+  double tolerance = defaults::tolerance;  ///< on the error estimate (the true error it estimates, docs/method.md §2)
+  int max_iterations = defaults::max_iterations;
   int stagnation_window = 0;    ///< iterations without a 1% decrease of the best indicator (0: off)
   int estimate_period = 1;      ///< iterations per period of the iteration (ErrorEstimator)
 };

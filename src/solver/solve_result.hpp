@@ -16,7 +16,7 @@ struct SolveResult {
   std::optional<InterfaceHistory> contact_admissible;
   /// The spatial modes of the basis the strategy built a priori (fas-apriori, latin-pgd): n_free × r,
   /// orthonormal in the energy product of this problem's K + Bᵀ k B; empty for the others. A solve of
-  /// a neighbouring problem may start its basis from them (fas::StrategyInputs::basis_seed).
+  /// a neighbouring problem may start its basis from them (StrategyInputs::basis_seed).
   Eigen::MatrixXd spatial_modes;
   /// The interface directions of a separated global stage (fas-apriori, latin-pgd; 2n_C × p,
   /// pgd/response_basis.hpp); empty for the others. A solve of a neighbouring problem may start its

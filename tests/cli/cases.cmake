@@ -3,23 +3,11 @@ set(seed ${scenes}/hemicylinder.toml)
 set(small --set mesh.arc_nodes=21 --set time.steps=21)
 
 stc_cli_test(help 0 "Usage" --help)
-stc_cli_test(version 0 "stcontact 0\\.1\\.0" --version)
+stc_cli_test(version 0 "stcontact 0\\.2\\.0" --version)
 stc_cli_test(no_command 1 "subcommand" )
 stc_cli_test(check_seed_sizes 0 "dofs +1142 \\(1088 free, 54 prescribed\\)" check ${seed})
 stc_cli_test(check_seed_contact_nodes 0 "contact nodes +101 on boundary 'arc'" check ${seed})
 stc_cli_test(check_punch 0 "contact nodes" check ${scenes}/punch.toml)
-
-# Bad input: exit 1, one "error:" line naming the key, file or entity.
-stc_cli_test(bad_unknown_key 1 "unknown key 'material.youngs'" check ${seed} --set material.youngs=1.0)
-stc_cli_test(bad_poisson_half 1 "material.poisson.*\\(-1, 0\\.5\\)" check ${seed} --set material.poisson=0.5)
-stc_cli_test(bad_missing_boundary 1 "boundary 'rim' is not in the mesh" check ${seed} --set contact.boundary=rim)
-stc_cli_test(bad_penetrating_node 1 "starts inside the obstacle" check ${seed} --set "obstacle.point=[0.0, -0.99]")
-stc_cli_test(bad_truncated_msh 1 "truncated\\.msh" check ${bad}/truncated.toml)
-stc_cli_test(bad_malformed_toml 1 "malformed\\.toml:2" check ${bad}/malformed.toml)
-stc_cli_test(bad_missing_scene 1 "no_such_scene\\.toml" check ${bad}/no_such_scene.toml)
-stc_cli_test(bad_unknown_solver 1 "unknown solver 'fast'" solve ${seed} --solver fast)
-stc_cli_test(bad_unwritable_out 1 "/dev/null/out" solve ${seed} ${small} --solver latin --out /dev/null/out)
-stc_cli_test(bad_negative_tol 1 "--tol" solve ${seed} ${small} --solver latin --tol -1)
 
 # Solves: exit 0 when converged, 2 when not (results still written).
 set(out ${CMAKE_CURRENT_BINARY_DIR}/out)
@@ -46,58 +34,68 @@ set_tests_properties(cli.solve_writes_every_output PROPERTIES DEPENDS cli.solve_
 # A posteriori space-time SVD (docs/method.md §3): prints the modes for 99%, 99.9%, 99.99% of the energy.
 stc_cli_test(svd_small 0 "99.9" svd ${seed} ${small} --out ${out}/svd)
 
-# Bad input through `solve` (issue 8): exit 1, one "error:" line naming the key, file or entity and
-# the rule, and no output folder created: the refusal comes before anything is written.
+# Bad input (the scene, its mesh, the options): exit 1 and one "error:" line naming the key, file or
+# entity and the rule broken. One row a case, fields separated by '|':
+#   bad_NAME|PATTERN|ARGS...      the program run with ARGS;
+#   refuse_NAME|PATTERN|SCENE|ARGS...  `solve SCENE --solver latin --out DIR ARGS...`,
+#                                  and DIR not created: the refusal comes before anything is written.
 set(refused ${CMAKE_CURRENT_BINARY_DIR}/refused)
-function(stc_cli_refused name pattern scene)
-  add_test(NAME cli.refuse_${name}
-           COMMAND bash ${expect} --absent ${refused}/${name} 1 "${pattern}"
-                   ${cli} solve ${scene} --solver latin --out ${refused}/${name} ${ARGN})
-  set_tests_properties(cli.refuse_${name} PROPERTIES LABELS cli)
-endfunction()
 set(trunc ${bad}/truncated.toml)
-stc_cli_refused(malformed_toml "malformed\\.toml:2:[0-9]+: TOML syntax error" ${bad}/malformed.toml)
-stc_cli_refused(missing_scene "no_such_scene\\.toml: cannot open" ${bad}/no_such_scene.toml)
-stc_cli_refused(bad_table_header "bad_table_header\\.toml:3:2: TOML syntax error: a table name cannot start with '\\.'"
-                ${bad}/bad_table_header.toml)
-stc_cli_refused(set_index_overflow "--set dirichlet\\[9+\\]\\.values=\\[1\\]: malformed key" ${seed}
-                "--set" "dirichlet[99999999999999999999999].values=[1]")
-stc_cli_refused(unknown_key "unknown key 'contact\\.frction'" ${seed} ${small} --set contact.frction=0.3)
-stc_cli_refused(unknown_table "unknown key 'solvers'" ${seed} ${small} --set solvers.name=latin)
-stc_cli_refused(wrong_type_float_for_int "key 'time\\.steps' must be an integer, got a float" ${seed} --set time.steps=2.5)
-stc_cli_refused(wrong_type_string_for_number "key 'material\\.young' must be a number, got a string" ${seed}
-                --set material.young=abc)
-stc_cli_refused(wrong_type_number_for_array "key 'obstacle\\.normal' must be an array" ${seed} --set obstacle.normal=1.0)
-stc_cli_refused(nan_young "key 'material\\.young' = nan is not a finite number" ${seed} --set material.young=nan)
-stc_cli_refused(inf_friction "key 'contact\\.friction' = inf is not a finite number" ${seed} --set contact.friction=inf)
-stc_cli_refused(nan_in_history "key 'dirichlet\\[0\\]\\.values\\[1\\]' = nan is not a finite number" ${seed}
-                "--set" "dirichlet[0].values=[0.0, nan, 0.05]")
-stc_cli_refused(young_zero "key 'material\\.young' = 0 is out of range: must be > 0" ${seed} --set material.young=0)
-stc_cli_refused(young_negative "key 'material\\.young' = -3000 is out of range: must be > 0" ${seed}
-                --set material.young=-3000)
-stc_cli_refused(poisson_half "key 'material\\.poisson' = 0\\.5 is out of range: must be in \\(-1, 0\\.5\\)" ${seed}
-                --set material.poisson=0.5)
-stc_cli_refused(poisson_above_half "key 'material\\.poisson' = 0\\.6 is out of range" ${seed} --set material.poisson=0.6)
-stc_cli_refused(friction_negative "key 'contact\\.friction' = -0\\.1 is out of range: must be >= 0" ${seed}
-                --set contact.friction=-0.1)
-stc_cli_refused(one_step "key 'time\\.steps' = 1 is out of range: must be >= 2" ${seed} --set time.steps=1)
-stc_cli_refused(times_repeated "key 'dirichlet\\[0\\]\\.times' must be strictly increasing, but entry 2 = 0\\.2 follows 0\\.2"
-                ${seed} "--set" "dirichlet[0].times=[0.0, 0.2, 0.2]")
-stc_cli_refused(times_decreasing "key 'dirichlet\\[1\\]\\.times' must be strictly increasing, but entry 2 = 0\\.1 follows 0\\.2"
-                ${seed} "--set" "dirichlet[1].times=[0.0, 0.2, 0.1]")
-stc_cli_refused(empty_boundary "key 'contact\\.boundary' must not be empty" ${seed} "--set" "contact.boundary=\"\"")
-stc_cli_refused(unknown_contact_boundary "key 'contact\\.boundary': boundary 'rim' is not in the mesh \\(it has: 'arc' 'top'\\)"
-                ${seed} --set contact.boundary=rim)
-stc_cli_refused(unknown_dirichlet_boundary "key 'dirichlet\\[1\\]\\.boundary': boundary 'rim' is not in the mesh" ${seed}
-                "--set" "dirichlet[1].boundary=rim")
-stc_cli_refused(inverted_element "inverted\\.msh: line 36: triangle 4 is inverted" ${bad}/inverted.toml)
-stc_cli_refused(initial_penetration "contact node [0-9]+ at \\(.*\\) starts inside the obstacle \\(initial gap -[0-9.e-]+ < 0"
-                ${seed} "--set" "obstacle.point=[0.0, -0.99]")
-stc_cli_refused(missing_mesh "cannot open mesh file '.*no_such\\.msh'" ${trunc} --set mesh.file=no_such.msh)
-stc_cli_refused(empty_mesh "empty\\.msh: empty file" ${trunc} --set mesh.file=empty.msh)
-stc_cli_refused(truncated_mesh "truncated\\.msh: line 1123: expected 3 numbers \\(x y z\\) for node 455" ${trunc})
-stc_cli_refused(tol_nan "--tol must be > 0" ${seed} ${small} --tol nan)
-stc_cli_refused(max_iterations_zero "--max-iterations must be >= 1" ${seed} ${small} --max-iterations 0)
+string(REPLACE ";" "|" small_fields "${small}")
+set(stc_refusals
+  "bad_unknown_key|unknown key 'material.youngs'|check|${seed}|--set|material.youngs=1.0"
+  "bad_poisson_half|material.poisson.*\\(-1, 0\\.5\\)|check|${seed}|--set|material.poisson=0.5"
+  "bad_missing_boundary|boundary 'rim' is not in the mesh|check|${seed}|--set|contact.boundary=rim"
+  "bad_penetrating_node|starts inside the obstacle|check|${seed}|--set|obstacle.point=[0.0, -0.99]"
+  "bad_truncated_msh|truncated\\.msh|check|${bad}/truncated.toml"
+  "bad_malformed_toml|malformed\\.toml:2|check|${bad}/malformed.toml"
+  "bad_missing_scene|no_such_scene\\.toml|check|${bad}/no_such_scene.toml"
+  "bad_unknown_solver|unknown solver 'fast'|solve|${seed}|--solver|fast"
+  "bad_unwritable_out|/dev/null/out|solve|${seed}|${small_fields}|--solver|latin|--out|/dev/null/out"
+  "bad_negative_tol|--tol|solve|${seed}|${small_fields}|--solver|latin|--tol|-1"
+  "refuse_malformed_toml|malformed\\.toml:2:[0-9]+: TOML syntax error|${bad}/malformed.toml"
+  "refuse_missing_scene|no_such_scene\\.toml: cannot open|${bad}/no_such_scene.toml"
+  "refuse_bad_table_header|bad_table_header\\.toml:3:2: TOML syntax error: a table name cannot start with '\\.'|${bad}/bad_table_header.toml"
+  "refuse_set_index_overflow|--set dirichlet\\[9+\\]\\.values=\\[1\\]: malformed key|${seed}|--set|dirichlet[99999999999999999999999].values=[1]"
+  "refuse_unknown_key|unknown key 'contact\\.frction'|${seed}|${small_fields}|--set|contact.frction=0.3"
+  "refuse_unknown_table|unknown key 'solvers'|${seed}|${small_fields}|--set|solvers.name=latin"
+  "refuse_wrong_type_float_for_int|key 'time\\.steps' must be an integer, got a float|${seed}|--set|time.steps=2.5"
+  "refuse_wrong_type_string_for_number|key 'material\\.young' must be a number, got a string|${seed}|--set|material.young=abc"
+  "refuse_wrong_type_number_for_array|key 'obstacle\\.normal' must be an array|${seed}|--set|obstacle.normal=1.0"
+  "refuse_nan_young|key 'material\\.young' = nan is not a finite number|${seed}|--set|material.young=nan"
+  "refuse_inf_friction|key 'contact\\.friction' = inf is not a finite number|${seed}|--set|contact.friction=inf"
+  "refuse_nan_in_history|key 'dirichlet\\[0\\]\\.values\\[1\\]' = nan is not a finite number|${seed}|--set|dirichlet[0].values=[0.0, nan, 0.05]"
+  "refuse_young_zero|key 'material\\.young' = 0 is out of range: must be > 0|${seed}|--set|material.young=0"
+  "refuse_young_negative|key 'material\\.young' = -3000 is out of range: must be > 0|${seed}|--set|material.young=-3000"
+  "refuse_poisson_half|key 'material\\.poisson' = 0\\.5 is out of range: must be in \\(-1, 0\\.5\\)|${seed}|--set|material.poisson=0.5"
+  "refuse_poisson_above_half|key 'material\\.poisson' = 0\\.6 is out of range|${seed}|--set|material.poisson=0.6"
+  "refuse_friction_negative|key 'contact\\.friction' = -0\\.1 is out of range: must be >= 0|${seed}|--set|contact.friction=-0.1"
+  "refuse_one_step|key 'time\\.steps' = 1 is out of range: must be >= 2|${seed}|--set|time.steps=1"
+  "refuse_times_repeated|key 'dirichlet\\[0\\]\\.times' must be strictly increasing, but entry 2 = 0\\.2 follows 0\\.2|${seed}|--set|dirichlet[0].times=[0.0, 0.2, 0.2]"
+  "refuse_times_decreasing|key 'dirichlet\\[1\\]\\.times' must be strictly increasing, but entry 2 = 0\\.1 follows 0\\.2|${seed}|--set|dirichlet[1].times=[0.0, 0.2, 0.1]"
+  "refuse_empty_boundary|key 'contact\\.boundary' must not be empty|${seed}|--set|contact.boundary=\"\""
+  "refuse_unknown_contact_boundary|key 'contact\\.boundary': boundary 'rim' is not in the mesh \\(it has: 'arc' 'top'\\)|${seed}|--set|contact.boundary=rim"
+  "refuse_unknown_dirichlet_boundary|key 'dirichlet\\[1\\]\\.boundary': boundary 'rim' is not in the mesh|${seed}|--set|dirichlet[1].boundary=rim"
+  "refuse_inverted_element|inverted\\.msh: line 36: triangle 4 is inverted|${bad}/inverted.toml"
+  "refuse_initial_penetration|contact node [0-9]+ at \\(.*\\) starts inside the obstacle \\(initial gap -[0-9.e-]+ < 0|${seed}|--set|obstacle.point=[0.0, -0.99]"
+  "refuse_missing_mesh|cannot open mesh file '.*no_such\\.msh'|${trunc}|--set|mesh.file=no_such.msh"
+  "refuse_empty_mesh|empty\\.msh: empty file|${trunc}|--set|mesh.file=empty.msh"
+  "refuse_truncated_mesh|truncated\\.msh: line 1123: expected 3 numbers \\(x y z\\) for node 455|${trunc}"
+  "refuse_tol_nan|--tol must be > 0|${seed}|${small_fields}|--tol|nan"
+  "refuse_max_iterations_zero|--max-iterations must be >= 1|${seed}|${small_fields}|--max-iterations|0")
+foreach(row IN LISTS stc_refusals)
+  string(REPLACE "|" ";" fields "${row}")
+  list(POP_FRONT fields name pattern)
+  if(name MATCHES "^refuse_(.*)")
+    list(POP_FRONT fields scene)
+    add_test(NAME cli.${name}
+             COMMAND bash ${expect} --absent ${refused}/${CMAKE_MATCH_1} 1 "${pattern}"
+                     ${cli} solve ${scene} --solver latin --out ${refused}/${CMAKE_MATCH_1} ${fields})
+    set_tests_properties(cli.${name} PROPERTIES LABELS cli)
+  else()
+    stc_cli_test(${name} 1 "${pattern}" ${fields})
+  endif()
+endforeach()
 
 # Unwritable output folders: refused before the solve, and nothing created or changed.
 stc_cli_test(refuse_out_in_proc 1 "cannot create output folder '/proc/stcontact-out'" solve ${seed} ${small}

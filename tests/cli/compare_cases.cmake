@@ -1,5 +1,5 @@
 # `stcontact compare` bad input: exit 1, one "error:" line naming the option or solver.
-# (The successful run is checked end to end, file by file, by tests/report/compare_command_test.cpp.)
+# (The successful run is checked end to end, file by file, by tests/cli/test_compare_command.cpp.)
 stc_cli_test(compare_unknown_solver 1 "unknown solver 'fast'" compare ${seed} ${small} --solvers latin,fast
              --out ${out}/compare_bad)
 stc_cli_test(compare_solver_listed_twice 1 "'latin' is listed twice" compare ${seed} ${small}

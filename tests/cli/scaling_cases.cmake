@@ -1,6 +1,6 @@
 # `stcontact scaling` bad input: exit 1, one "error:" line naming the option. A time cap too short for
 # any iteration: every iterative strategy "not reached (time cap)", the report still written (exit 0).
-# (The successful run is checked file by file by tests/report/scaling_command_test.cpp.)
+# (The successful run is checked file by file by tests/cli/test_scaling_command.cpp.)
 set(tiny --set mesh.arc_nodes=11 --set time.steps=11 --repeats 1)
 stc_cli_test(scaling_zero_repeats 1 "--repeats must be >= 1" scaling ${seed} --repeats 0 --out ${out}/scaling_bad)
 stc_cli_test(scaling_bad_size 1 "--arc-nodes: 'x' is not an integer" scaling ${seed} --arc-nodes 11,x

@@ -1,6 +1,6 @@
 # `stcontact sweep` bad input: exit 1, one "error:" line naming the option, key or value and the
 # rule, and no report folder created: every value is checked before anything is written.
-# (The successful runs are checked end to end by tests/report/sweep_command_test.cpp.)
+# (The successful runs are checked end to end by tests/cli/test_sweep_command.cpp.)
 function(stc_sweep_refused name pattern)
   add_test(NAME cli.sweep_refuse_${name}
            COMMAND bash ${expect} --absent ${refused}/sweep_${name} 1 "${pattern}"

@@ -4,9 +4,11 @@
 
 #include <Eigen/SVD>
 
+#include "fas/apriori_basis.hpp"
 #include "fas/fas_solver.hpp"
 #include "fas/residual_vectors.hpp"
 #include "latin/latin_solver.hpp"
+#include "src/core/input_error.hpp"
 #include "src/solver/incremental_solver.hpp"
 #include "solver/seed_scene.hpp"
 
@@ -107,7 +109,6 @@ TEST(Fas, FineResultAgreesWithIncremental) {
   stc::fas::FasOptions options;
   options.tolerance = 1e-9;
   options.pre_relaxations = options.post_relaxations = 2;
-  options.residual_vectors = 10;
   const auto result = stc::fas::solveFas(f.problem, g, provider, options, "fas");
   ASSERT_TRUE(result.summary.converged()) << result.summary.message;
   EXPECT_LE(relativeDifference(result.interface.lambda, f.reference.interface.lambda), 1e-6);
@@ -140,7 +141,6 @@ stc::SolveResult solveWithFixedBasis(int modes, int residual_vectors, bool safeg
   stc::fas::FasOptions options;
   options.tolerance = 1e-8;
   options.max_relaxations = 400;
-  options.residual_vectors = residual_vectors;
   options.safeguard = safeguard;
   return stc::fas::solveFas(f.problem, g, provider, options, "fas");
 }
@@ -173,4 +173,34 @@ TEST(Fas, SafeguardLeavesAGoodCoarseSpaceUntouched) {
   for (std::size_t i = 0; i < plain.summary.history.size(); ++i)
     EXPECT_EQ(plain.summary.history[i].indicator, guarded.summary.history[i].indicator) << "relaxation " << i + 1;
   EXPECT_EQ(guarded.summary.message.find("rejected"), std::string::npos);
+}
+
+namespace {
+std::string validationMessage(const auto& options) {
+  try {
+    options.validate();
+  } catch (const stc::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(FasOptions, ValidateNamesFieldValueAndRuleWithIntegersAsIntegers) {
+  stc::fas::FasOptions options;
+  options.max_skip = 0;
+  EXPECT_EQ(validationMessage(options), "FAS option max_skip = 0: must be >= 1");
+}
+
+TEST(AprioriBasisOptions, ValidateNamesTheFieldAndRefusesAnEmptyCoarseSpace) {
+  stc::fas::AprioriBasisOptions options;
+  EXPECT_EQ(validationMessage(options), "");
+  options.modes = -1;
+  EXPECT_EQ(validationMessage(options), "a priori basis option modes = -1: must be >= 0");
+  options = {};
+  options.increment_modes = -2;
+  EXPECT_EQ(validationMessage(options), "a priori basis option increment_modes = -2: must be >= 0");
+  options.modes = options.increment_modes = 0;
+  EXPECT_EQ(validationMessage(options),
+            "a priori basis option modes + increment_modes = 0: must be >= 1 (an empty coarse space)");
 }

@@ -3,9 +3,9 @@
 // solution on 1 and 2 threads.
 #include <gtest/gtest.h>
 
-#include "fas/solve_by_name.hpp"
-#include "src/core/threads.hpp"
 #include "solver/seed_scene.hpp"
+#include "src/core/threads.hpp"
+#include "src/strategies/solve_by_name.hpp"
 
 namespace {
 
@@ -13,7 +13,7 @@ stc::SolveResult solveOn(int threads, const std::string& name, const stc::Proble
   const stc::ThreadCountScope scope(threads);
   stc::SolverSpec spec = scene.solver;
   spec.tolerance = 1e-8;
-  return stc::fas::solveByName(name, problem, spec);
+  return stc::solveByName(name, problem, spec);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // The a posteriori space-time SVD (pgd/space_time_svd.hpp, docs/method.md §3): orthonormality of the
 // pairs in their products, the energy identity Σσ² = ‖U‖²_K, exact recovery of a known rank,
-// ARPACK against the dense eigensolver (on random histories and on the seed scene: the issue's
-// "done when"), the Euclidean SVD as the K = I case, and option checks.
+// ARPACK against the dense eigensolver (on random histories and on the seed scene, the check
+// of docs/svd_seed.md), the Euclidean SVD as the K = I case, and option checks.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -147,7 +147,7 @@ TEST(EnergySvd, InvalidOptionsAndSizesAreInputErrors) {
   EXPECT_THROW(stc::pgd::plainSvd(U, 7), stc::InputError);
 }
 
-// The "done when": on the seed scene (docs/method.md §6, 1142 dofs, 201 instants) solved by the
+// The check of docs/svd_seed.md: on the seed scene (docs/method.md §6, 1142 dofs, 201 instants) solved by the
 // incremental solver, ARPACK and the dense eigensolver agree on the leading 10 singular values.
 TEST(EnergySvd, SeedSceneArpackAgreesWithDenseOnTheLeadingTenSingularValues) {
   const stc::Problem problem = stc::buildProblem(stc::test::seedScene());

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -322,27 +321,6 @@ TEST(ContactLawCheck, FlagsEachKindOfViolationInAPerturbedSolution) {
   EXPECT_GT(perturbed([&](auto& h) { h.lambda(2 * i + 1, k) *= 0.5; }).stick_slip, visible);
   EXPECT_GT(perturbed([&](auto& h) { h.lambda(2 * i + 1, k) *= -1.0; }).slip_direction, visible);
   EXPECT_LE(stc::checkContactLaw(s.problem, s.result.interface).max(), kLawTolerance);
-}
-
-// Not a pass/fail property: the wall time of the seed scene (arc_nodes 101, steps 201), the best of
-// five runs, printed and recorded in the test's XML output (--gtest_output=xml).
-TEST(IncrementalSolver, ReportsSeedSceneWallTime) {
-  const stc::Problem problem = stc::buildProblem(seedScene(101, 201));
-  double best = INFINITY, setup = 0.0;
-  stc::SolveSummary summary;
-  for (int run = 0; run < 5; ++run) {
-    const auto result = stc::solveIncremental(problem);
-    ASSERT_TRUE(result.summary.converged());
-    if (result.summary.wall_s < best) {
-      best = result.summary.wall_s;
-      setup = result.summary.history.front().wall_s;  // factorisation, W, v_0 and instant 0
-      summary = result.summary;
-    }
-  }
-  std::cout << "[ seed     ] wall " << best * 1e3 << " ms (factorisation + W + v_0: " << setup * 1e3
-            << " ms), " << newtonIterations(summary) << " Newton iterations\n";
-  RecordProperty("wall_ms", std::to_string(best * 1e3));
-  RecordProperty("newton_iterations", std::to_string(newtonIterations(summary)));
 }
 
 }  // namespace

@@ -1,0 +1,51 @@
+#pragma once
+// The solvers' settings in one place: the strategy names, the coarse start of FAS, and every
+// default of their options. The scene's [solver] keys (src/scene/scene.hpp) and the options
+// structs of the libraries (StoppingRule, LatinOptions, ControlledStageOptions, FasOptions,
+// AprioriBasisOptions) start from these values; each struct validates its own fields.
+#include <array>
+#include <string_view>
+
+namespace stc {
+
+/// The strategies by their docs/interface.md names (what `solver.name`, --solver and --solvers take),
+/// in the order of the comparison reports.
+inline constexpr std::array<std::string_view, 5> kSolverNames = {"latin", "latin-pgd", "fas-aposteriori",
+                                                                 "fas-apriori", "incremental"};
+
+/// How the FAS coarse step starts from s̃ = (ũ, λ̃) (docs/method.md §4, "How the coarse step starts");
+/// scene key solver.coarse_start = "zero" | "mismatch".
+enum class CoarseStart {
+  ZeroCorrection,     ///< (a) Δv̂ = 0, Δλ̂ = 0, taking v = Bũ (discards v̂ − Bũ)
+  InterfaceMismatch,  ///< (b) Δv̂ = v̂ − Bũ, Δλ̂ = 0 (exact when the coarse space is the whole space)
+};
+
+namespace defaults {
+
+/// On the estimate of the true error (src/solver/error_estimate.hpp; docs/method.md §2).
+inline constexpr double tolerance = 1e-6;
+/// Iterations (relaxations for FAS) at most: LATIN converges linearly and the seed needs a few
+/// hundred at 1e-6; the hard cases that fail do not converge in 2000 either (docs/hard_cases.md).
+inline constexpr int max_iterations = 2000;
+inline constexpr int stagnation_window = 500;  ///< iterations without a 1% decrease of η before giving up
+/// Instants per multi-right-hand-side solve (memory n_free × block; 16–32 measured fastest on the
+/// seed scene, see src/linalg/spd_factor.cpp).
+inline constexpr int block_size = 32;
+
+// FAS (seed paper §4.2: ν1 = ν2 = 1, i_C = 15, N_res = 15; ν = 1 beat ν = 2 for both bases on the
+// seed scene: docs/fas_aposteriori.md, docs/compare_bases.md).
+inline constexpr int pre_relaxations = 1;      ///< ν1
+inline constexpr int post_relaxations = 1;     ///< ν2
+inline constexpr int coarse_iterations = 15;   ///< i_C
+inline constexpr int residual_vectors = 15;    ///< N_res (seed §4.3)
+inline constexpr CoarseStart coarse_start = CoarseStart::ZeroCorrection;
+inline constexpr int svd_modes = 10;           ///< fas-aposteriori: leading energy-SVD modes
+/// fas-apriori: leading energy modes of the a priori expansion in the coarse space (beside
+/// residual_vectors modes of its change since the previous coarse step; docs/floor.md).
+inline constexpr int pgd_max_modes = 30;
+/// latin-pgd and fas-apriori: γ, the separated global stage's projection error kept below γ times the
+/// previous gap ‖s − ŝ‖ (pgd/controlled_global_stage.hpp; docs/floor.md).
+inline constexpr double pgd_gap_share = 0.05;
+
+}  // namespace defaults
+}  // namespace stc

@@ -1,0 +1,32 @@
+#pragma once
+// The parts of the extension module stcontact._core, each declared on the module by its file;
+// src/python/module.cpp calls them in order. The Python package (src/python/stcontact/) wraps them
+// in its classes; docs/python.md documents the Python side.
+#include <pybind11/pybind11.h>
+
+#include <optional>
+
+#include "src/core/threads.hpp"
+
+namespace stc::python {
+
+namespace py = pybind11;
+
+void bindScene(py::module_& module);    ///< scene_binding.cpp: Scene, check, mesh arrays
+void bindSolve(py::module_& module);    ///< solve_binding.cpp: solve, IterationRecord, Problem
+void bindStudies(py::module_& module);  ///< study_bindings.cpp: svd, compare
+
+/// The command line's --threads for one call: the STC_THREADS check first (a bad value is refused
+/// before anything runs), then `threads` for the call's duration, the previous count restored after.
+class ThreadsForCall {
+ public:
+  explicit ThreadsForCall(std::optional<int> threads) {
+    threadCount();
+    if (threads) scope_.emplace(*threads);
+  }
+
+ private:
+  std::optional<ThreadCountScope> scope_;
+};
+
+}  // namespace stc::python

@@ -1,0 +1,44 @@
+#include "src/python/callback_bridge.hpp"
+
+#include <utility>
+
+namespace stc::python {
+
+CallbackBridge::CallbackBridge(py::object callback) : callback_(std::move(callback)) {
+  if (!callback_.is_none() && !PyCallable_Check(callback_.ptr()))
+    throw py::type_error("callback must be callable (record) -> bool, or None");
+}
+
+IterationCallback CallbackBridge::withUserCallback() {
+  return [this](const IterationRecord& record) { return keepGoing(record, true); };
+}
+
+IterationCallback CallbackBridge::signalsOnly() {
+  return [this](const IterationRecord& record) { return keepGoing(record, false); };
+}
+
+bool CallbackBridge::keepGoing(const IterationRecord& record, bool call_user) {
+  py::gil_scoped_acquire lock;
+  if (pending_) return false;
+  try {
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (!call_user || callback_.is_none()) return true;
+    const py::object answer = callback_(record);
+    if (answer.is_none()) return true;
+    const int truth = PyObject_IsTrue(answer.ptr());
+    if (truth < 0) throw py::error_already_set();
+    return truth == 1;
+  } catch (py::error_already_set& error) {
+    pending_.emplace(std::move(error));
+    return false;
+  }
+}
+
+void CallbackBridge::rethrowPending() {
+  if (!pending_) return;
+  py::error_already_set error = std::move(*pending_);
+  pending_.reset();
+  throw error;
+}
+
+}  // namespace stc::python

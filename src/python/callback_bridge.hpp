@@ -1,0 +1,41 @@
+#pragma once
+// The solvers' per-iteration callback (stc::IterationCallback) during a solve that runs with the
+// interpreter's lock released: at each record it takes the lock back briefly, lets Python run its
+// signal handlers (PyErr_CheckSignals: Ctrl-C raises KeyboardInterrupt there), then calls the
+// user's callback(record), if any. A pending exception, or a callback that returns False, stops
+// the solve (Termination::StoppedByCallback); after the solve, with the lock held again,
+// rethrowPending() raises the exception (KeyboardInterrupt, or whatever the callback raised).
+#include <pybind11/pybind11.h>
+
+#include <optional>
+
+#include "src/solver/solve_summary.hpp"
+
+namespace stc::python {
+
+namespace py = pybind11;
+
+class CallbackBridge {
+ public:
+  /// `callback`: None or a callable taking an IterationRecord; its answer stops the solve when
+  /// it is false (None counts as "go on"). Construct with the lock held.
+  explicit CallbackBridge(py::object callback = py::none());
+
+  /// Signals, then the user's callback: for the solve the user asked for.
+  IterationCallback withUserCallback();
+  /// Signals only: for the solves the call makes on the way (the incremental reference).
+  IterationCallback signalsOnly();
+
+  /// True once an exception is pending (later solves of the same call should not start).
+  bool interrupted() const { return pending_.has_value(); }
+  /// Raises the pending exception, if any. Call with the lock held.
+  void rethrowPending();
+
+ private:
+  bool keepGoing(const IterationRecord& record, bool call_user);
+
+  py::object callback_;
+  std::optional<py::error_already_set> pending_;
+};
+
+}  // namespace stc::python

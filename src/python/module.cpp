@@ -1,0 +1,44 @@
+// The extension module stcontact._core (pybind11). Bad input (stc::InputError) becomes
+// stcontact.InputError, a ValueError whose message is the command line's "error:" line without
+// its prefix (src/cli/main.cpp); an output folder that cannot be written (stc::OutputError), an
+// OSError with the same message.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "src/core/input_error.hpp"
+#include "src/io/output_error.hpp"
+#include "src/python/bindings.hpp"
+#include "src/strategies/solve_by_name.hpp"
+
+namespace {
+
+namespace py = pybind11;
+
+/// The message on one line, as src/cli/main.cpp prints it.
+std::string oneLine(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, module) {
+  module.doc() = "stcontact's compiled core; use the package stcontact (docs/python.md).";
+  module.attr("__version__") = STC_VERSION;
+  static py::exception<stc::InputError> input_error(module, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const stc::InputError& e) {
+      input_error(oneLine(e.what()).c_str());
+    } catch (const stc::OutputError& e) {
+      PyErr_SetString(PyExc_OSError, oneLine(e.what()).c_str());
+    }
+  });
+  module.def("available_solvers", &stc::availableSolvers, "The strategies solve() and compare() accept.");
+  stc::python::bindScene(module);
+  stc::python::bindSolve(module);
+  stc::python::bindStudies(module);
+}

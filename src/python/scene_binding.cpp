@@ -1,0 +1,78 @@
+// stcontact._core.Scene: a validated scene (scene_handle.hpp), the sizes `stcontact check` prints,
+// and the mesh as arrays for plotting.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "src/python/bindings.hpp"
+#include "src/python/numpy_arrays.hpp"
+#include "src/python/scene_handle.hpp"
+
+namespace stc::python {
+namespace {
+
+/// What `stcontact check` prints (src/cli/check_command.cpp), as numbers.
+py::dict checkSizes(const SceneHandle& handle) {
+  const Scene& scene = handle.scene();
+  const std::shared_ptr<const Problem> problem = handle.problem();
+  const Problem& p = *problem;
+  const auto& c = p.contact;
+  py::dict sizes;
+  sizes["scene"] = scene.name;
+  sizes["source"] = handle.source().string();
+  sizes["plane"] = p.plane == PlaneModel::Strain ? "strain" : "stress";
+  sizes["young"] = p.material.young;
+  sizes["poisson"] = p.material.poisson;
+  sizes["friction"] = c.friction;
+  sizes["nodes"] = p.mesh.numNodes();
+  sizes["elements"] = p.mesh.numElements();
+  sizes["dofs"] = p.numDofs();
+  sizes["free_dofs"] = p.numFreeDofs();
+  sizes["prescribed_dofs"] = p.numDofs() - p.numFreeDofs();
+  sizes["contact_nodes"] = c.size();
+  sizes["boundary"] = scene.contact.boundary;
+  sizes["instants"] = p.numSteps();
+  sizes["t_start"] = p.times.front();
+  sizes["t_end"] = p.times.back();
+  sizes["initial_gap_min"] = c.initial_gap.minCoeff();
+  sizes["initial_gap_max"] = c.initial_gap.maxCoeff();
+  sizes["kappa"] = scene.solver.search_scale;
+  sizes["length_scale"] = p.length_scale;
+  sizes["kappa_young_per_length"] = c.search_scale_per_length;
+  sizes["search_direction_min"] = c.search_direction.minCoeff();
+  sizes["search_direction_max"] = c.search_direction.maxCoeff();
+  sizes["solver"] = scene.solver.name;
+  sizes["tolerance"] = scene.solver.tolerance;
+  return sizes;
+}
+
+/// The mesh and the contact interface as arrays: nodes (N × 2), triangles (E × 3, counter-clockwise
+/// node ids), contact_nodes (n_C mesh node ids, in the order of the interface rows), times (m).
+py::dict meshArrays(const SceneHandle& handle) {
+  const std::shared_ptr<const Problem> problem = handle.problem();
+  py::dict mesh;
+  mesh["nodes"] = movedToNumpy(Eigen::MatrixXd(problem->mesh.nodes.transpose()));
+  mesh["triangles"] = movedToNumpy(Eigen::MatrixXi(problem->mesh.triangles.transpose()));
+  mesh["contact_nodes"] = movedToNumpy(std::vector<int>(problem->contact.nodes));
+  mesh["initial_gap"] = movedToNumpy(Eigen::VectorXd(problem->contact.initial_gap));
+  mesh["times"] = movedToNumpy(std::vector<double>(problem->times));
+  return mesh;
+}
+
+}  // namespace
+
+void bindScene(py::module_& module) {
+  py::class_<SceneHandle>(module, "Scene", "A validated scene (TOML text, source, --set overrides).")
+      .def_static("from_file", &SceneHandle::fromFile, py::arg("path"), py::arg("sets"))
+      .def_static("from_toml", &SceneHandle::fromText, py::arg("text"), py::arg("source"), py::arg("sets"))
+      .def("with_sets", &SceneHandle::withOverrides, py::arg("sets"))
+      .def_property_readonly("name", [](const SceneHandle& h) { return h.scene().name; })
+      .def_property_readonly("source", [](const SceneHandle& h) { return h.source().string(); })
+      .def_property_readonly("text", &SceneHandle::text)
+      .def_property_readonly("sets", &SceneHandle::overrides)
+      .def_property_readonly("parameters_json", [](const SceneHandle& h) { return h.scene().parameters_json; })
+      .def_property_readonly("solver", [](const SceneHandle& h) { return h.scene().solver.name; })
+      .def("check", &checkSizes)
+      .def("mesh", &meshArrays);
+}
+
+}  // namespace stc::python

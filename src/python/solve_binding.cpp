@@ -1,0 +1,226 @@
+// stcontact._core.solve: one strategy on one scene, with the command line's options (--solver,
+// --tol, --max-iterations, --set, --no-reference, --threads, --out), a warm start and a
+// per-iteration callback; the solve runs with the interpreter's lock released (callback_bridge.hpp).
+// The result is a dict of NumPy arrays and texts that the Python class SolveResult wraps.
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <sstream>
+
+#include "pgd/displacement_history.hpp"
+#include "src/cli/commands.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/io/contact_tables.hpp"
+#include "src/io/run_writer.hpp"
+#include "src/python/bindings.hpp"
+#include "src/python/callback_bridge.hpp"
+#include "src/python/numpy_arrays.hpp"
+#include "src/python/scene_handle.hpp"
+#include "src/solver/warm_start.hpp"
+#include "src/strategies/solve_by_name.hpp"
+
+namespace stc::python {
+namespace {
+
+using ProblemPtr = std::shared_ptr<const Problem>;
+
+struct SolveOptions {
+  std::optional<std::string> solver;
+  std::optional<double> tolerance;
+  std::optional<int> max_iterations;
+  std::vector<std::string> sets;
+  bool reference = true;
+  std::optional<int> threads;
+  std::optional<std::filesystem::path> out;
+};
+
+/// A warm start as the caller passed it: a previous result's arrays (any may be None).
+struct WarmStart {
+  using Matrix = std::optional<Eigen::MatrixXd>;
+  Matrix forces, displacements, basis_seed;
+};
+
+/// The problem a result was solved on, kept alive by the result (Python: stcontact._core.Problem).
+struct ProblemRef {
+  ProblemPtr problem;
+};
+
+/// The start history and basis seed for `problem`; ValueError when a part is missing or its sizes
+/// do not fit (stc::requireFits names both sizes).
+void applyWarmStart(WarmStart& warm, const Problem& problem, std::optional<InterfaceHistory>& start,
+                    StrategyInputs& inputs) {
+  if (warm.forces.has_value() != warm.displacements.has_value())
+    throw std::invalid_argument("a warm start needs both the interface forces and the interface displacements");
+  if (warm.forces) {
+    start = InterfaceHistory{std::move(*warm.displacements), std::move(*warm.forces)};
+    requireFits(*start, problem);
+    inputs.start = &*start;
+  }
+  if (warm.basis_seed && warm.basis_seed->cols() > 0) {
+    requireFits(*warm.basis_seed, problem);
+    inputs.basis_seed = &*warm.basis_seed;
+  }
+}
+
+/// history.csv's columns (src/io/run_writer.hpp) and the sparse solves, one entry per record;
+/// the true error is NaN where unknown.
+py::dict historyArrays(const SolveSummary& summary) {
+  std::vector<int> iteration, relaxations, rank, sparse_solves;
+  std::vector<double> indicator, error, wall_s;
+  for (const IterationRecord& r : summary.history) {
+    iteration.push_back(r.iteration);
+    relaxations.push_back(r.relaxations);
+    indicator.push_back(r.indicator);
+    error.push_back(r.error.value_or(std::numeric_limits<double>::quiet_NaN()));
+    rank.push_back(r.rank);
+    sparse_solves.push_back(r.sparse_solves);
+    wall_s.push_back(r.wall_s);
+  }
+  py::dict history;
+  history["iteration"] = movedToNumpy(std::move(iteration));
+  history["relaxations"] = movedToNumpy(std::move(relaxations));
+  history["indicator"] = movedToNumpy(std::move(indicator));
+  history["error"] = movedToNumpy(std::move(error));
+  history["rank"] = movedToNumpy(std::move(rank));
+  history["wall_s"] = movedToNumpy(std::move(wall_s));
+  history["sparse_solves"] = movedToNumpy(std::move(sparse_solves));
+  return history;
+}
+
+/// reactions.csv's columns (stc::reactionTable, the writer's own rows).
+py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
+  ReactionTable table = reactionTable(problem, result);
+  std::vector<int> step(table.t.size());
+  for (std::size_t k = 0; k < step.size(); ++k) step[k] = static_cast<int>(k);
+  py::dict reactions;
+  reactions["step"] = movedToNumpy(std::move(step));
+  reactions["t"] = movedToNumpy(std::move(table.t));
+  reactions["normal_force"] = movedToNumpy(std::move(table.normal_force));
+  reactions["tangential_force"] = movedToNumpy(std::move(table.tangential_force));
+  reactions["contact_xmin"] = movedToNumpy(std::move(table.contact_xmin));
+  reactions["contact_xmax"] = movedToNumpy(std::move(table.contact_xmax));
+  reactions["n_contact"] = movedToNumpy(std::move(table.n_contact));
+  reactions["n_slip"] = movedToNumpy(std::move(table.n_slip));
+  return reactions;
+}
+
+/// Everything the Python SolveResult holds. Texts and tables first, while `result` is whole; then
+/// the large matrices are moved into their arrays. Call within the call's thread count (the
+/// summary records it).
+py::dict resultDict(const ProblemPtr& problem, const Scene& scene, SolveResult&& result) {
+  py::dict out;
+  out["solver"] = scene.solver.name;
+  out["summary_json"] = summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION});
+  out["history"] = historyArrays(result.summary);
+  out["reactions"] = reactionArrays(*problem, result);
+  out["times"] = movedToNumpy(std::vector<double>(problem->times));
+  out["contact_nodes"] = movedToNumpy(std::vector<int>(problem->contact.nodes));
+  out["forces"] = movedToNumpy(std::move(result.interface.lambda));
+  out["displacements"] = movedToNumpy(std::move(result.interface.v));
+  out["spatial_modes"] = movedToNumpy(std::move(result.spatial_modes));
+  out["interface_directions"] = movedToNumpy(std::move(result.interface_directions));
+  out["problem"] = ProblemRef{problem};
+  return out;
+}
+
+/// The reference (unless not wanted, see solve_command.cpp), then the strategy; the lock released.
+SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_reference, StrategyInputs inputs,
+                     CallbackBridge& bridge, std::string& warning) {
+  py::gil_scoped_release unlocked;
+  std::unique_ptr<ErrorReference> reference;
+  if (scene.solver.name != "incremental" && with_reference &&
+      problem.contact.size() <= cli::kMaxReferenceContactNodes)
+    reference = cli::solveReference(problem, bridge.signalsOnly(), warning);
+  if (bridge.interrupted()) return {};
+  inputs.reference = reference.get();
+  inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
+  inputs.callback = bridge.withUserCallback();
+  return solveByName(scene.solver.name, problem, scene.solver, inputs);
+}
+
+py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart warm, py::object callback) {
+  const ThreadsForCall threads(options.threads);
+  const SceneHandle run = handle.withOverrides(
+      cli::withSolverOptions(options.sets, options.solver, options.tolerance, options.max_iterations));
+  const Scene& scene = run.scene();
+  requireAvailable(scene.solver.name);
+  const ProblemPtr problem = run.problem();
+  if (options.out) ensureWritableDirectory(*options.out);  // fail before the solve, not after
+  std::optional<InterfaceHistory> start;
+  StrategyInputs inputs;
+  applyWarmStart(warm, *problem, start, inputs);
+
+  CallbackBridge bridge(std::move(callback));
+  std::string warning;
+  SolveResult result = runSolve(*problem, scene, options.reference, inputs, bridge, warning);
+  bridge.rethrowPending();
+  if (!warning.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
+  if (options.out) writeRunOutputs(*options.out, *problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
+  return resultDict(problem, scene, std::move(result));
+}
+
+/// Full displacements n × m (dof 2j: u_x of node j, 2j + 1: u_y) rebuilt from the forces.
+py::array displacementsFromForces(const ProblemRef& ref, const Eigen::MatrixXd& forces) {
+  const ProblemPtr& problem = ref.problem;
+  if (forces.rows() != 2 * problem->contact.size() || forces.cols() != problem->numSteps()) {
+    std::ostringstream message;
+    message << "forces are " << forces.rows() << " x " << forces.cols() << ", the problem's interface "
+            << 2 * problem->contact.size() << " x " << problem->numSteps();
+    throw std::invalid_argument(message.str());
+  }
+  Eigen::MatrixXd u;
+  {
+    py::gil_scoped_release unlocked;
+    const SpdFactor factor(problem->stiffness_free, "K_ff");
+    u = pgd::fullDisplacementHistory(*problem, factor, forces);
+  }
+  return movedToNumpy(std::move(u));
+}
+
+void bindRecord(py::module_& module) {
+  py::class_<IterationRecord>(module, "IterationRecord", "One iteration of a solve, as history.csv records it.")
+      .def_readonly("iteration", &IterationRecord::iteration)
+      .def_readonly("relaxations", &IterationRecord::relaxations)
+      .def_readonly("indicator", &IterationRecord::indicator)
+      .def_readonly("error", &IterationRecord::error)
+      .def_readonly("rank", &IterationRecord::rank)
+      .def_readonly("sparse_solves", &IterationRecord::sparse_solves)
+      .def_readonly("wall_s", &IterationRecord::wall_s)
+      .def("__repr__", [](const IterationRecord& r) {
+        std::ostringstream text;
+        text << "IterationRecord(iteration=" << r.iteration << ", relaxations=" << r.relaxations
+             << ", indicator=" << r.indicator << ", error=";
+        if (r.error) text << *r.error;
+        else text << "None";
+        text << ", rank=" << r.rank << ", wall_s=" << r.wall_s << ")";
+        return text.str();
+      });
+}
+
+}  // namespace
+
+void bindSolve(py::module_& module) {
+  bindRecord(module);
+  py::class_<ProblemRef>(module, "Problem", "The assembled problem a result was solved on.")
+      .def_property_readonly("n_dofs", [](const ProblemRef& r) { return r.problem->numDofs(); })
+      .def_property_readonly("n_free_dofs", [](const ProblemRef& r) { return r.problem->numFreeDofs(); })
+      .def_property_readonly("n_contact_nodes", [](const ProblemRef& r) { return r.problem->contact.size(); })
+      .def_property_readonly("n_steps", [](const ProblemRef& r) { return r.problem->numSteps(); })
+      .def("displacements", &displacementsFromForces, py::arg("forces"));
+  module.def(
+      "solve",
+      [](const SceneHandle& scene, std::optional<std::string> solver, std::optional<double> tol,
+         std::optional<int> max_iterations, std::vector<std::string> sets, bool reference,
+         std::optional<int> threads, std::optional<std::filesystem::path> out, WarmStart::Matrix forces,
+         WarmStart::Matrix displacements, WarmStart::Matrix basis_seed, py::object callback) {
+        SolveOptions options{std::move(solver), tol, max_iterations, std::move(sets), reference, threads, std::move(out)};
+        return solve(scene, options, {std::move(forces), std::move(displacements), std::move(basis_seed)},
+                     std::move(callback));
+      },
+      py::arg("scene"), py::arg("solver"), py::arg("tol"), py::arg("max_iterations"), py::arg("sets"),
+      py::arg("reference"), py::arg("threads"), py::arg("out"), py::arg("start_forces"),
+      py::arg("start_displacements"), py::arg("basis_seed"), py::arg("callback"));
+}
+
+}  // namespace stc::python

@@ -1,0 +1,174 @@
+"""stcontact: quasi-static frictional contact of elastic bodies over the whole space-time grid.
+
+The command line's work from Python (docs/python.md):
+
+    import stcontact
+    scene = stcontact.load_scene("examples/scenes/hemicylinder.toml", sets=["mesh.arc_nodes=31"])
+    print(stcontact.check(scene))                       # the sizes `stcontact check` prints
+    result = stcontact.solve(scene, solver="latin")     # every strategy, the CLI's options
+    result.reactions["normal_force"], result.history["error"], result.summary["termination"]
+    warm = stcontact.solve(scene.with_sets("contact.friction=0.2"), start=result)
+    stcontact.svd(scene), stcontact.compare(scene, ["latin", "fas-apriori"], repeats=1)
+
+A scene is a TOML file, a TOML text or a dict with the file's keys; either way the command line's
+reader checks it, and bad input raises InputError (a ValueError) with the command line's message.
+Solves release the interpreter's lock and stop on Ctrl-C (KeyboardInterrupt).
+"""
+
+import json
+import os
+from collections.abc import Mapping
+
+from . import _core
+from ._results import CompareResult, SolveResult, Strategy, SvdResult
+from ._scene_toml import SceneValueError, override_text, scene_toml
+
+__version__ = _core.__version__
+InputError = _core.InputError
+IterationRecord = _core.IterationRecord
+
+__all__ = ["Scene", "load_scene", "check", "solve", "svd", "compare", "available_solvers", "InputError",
+           "IterationRecord", "SolveResult", "SvdResult", "CompareResult", "Strategy", "__version__"]
+
+
+def _overrides(sets):
+    """--set texts from a list of "KEY=VALUE" strings or a dict {KEY: Python value}."""
+    if sets is None:
+        return []
+    if isinstance(sets, str):
+        return [sets]
+    if isinstance(sets, Mapping):
+        try:
+            return [override_text(key, value) for key, value in sets.items()]
+        except SceneValueError as error:
+            raise InputError("--set: %s" % error) from None
+    return [str(s) for s in sets]
+
+
+class Scene:
+    """A validated scene: its TOML text, its source and its --set overrides.
+
+    Build it with Scene.from_file, Scene.from_dict or Scene.from_toml (or load_scene); every check
+    of the scene file applies, a bad value raises InputError with the command line's message.
+    Checks that need the mesh (boundary names, initial penetration) run at the first check(),
+    mesh() or solve.
+    """
+
+    def __init__(self, handle):
+        self._handle = handle
+
+    @classmethod
+    def from_file(cls, path, sets=None):
+        """The scene file at `path` (messages name it as given; a relative mesh file is found beside it)."""
+        return cls(_core.Scene.from_file(os.fspath(path), _overrides(sets)))
+
+    @classmethod
+    def from_toml(cls, text, source="<text>", sets=None):
+        """A scene file's text; `source` names it in messages and locates a relative mesh file."""
+        return cls(_core.Scene.from_toml(text, os.fspath(source), _overrides(sets)))
+
+    @classmethod
+    def from_dict(cls, scene, sets=None, source="<dict>"):
+        """A dict with the scene file's keys ({"name": ..., "mesh": {...}, "dirichlet": [{...}], ...})."""
+        try:
+            text = scene_toml(scene)
+        except SceneValueError as error:
+            raise InputError("%s: %s" % (os.fspath(source), error)) from None
+        return cls.from_toml(text, source, sets)
+
+    def with_sets(self, *sets):
+        """This scene with more overrides: with_sets("contact.friction=0.3") or with_sets({"time.steps": 41})."""
+        extra = [text for s in sets for text in _overrides(s)]
+        return Scene(self._handle.with_sets(extra))
+
+    name = property(lambda self: self._handle.name, doc="The scene's name.")
+    source = property(lambda self: self._handle.source, doc="The file (or source name) it was read from.")
+    text = property(lambda self: self._handle.text, doc="The TOML text, before the overrides.")
+    sets = property(lambda self: list(self._handle.sets), doc="The --set overrides applied.")
+    solver = property(lambda self: self._handle.solver, doc="The scene's [solver] name.")
+
+    @property
+    def parameters(self):
+        """The scene as read, overrides applied (summary.json's "parameters")."""
+        return json.loads(self._handle.parameters_json)
+
+    def check(self):
+        """The sizes `stcontact check` prints, as a dict."""
+        return self._handle.check()
+
+    def mesh(self):
+        """nodes (N x 2), triangles (E x 3 node ids), contact_nodes (n_C node ids), initial_gap (n_C), times (m)."""
+        return self._handle.mesh()
+
+    def __repr__(self):
+        return "<Scene %s from %s%s>" % (self.name, self.source, "".join(" --set " + s for s in self.sets))
+
+
+def load_scene(scene, sets=None):
+    """A Scene from a Scene (more overrides applied), a file path or a dict."""
+    if isinstance(scene, Scene):
+        return scene.with_sets(sets) if sets else scene
+    if isinstance(scene, Mapping):
+        return Scene.from_dict(scene, sets)
+    if isinstance(scene, (str, bytes, os.PathLike)):
+        return Scene.from_file(scene, sets)
+    raise TypeError("a scene is a Scene, a file path or a dict, not %s" % type(scene).__name__)
+
+
+def available_solvers():
+    """The strategies solve() and compare() accept."""
+    return list(_core.available_solvers())
+
+
+def check(scene, sets=None):
+    """The model's sizes, as `stcontact check SCENE` prints them (nodes, elements, dofs, free_dofs,
+    prescribed_dofs, contact_nodes, instants, kappa, ...)."""
+    return load_scene(scene, sets).check()
+
+
+def solve(scene, solver=None, *, tol=None, max_iterations=None, sets=None, reference=True, threads=None,
+          start=None, seed_basis=True, callback=None, out=None):
+    """Solves the scene, as `stcontact solve` does, and returns a SolveResult.
+
+    solver           latin | latin-pgd | fas-aposteriori | fas-apriori | incremental (default: the
+                     scene's [solver] name)                                   (--solver)
+    tol              tolerance on the LATIN indicator                        (--tol)
+    max_iterations   iteration limit                                         (--max-iterations)
+    sets             overrides, ["KEY=VALUE", ...] or {KEY: value}           (--set)
+    reference        False: no incremental reference, no true error          (--no-reference)
+    threads          threads for this call                                   (--threads)
+    out              also write the command line's output files there        (--out)
+    start            warm start: a previous SolveResult of the same sizes (its interface histories
+                     and, with seed_basis, its interface directions seed fas-apriori's and
+                     latin-pgd's separated global stage)
+    callback         callback(record: IterationRecord) -> bool, after every iteration; False stops
+                     the solve (termination "stopped_by_callback"); an exception it raises stops the
+                     solve and is raised again here.
+    Ctrl-C stops the solve and raises KeyboardInterrupt.
+    """
+    forces = displacements = seed = None
+    if start is not None:
+        forces, displacements = start.interface_forces, start.interface_displacements
+        if seed_basis:
+            seed = start.interface_directions
+    data = _core.solve(load_scene(scene)._handle, solver, tol, max_iterations, _overrides(sets), reference,
+                       threads, None if out is None else os.fspath(out), forces, displacements, seed, callback)
+    return SolveResult(data)
+
+
+def svd(scene, modes=10, *, sets=None, threads=None):
+    """The energy SVD of the incremental solution (`stcontact svd`): an SvdResult with `modes` time
+    functions and spatial modes (at least 50 singular values, or m - 1)."""
+    return SvdResult(_core.svd(load_scene(scene)._handle, modes, _overrides(sets), threads))
+
+
+def compare(scene, solvers=None, *, repeats=3, tol=None, sets=None, threads=None, out=None):
+    """Work against precision of strategies (`stcontact compare`): each solver (default: every
+    available one) gets an error run and `repeats` timed runs, against the incremental reference.
+    With `out`, the report files (and gnuplot's plots, when available) are written there too.
+    Ctrl-C stops it (KeyboardInterrupt; the reference solve is finished first)."""
+    if isinstance(solvers, str):
+        solvers = [solvers]
+    data = _core.compare(load_scene(scene)._handle, list(solvers or []), repeats, tol, _overrides(sets), threads,
+                         None if out is None else os.fspath(out))
+    return CompareResult(data)

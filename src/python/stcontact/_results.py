@@ -1,0 +1,150 @@
+"""The result classes of stcontact.solve, stcontact.svd and stcontact.compare (docs/python.md).
+
+Each holds the NumPy arrays the compiled core moved into Python (no copy was made on the way) and
+the texts the command line writes, parsed: summary.json as a dict, summary.csv as rows.
+"""
+
+import csv
+import io
+import json
+
+
+class SolveResult:
+    """One solve: the interface histories, the tables of reactions.csv and history.csv, summary.json.
+
+    Interface arrays (the library's layout, NumPy order 'F': column k is instant t_k):
+      interface_forces         2n_C x m   rows 2i: normal force of contact node i, 2i + 1: tangential
+      interface_displacements  2n_C x m   the same rows for the interface displacements v_n, v_t
+      normal_forces, tangential_forces, normal_displacements, tangential_displacements
+                               n_C x m    views of the rows above (no copy)
+    Node i of the interface is mesh node contact_nodes[i].
+    A priori strategies (fas-apriori, latin-pgd; no columns for the others):
+      spatial_modes            n_free x r  energy modes of the separated expansion, by energy
+      interface_directions     2n_C x p    the separated global stage's directions (warm starts)
+    """
+
+    def __init__(self, data):
+        self.solver = data["solver"]
+        self.summary = json.loads(data["summary_json"])
+        self.history = data["history"]
+        self.reactions = data["reactions"]
+        self.times = data["times"]
+        self.contact_nodes = data["contact_nodes"]
+        self.interface_forces = data["forces"]
+        self.interface_displacements = data["displacements"]
+        self.spatial_modes = data["spatial_modes"]
+        self.interface_directions = data["interface_directions"]
+        self.problem = data["problem"]
+
+    @property
+    def normal_forces(self):
+        """lambda_n, n_C x m (a view of interface_forces)."""
+        return self.interface_forces[0::2]
+
+    @property
+    def tangential_forces(self):
+        """lambda_t, n_C x m (a view of interface_forces)."""
+        return self.interface_forces[1::2]
+
+    @property
+    def normal_displacements(self):
+        """v_n, n_C x m (a view of interface_displacements)."""
+        return self.interface_displacements[0::2]
+
+    @property
+    def tangential_displacements(self):
+        """v_t, n_C x m (a view of interface_displacements)."""
+        return self.interface_displacements[1::2]
+
+    @property
+    def termination(self):
+        """"converged", "max_iterations", "stagnated", "numerical_issue" or "stopped_by_callback"."""
+        return self.summary["termination"]
+
+    @property
+    def converged(self):
+        return self.summary["termination"] == "converged"
+
+    @property
+    def iterations(self):
+        return self.summary["iterations"]
+
+    @property
+    def error(self):
+        """The last true error (None without the incremental reference)."""
+        return self.summary["error"]
+
+    def displacement_fields(self):
+        """The full displacements n_dofs x m, rebuilt from the interface forces with one factorisation
+        of K_ff: row 2j is u_x of mesh node j, row 2j + 1 its u_y; column k is instant t_k."""
+        return self.problem.displacements(self.interface_forces)
+
+    def __repr__(self):
+        return "<SolveResult %s: %s after %d iterations, %d contact nodes x %d instants>" % (
+            self.solver, self.termination, self.iterations, self.interface_forces.shape[0] // 2,
+            self.interface_forces.shape[1])
+
+
+class SvdResult:
+    """The energy SVD of the incremental solution, as `stcontact svd` computes it.
+
+    sigma, energy_fraction, cumulative_energy   r pairs (singular_values.csv's columns)
+    time_functions   m x modes        nu_i(t_k) sqrt(sigma_i) (time_functions.csv's columns)
+    spatial_modes    n_dofs x modes   Upsilon_i sqrt(sigma_i), dofs interleaved as displacement fields
+    modes_for_energy {"99%": count, "99.9%": ..., "99.99%": ...} (None: more than r pairs)
+    """
+
+    def __init__(self, data):
+        for key, value in data.items():
+            setattr(self, key, value)
+
+    def __repr__(self):
+        return "<SvdResult: %d pairs, %d resolved, modes for 99.9%% of the energy: %s>" % (
+            len(self.sigma), self.resolved, self.modes_for_energy["99.9%"])
+
+
+def _cell(text):
+    """A summary.csv cell as a Python value: '' -> None, true/false -> bool, numbers -> int or float."""
+    if text == "":
+        return None
+    if text in ("true", "false"):
+        return text == "true"
+    for kind in (int, float):
+        try:
+            return kind(text)
+        except ValueError:
+            pass
+    return text
+
+
+class Strategy:
+    """What compare measured for one strategy: its termination and its timed runs. Each run is a
+    dict {"repeat", "total_s", "points"}, points holding work_precision.csv's columns as arrays
+    (iteration, relaxations, sparse_solves, indicator, error, wall_s), error copied from the run
+    that measured it."""
+
+    def __init__(self, data):
+        for key, value in data.items():
+            setattr(self, key, value)
+
+    def __repr__(self):
+        return "<Strategy %s: %s, %d runs>" % (self.solver, self.termination, len(self.runs))
+
+
+class CompareResult:
+    """A work-precision comparison, as `stcontact compare` measures and reports it.
+
+    strategies   {name: Strategy}, in the order compared
+    summary      summary.csv's rows as dicts (medians of the work to reach 1e-2, 1e-4, 1e-6, ...)
+    summary_csv, work_precision_csv, summary_markdown   the report's texts
+    """
+
+    def __init__(self, data):
+        self.strategies = {s["solver"]: Strategy(s) for s in data.pop("strategies")}
+        for key, value in data.items():
+            setattr(self, key, value)
+        rows = csv.DictReader(io.StringIO(self.summary_csv))
+        self.summary = [{key: _cell(value) for key, value in row.items()} for row in rows]
+
+    def __repr__(self):
+        return "<CompareResult %s: %s>" % (self.scene, ", ".join(self.strategies))

@@ -1,0 +1,237 @@
+// stcontact._core.svd and stcontact._core.compare: the verification SVD of `stcontact svd` and the
+// work-precision comparison of `stcontact compare`, through the command line's own code where it
+// is shared (src/cli/compare_runs.hpp, src/report/), with the interpreter's lock released.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <algorithm>
+
+#include "pgd/displacement_history.hpp"
+#include "pgd/space_time_svd.hpp"
+#include "src/cli/compare_command.hpp"
+#include "src/cli/compare_plots.hpp"
+#include "src/cli/compare_runs.hpp"
+#include "src/core/input_error.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/python/bindings.hpp"
+#include "src/python/callback_bridge.hpp"
+#include "src/python/numpy_arrays.hpp"
+#include "src/python/scene_handle.hpp"
+#include "src/report/comparison_writer.hpp"
+#include "src/report/number_format.hpp"
+#include "src/solver/incremental_solver.hpp"
+
+namespace stc::python {
+namespace {
+
+constexpr int kSvdFigurePairs = 50;  // pairs `stcontact svd` computes at least (its Fig. 3a shows 50)
+
+/// The checks of `stcontact svd` (src/cli/svd_command.cpp) on the instants and the modes asked.
+void checkSvdSizes(int m, int modes) {
+  if (m < 3) throw InputError("svd needs at least 3 instants (time.steps = " + std::to_string(m) + ")");
+  if (modes < 1 || modes > m - 1)
+    throw InputError("--modes = " + std::to_string(modes) + " must be in [1, " + std::to_string(m - 1) +
+                     "] (time.steps - 1)");
+}
+
+/// The energy SVD of the incremental solution with the options `stcontact svd` uses (ARPACK, at
+/// least kSvdFigurePairs pairs). Lock released; a Ctrl-C stops the incremental solve.
+pgd::SpaceTimeSvd energySvdOfSolution(const Problem& problem, int modes, CallbackBridge& bridge) {
+  py::gil_scoped_release unlocked;
+  const SolveResult solved = solveIncremental(problem, {}, bridge.signalsOnly());
+  if (bridge.interrupted()) return {};
+  if (!solved.summary.converged())
+    throw std::runtime_error("the incremental solver did not converge (" + solved.summary.message + "): no SVD");
+  const SpdFactor factor(problem.stiffness_free, "K_ff");
+  const Eigen::MatrixXd U = pgd::fullDisplacementHistory(problem, factor, solved.interface.lambda);
+  pgd::EnergySvdOptions options;
+  options.method = pgd::SvdMethod::Arpack;
+  options.modes = std::min(problem.numSteps() - 1, std::max(modes, kSvdFigurePairs));
+  return pgd::energySvd(U, problem.stiffness, options);
+}
+
+/// The columns of singular_values.csv, time_functions.csv (ν_i √σ_i) and the modes of modes.vtu
+/// (Υ_i √σ_i, n × modes) (pgd/svd_tables.hpp), and the energy levels of svd_summary.json.
+py::dict svdDict(pgd::SpaceTimeSvd&& svd, const Problem& problem, int modes) {
+  const int r = svd.size();
+  modes = std::min(modes, r);
+  Eigen::VectorXd fraction(r), cumulative(r);
+  for (int i = 0; i < r; ++i) {
+    fraction[i] = svd.energyFraction(i);
+    cumulative[i] = svd.cumulativeEnergy(i);
+  }
+  const Eigen::VectorXd scale = svd.sigma.head(modes).cwiseSqrt();
+  py::dict levels;
+  const std::pair<const char*, double> energy_levels[] = {{"99%", 0.99}, {"99.9%", 0.999}, {"99.99%", 0.9999}};
+  for (const auto& [label, level] : energy_levels) levels[label] = svd.modesFor(level);
+  py::dict out;
+  out["time_functions"] = movedToNumpy(Eigen::MatrixXd(svd.time.leftCols(modes) * scale.asDiagonal()));
+  out["spatial_modes"] = movedToNumpy(Eigen::MatrixXd(svd.space.leftCols(modes) * scale.asDiagonal()));
+  out["energy_fraction"] = movedToNumpy(std::move(fraction));
+  out["cumulative_energy"] = movedToNumpy(std::move(cumulative));
+  out["modes_for_energy"] = levels;
+  out["total_energy"] = svd.total_energy;
+  out["resolved"] = svd.resolved;
+  out["operator_applications"] = svd.operator_applications;
+  out["times"] = movedToNumpy(std::vector<double>(problem.times));
+  out["sigma"] = movedToNumpy(std::move(svd.sigma));
+  return out;
+}
+
+py::dict svd(const SceneHandle& handle, int modes, const std::vector<std::string>& sets, std::optional<int> threads) {
+  const ThreadsForCall thread_count(threads);
+  const SceneHandle run = handle.withOverrides(sets);
+  const std::shared_ptr<const Problem> problem = run.problem();
+  checkSvdSizes(problem->numSteps(), modes);
+  CallbackBridge bridge;
+  pgd::SpaceTimeSvd result = energySvdOfSolution(*problem, modes, bridge);
+  bridge.rethrowPending();
+  return svdDict(std::move(result), *problem, modes);
+}
+
+struct CompareOptions {
+  std::vector<std::string> solvers;  ///< empty: every available strategy
+  int repeats = 3;
+  std::optional<double> tolerance;
+  std::vector<std::string> sets;
+  std::optional<int> threads;
+  std::optional<std::filesystem::path> out;
+};
+
+std::string joined(const std::vector<std::string>& names, const std::string& separator) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : separator) + name;
+  return text;
+}
+
+/// The call as the report's "command" line names it.
+std::string callText(const SceneHandle& handle, const std::vector<std::string>& solvers, const CompareOptions& o) {
+  std::string text = "stcontact.compare('" + handle.source().string() + "', solvers='" + joined(solvers, ",") +
+                     "', repeats=" + std::to_string(o.repeats);
+  if (!o.sets.empty()) text += ", sets=['" + joined(o.sets, "', '") + "']";
+  if (o.tolerance) text += ", tol=" + shortNumber(*o.tolerance, 6);
+  return text + ")";
+}
+
+/// The runs of `stcontact compare` (src/cli/compare_command.cpp): the reference, then each strategy.
+void measureAll(Comparison& comparison, const Problem& problem, const SolverSpec& spec,
+                const std::vector<std::string>& solvers, int repeats, CallbackBridge& bridge) {
+  py::gil_scoped_release unlocked;
+  const cli::ReferenceSolution reference = cli::computeReference(problem, true);
+  comparison.reference_s = reference.total_s;
+  const cli::CompareContext context{problem, spec, reference, repeats, true, {}, bridge.signalsOnly()};
+  for (const std::string& solver : solvers) {
+    if (bridge.interrupted()) return;
+    comparison.strategies.push_back(cli::measureStrategy(solver, context));
+  }
+  if (bridge.interrupted()) return;
+  comparison.memory_method = describeMemoryMethod(comparison.strategies.front().memory.since_reset);
+  comparison.load_after = loadAverage();
+}
+
+/// The points of one run as arrays (work_precision.csv's columns).
+py::dict pointArrays(const std::vector<WorkPoint>& points) {
+  std::vector<int> iteration, relaxations;
+  std::vector<double> sparse_solves, indicator, error, wall_s;
+  for (const WorkPoint& p : points) {
+    iteration.push_back(p.iteration);
+    relaxations.push_back(p.relaxations);
+    sparse_solves.push_back(static_cast<double>(p.sparse_solves));
+    indicator.push_back(p.indicator);
+    error.push_back(p.error.value_or(std::numeric_limits<double>::quiet_NaN()));
+    wall_s.push_back(p.wall_s);
+  }
+  py::dict arrays;
+  arrays["iteration"] = movedToNumpy(std::move(iteration));
+  arrays["relaxations"] = movedToNumpy(std::move(relaxations));
+  arrays["sparse_solves"] = movedToNumpy(std::move(sparse_solves));
+  arrays["indicator"] = movedToNumpy(std::move(indicator));
+  arrays["error"] = movedToNumpy(std::move(error));
+  arrays["wall_s"] = movedToNumpy(std::move(wall_s));
+  return arrays;
+}
+
+py::dict strategyDict(const StrategyMeasurement& m) {
+  py::list runs;
+  for (const TimedRun& run : m.runs)
+    runs.append(py::dict(py::arg("repeat") = run.repeat, py::arg("total_s") = run.total_s,
+                         py::arg("points") = pointArrays(run.points)));
+  py::dict s;
+  s["solver"] = m.solver;
+  s["reference_point"] = m.reference_point;
+  s["termination"] = toString(m.termination);
+  s["message"] = m.message;
+  s["iterations"] = m.iterations;
+  s["relaxations"] = m.relaxations;
+  s["indicator"] = m.indicator;
+  s["final_error"] = m.final_error;
+  s["best_error"] = m.best_error;
+  s["error_run_s"] = m.error_run_s;
+  s["prerequisite_s"] = m.prerequisite_s;
+  s["errors_matched"] = m.errors_matched;
+  s["peak_rss_mb"] = m.memory.peak_mb;
+  s["rss_growth_mb"] = m.memory.growthMb();
+  s["runs"] = runs;
+  return s;
+}
+
+py::dict comparisonDict(const Comparison& c) {
+  py::list strategies;
+  for (const StrategyMeasurement& m : c.strategies) strategies.append(strategyDict(m));
+  py::dict out;
+  out["scene"] = c.scene_name;
+  out["n_dofs"] = c.n_dofs;
+  out["n_contact_nodes"] = c.n_contact_nodes;
+  out["n_steps"] = c.n_steps;
+  out["tolerance"] = c.tolerance;
+  out["repeats"] = c.repeats;
+  out["reference_s"] = c.reference_s;
+  out["strategies"] = strategies;
+  out["summary_csv"] = summaryCsv(c);
+  out["work_precision_csv"] = workPrecisionCsv(c);
+  out["summary_markdown"] = summaryMarkdown(c);
+  return out;
+}
+
+py::dict compare(const SceneHandle& handle, const CompareOptions& o) {
+  const ThreadsForCall thread_count(o.threads);
+  if (o.repeats < 1) throw InputError("--repeats must be >= 1");
+  const SceneHandle run = handle.withOverrides(o.sets);
+  Scene scene = run.scene();
+  const std::vector<std::string> solvers = cli::solverList(joined(o.solvers, ","));
+  if (o.tolerance) {
+    if (!(*o.tolerance > 0.0)) throw InputError("--tol must be > 0");
+    scene.solver.tolerance = *o.tolerance;
+  }
+  if (o.out) ensureWritableDirectory(*o.out);  // fail before the runs, not after
+  const std::shared_ptr<const Problem> problem = run.problem();
+  Comparison comparison =
+      cli::describeComparison(handle.source().string(), callText(handle, solvers, o), scene, *problem, o.repeats);
+  CallbackBridge bridge;
+  measureAll(comparison, *problem, scene.solver, solvers, o.repeats, bridge);
+  bridge.rethrowPending();
+  if (o.out) {
+    writeComparison(*o.out, comparison);
+    std::string warning;
+    if (!cli::drawWorkPrecisionPlots(*o.out, comparison, warning) &&
+        PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0)
+      throw py::error_already_set();
+  }
+  return comparisonDict(comparison);
+}
+
+}  // namespace
+
+void bindStudies(py::module_& module) {
+  module.def("svd", &svd, py::arg("scene"), py::arg("modes"), py::arg("sets"), py::arg("threads"));
+  module.def(
+      "compare",
+      [](const SceneHandle& scene, std::vector<std::string> solvers, int repeats, std::optional<double> tol,
+         std::vector<std::string> sets, std::optional<int> threads, std::optional<std::filesystem::path> out) {
+        return compare(scene, {std::move(solvers), repeats, tol, std::move(sets), threads, std::move(out)});
+      },
+      py::arg("scene"), py::arg("solvers"), py::arg("repeats"), py::arg("tol"), py::arg("sets"), py::arg("threads"),
+      py::arg("out"));
+}
+
+}  // namespace stc::python

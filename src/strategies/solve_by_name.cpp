@@ -1,0 +1,119 @@
+#include "src/strategies/solve_by_name.hpp"
+
+#include <algorithm>
+
+#include "fas/aposteriori_basis.hpp"
+#include "fas/apriori_basis.hpp"
+#include "fas/fas_solver.hpp"
+#include "latin/latin_solver.hpp"
+#include "pgd/latin_pgd_solver.hpp"
+#include "pgd/separated_history.hpp"
+#include "src/core/input_error.hpp"
+#include "src/solver/incremental_solver.hpp"
+
+namespace stc {
+
+fas::FasOptions fasOptions(const SolverSpec& spec) {
+  fas::FasOptions o;
+  o.tolerance = spec.tolerance;
+  o.max_relaxations = spec.max_iterations;
+  o.pre_relaxations = spec.fas.pre_relaxations;
+  o.post_relaxations = spec.fas.post_relaxations;
+  o.coarse_iterations = spec.fas.coarse_iterations;
+  o.start = spec.fas.coarse_start;
+  return o;
+}
+
+fas::AprioriBasisOptions aprioriOptions(const SolverSpec& spec) {
+  fas::AprioriBasisOptions basis;
+  basis.modes = spec.fas.pgd_max_modes;
+  basis.increment_modes = spec.fas.residual_vectors;
+  return basis;
+}
+
+pgd::ControlledStageOptions stageOptions(const SolverSpec& spec) {
+  pgd::ControlledStageOptions stage;
+  stage.gap_share = spec.fas.pgd_gap_share;
+  return stage;
+}
+
+namespace {
+
+InterfaceHistory startOf(const Problem& problem, const StrategyInputs& inputs) {
+  if (inputs.start) return *inputs.start;
+  return InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+}
+
+SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+  const SpdFactor K(problem.stiffness_free, "K_ff");
+  Eigen::MatrixXd lambda;
+  if (inputs.converged_lambda) lambda = *inputs.converged_lambda;
+  else lambda = solveIncremental(problem).interface.lambda;
+  const Eigen::MatrixXd modes = fas::aposterioriModes(problem, K, lambda, spec.fas.svd_modes);
+  latin::GlobalStage global(problem);
+  global.keepDisplacements(true);
+  fas::FixedBasisProvider provider(modes, spec.fas.residual_vectors, global, problem.contact.B);
+  return fas::solveFas(problem, global, provider, startOf(problem, inputs), fasOptions(spec), "fas-aposteriori",
+                       inputs.reference, inputs.callback);
+}
+
+SolveResult solveApriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+  pgd::ControlledGlobalStage stage(problem, stageOptions(spec));
+  if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
+  fas::AprioriBasisProvider provider(stage, aprioriOptions(spec));
+  SolveResult result = fas::solveFas(problem, stage, provider, startOf(problem, inputs), fasOptions(spec),
+                                     "fas-apriori", inputs.reference, inputs.callback);
+  result.interface_directions = stage.basis().directions();
+  result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
+  return result;
+}
+
+SolveResult solveLatinPgd(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+  pgd::LatinPgdOptions options;
+  options.stage = stageOptions(spec);
+  options.latin.tolerance = spec.tolerance;
+  options.latin.max_iterations = spec.max_iterations;
+  options.latin.relaxation = spec.relaxation;
+  const InterfaceHistory start = startOf(problem, inputs);
+  return pgd::solveLatinPgd(problem, options, &start, inputs.basis_seed, inputs.reference, inputs.callback);
+}
+
+SolveResult solveLatinFrom(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+  latin::LatinOptions options;
+  options.tolerance = spec.tolerance;
+  options.max_iterations = spec.max_iterations;
+  options.relaxation = spec.relaxation;
+  latin::GlobalStage global(problem, options.block_size);
+  return latin::solveLatin(problem, global, startOf(problem, inputs), options, inputs.reference, inputs.callback);
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+}  // namespace
+
+const std::vector<std::string>& availableSolvers() {
+  static const std::vector<std::string> names(kSolverNames.begin(), kSolverNames.end());
+  return names;
+}
+
+void requireAvailable(const std::string& name) {
+  const auto& names = availableSolvers();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw InputError("unknown solver '" + name + "' (known: " + joined(names) + ")");
+}
+
+SolveResult solveByName(const std::string& name, const Problem& problem, const SolverSpec& spec,
+                        const StrategyInputs& inputs) {
+  requireAvailable(name);
+  if (name == "incremental") return solveIncremental(problem, {}, inputs.callback);
+  if (name == "fas-aposteriori") return solveAposteriori(problem, spec, inputs);
+  if (name == "fas-apriori") return solveApriori(problem, spec, inputs);
+  if (name == "latin-pgd") return solveLatinPgd(problem, spec, inputs);
+  return solveLatinFrom(problem, spec, inputs);
+}
+
+}  // namespace stc

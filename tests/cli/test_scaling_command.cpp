@@ -1,0 +1,155 @@
+// `stcontact scaling` end to end on the seed scene at tiny settings (mesh series 11, 21 arc nodes at
+// 21 instants; time series 11, 21 instants at 21 arc nodes; one repeat): exit status, the files,
+// every row reaching the target or saying why not, runs stopped at the first iteration that reaches
+// it, and growth exponents in the report that are the fits of the CSV's times. No wall-clock value
+// is asserted, only relations between the files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cli/csv_table.hpp"
+#include "cli/run_program.hpp"
+#include "src/report/growth_fit.hpp"
+#include "src/strategies/solve_by_name.hpp"
+
+namespace stc {
+namespace {
+
+namespace fs = std::filesystem;
+using test::number;
+using test::readCsv;
+using test::readText;
+using Table = test::CsvTable;
+
+constexpr double kTarget = 1e-4;
+
+class ScalingCommand : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    out_ = test::scratchFolder("scaling_tiny");
+    exit_status_ = test::runOnSmallSeed("scaling", "--arc-nodes 11,21 --steps 11,21 --repeats 1", out_);
+    rows_ = readCsv(out_ / "report" / "scaling.csv");
+    summary_ = readText(out_ / "report" / "summary.md");
+  }
+  static void TearDownTestSuite() {
+    std::error_code ignored;
+    fs::remove_all(out_, ignored);
+  }
+
+  /// (size, time to the target) of `solver` in `series` where it was reached.
+  static std::vector<std::pair<double, double>> reached(const std::string& solver, const std::string& series) {
+    std::vector<std::pair<double, double>> out;
+    for (const auto& row : rows_.rows)
+      if (row.at("solver") == solver && row.at("series") == series && row.at("status") == "reached")
+        out.emplace_back(std::stod(row.at(series == "mesh" ? "dofs" : "steps")), std::stod(row.at("time_to_target_s")));
+    return out;
+  }
+
+  static inline fs::path out_;
+  static inline int exit_status_ = -1;
+  static inline Table rows_;
+  static inline std::string summary_;
+};
+
+TEST_F(ScalingCommand, ExitsZeroAndWritesTheReportAndOneComparisonPerSize) {
+  EXPECT_EQ(exit_status_, 0);
+  for (const char* name : {"scaling.csv", "summary.md"}) EXPECT_GT(fs::file_size(out_ / "report" / name), 0u) << name;
+  // (11, 21) and (21, 21) from the mesh series, (21, 11) from the time series; (21, 21) is in both.
+  for (const char* size : {"arc_nodes_11_steps_21", "arc_nodes_21_steps_21", "arc_nodes_21_steps_11"})
+    for (const char* name : {"work_precision.csv", "summary.csv", "summary.md"})
+      EXPECT_TRUE(fs::exists(out_ / "report" / "sizes" / size / name)) << size << "/" << name;
+}
+
+TEST_F(ScalingCommand, HasOneRowPerSeriesSizeAndStrategy) {
+  const std::size_t solvers = availableSolvers().size();
+  EXPECT_EQ(rows_.rows.size(), 4 * solvers);
+  for (const char* column : {"series", "arc_nodes", "dofs", "contact_nodes", "steps", "solver", "status",
+                             "time_to_target_s", "relaxations_to_target", "sparse_solves_to_target", "peak_rss_mb"})
+    EXPECT_NE(std::find(rows_.header.begin(), rows_.header.end(), column), rows_.header.end()) << column;
+}
+
+TEST_F(ScalingCommand, EveryRowHasATimeOrSaysWhyNot) {
+  for (const auto& row : rows_.rows) {
+    const auto time = number(row.at("time_to_target_s"));
+    if (row.at("status") == "reached") {
+      ASSERT_TRUE(time.has_value()) << row.at("solver");
+      EXPECT_GT(*time, 0.0) << row.at("solver");
+    } else {
+      EXPECT_FALSE(time.has_value()) << row.at("solver");
+      EXPECT_FALSE(row.at("status").empty());
+    }
+  }
+}
+
+// The early stop: every timed run of an iterative strategy ends at its first point at or below the target.
+TEST_F(ScalingCommand, IterativeRunsStopAtTheFirstIterationReachingTheTarget) {
+  for (const auto& size : fs::directory_iterator(out_ / "report" / "sizes")) {
+    std::map<std::string, std::vector<double>> errors;
+    for (const auto& row : readCsv(size.path() / "work_precision.csv").rows)
+      if (row.at("solver") != "incremental") errors[row.at("solver")].push_back(number(row.at("error")).value_or(NAN));
+    for (const auto& [solver, e] : errors) {
+      ASSERT_FALSE(e.empty());
+      EXPECT_LE(e.back(), kTarget) << size.path().filename() << " " << solver;
+      for (std::size_t i = 0; i + 1 < e.size(); ++i) EXPECT_GT(e[i], kTarget) << solver << " point " << i;
+    }
+  }
+}
+
+/// The cells of a markdown table row "| a | b | c |": {"a", "b", "c"}.
+std::vector<std::string> cellsOf(const std::string& line) {
+  std::vector<std::string> cells;
+  std::size_t start = line.find('|');
+  while (start != std::string::npos) {
+    const std::size_t end = line.find('|', start + 1);
+    if (end == std::string::npos) break;
+    cells.push_back(line.substr(start + 1, end - start - 1));
+    start = end;
+  }
+  return cells;
+}
+
+TEST_F(ScalingCommand, ReportsTheFittedExponentOfEveryStrategyThatReachedTwoSizes) {
+  for (const std::string& solver : availableSolvers()) {
+    const auto at = summary_.find("| " + solver + " |", summary_.find("## Growth exponents"));
+    ASSERT_NE(at, std::string::npos) << solver;
+    const auto cells = cellsOf(summary_.substr(at, summary_.find('\n', at) - at));
+    ASSERT_EQ(cells.size(), 3u) << solver;
+    for (int k : {1, 2}) {
+      const auto points = reached(solver, k == 1 ? "mesh" : "time");
+      if (points.size() < 2) continue;
+      std::vector<double> sizes, times;
+      for (const auto& [size, time] : points) {
+        sizes.push_back(size);
+        times.push_back(time);
+      }
+      const PowerLawFit fit = fitPowerLaw(sizes, times);
+      ASSERT_TRUE(std::isfinite(fit.exponent)) << solver;
+      // The report prints 3 digits of the exponent, the CSV 6 of each time.
+      EXPECT_NEAR(std::stod(cells[k]), fit.exponent, 6e-3 * std::abs(fit.exponent) + 1e-3) << solver << cells[k];
+    }
+  }
+}
+
+TEST_F(ScalingCommand, ReportHasTheSeriesExponentsCrossoverAndMemorySections) {
+  for (const char* section : {"## Mesh series", "## Time series", "## Growth exponents",
+                              "## Against the incremental solver", "## Peak resident memory", "## Machine and build"})
+    EXPECT_NE(summary_.find(section), std::string::npos) << section;
+}
+
+TEST_F(ScalingCommand, DrawsThePlotsOrSaysHowToDrawThemLater) {
+  const std::string err = readText(out_ / "stderr.txt");
+  if (err.find("warning: gnuplot") != std::string::npos) {
+    EXPECT_NE(err.find("draw them later"), std::string::npos);
+    return;
+  }
+  for (const char* name : {"time_vs_steps.png", "time_vs_dofs.png", "memory_vs_steps.png", "memory_vs_dofs.png"})
+    EXPECT_GT(fs::file_size(out_ / "report" / name), 0u) << name;
+}
+
+}  // namespace
+}  // namespace stc

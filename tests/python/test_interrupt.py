@@ -1,0 +1,87 @@
+"""Long solves release the interpreter's lock and stop on Ctrl-C with KeyboardInterrupt."""
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import threading
+import time
+
+import pytest
+
+import stcontact
+from conftest import SEED_SCENE
+
+# A solve that runs for many seconds unless stopped: plain LATIN on a long time grid (about 20 ms
+# an iteration) to an unreachable tolerance (it would stop as stagnated hundreds of iterations on).
+LONG_GRID = ["time.steps=801", "output.vtu=false"]
+ENDLESS = dict(solver="latin", tol=1e-30, max_iterations=1_000_000, reference=False)
+
+
+@pytest.fixture(scope="module")
+def long_scene():
+    return stcontact.load_scene(SEED_SCENE, sets=LONG_GRID)
+
+
+def test_sigint_during_a_solve_raises_keyboard_interrupt(long_scene):
+    timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            stcontact.solve(long_scene, **ENDLESS)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - start < 5.0  # stopped at the next iteration, not at the end
+
+
+def test_other_threads_run_while_the_solver_computes(long_scene):
+    """A second thread ticks every millisecond. Had the solve held the lock, it could tick only while
+    the main thread runs Python code, i.e. inside the callbacks (and a moment after them); it ticks
+    between them too, while the solver computes."""
+    ticks, windows = [], []
+    stop = threading.Event()
+
+    def tick():
+        while not stop.is_set():
+            ticks.append(time.monotonic())
+            time.sleep(0.001)
+
+    def record_window(record):
+        windows.append(time.monotonic())
+        return record.iteration < 30
+
+    ticker = threading.Thread(target=tick)
+    ticker.start()
+    try:
+        result = stcontact.solve(long_scene, callback=record_window, **ENDLESS)
+    finally:
+        stop.set()
+        ticker.join()
+    assert result.termination == "stopped_by_callback" and len(windows) == 30
+    margin = 0.005  # after a callback returns, before the solver is surely back in its own code
+    between = [t for t in ticks if any(a + margin < t < b - margin for a, b in zip(windows, windows[1:]))]
+    assert len(between) >= 29, "the other thread did not run while the solver computed"
+
+
+def test_ctrl_c_stops_a_script(tmp_path):
+    script = tmp_path / "endless.py"
+    script.write_text(textwrap.dedent("""
+        import sys, stcontact
+        scene = stcontact.load_scene(sys.argv[1], sets=["time.steps=801"])
+        print("solving", flush=True)
+        stcontact.solve(scene, "latin", tol=1e-30, max_iterations=1000000, reference=False)
+        print("finished", flush=True)
+    """))
+    child = subprocess.Popen([sys.executable, str(script), str(SEED_SCENE)], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
+    try:
+        assert child.stdout.readline().strip() == "solving"
+        time.sleep(0.5)
+        child.send_signal(signal.SIGINT)
+        stdout, stderr = child.communicate(timeout=20)
+    finally:
+        child.kill()
+    assert child.returncode != 0 and "finished" not in stdout
+    assert stderr.strip().splitlines()[-1] == "KeyboardInterrupt"

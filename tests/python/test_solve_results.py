@@ -1,0 +1,144 @@
+"""Results hold NumPy arrays of the documented shapes and layout, moved rather than copied; warm
+starts, the per-iteration callback and the options behave as documented (docs/python.md)."""
+
+import numpy as np
+import pytest
+
+import stcontact
+
+
+@pytest.fixture(scope="module")
+def latin(small_scene):
+    return stcontact.solve(small_scene, "latin", tol=1e-5)
+
+
+def test_interface_arrays_have_the_documented_shapes(latin, small_scene):
+    n_c, m = 31, 41
+    assert latin.interface_forces.shape == latin.interface_displacements.shape == (2 * n_c, m)
+    for array in (latin.normal_forces, latin.tangential_forces, latin.normal_displacements,
+                  latin.tangential_displacements):
+        assert array.shape == (n_c, m)
+    assert latin.interface_forces.flags["F_CONTIGUOUS"]
+    np.testing.assert_array_equal(latin.normal_forces, latin.interface_forces[0::2])
+    np.testing.assert_array_equal(latin.tangential_forces[:, -1], latin.interface_forces[1::2, -1])
+    assert np.shares_memory(latin.normal_forces, latin.interface_forces)  # a view, not a copy
+    assert latin.times.shape == (m,) and latin.contact_nodes.shape == (n_c,)
+    assert list(latin.contact_nodes) == list(small_scene.mesh()["contact_nodes"])
+
+
+def test_large_arrays_are_moved_not_copied(latin):
+    # The array does not own its data: the C++ matrix it was moved from lives in a capsule.
+    assert not latin.interface_forces.flags["OWNDATA"]
+    assert type(latin.interface_forces.base).__name__ == "PyCapsule"
+    assert type(latin.history["indicator"].base).__name__ == "PyCapsule"
+
+
+def test_reactions_and_history_columns(latin):
+    m = 41
+    assert set(latin.reactions) == {"step", "t", "normal_force", "tangential_force", "contact_xmin", "contact_xmax",
+                                    "n_contact", "n_slip"}
+    assert all(column.shape == (m,) for column in latin.reactions.values())
+    # The reaction is the sum of the nodal contact forces.
+    np.testing.assert_allclose(latin.reactions["normal_force"], latin.normal_forces.sum(axis=0), rtol=1e-12)
+    assert latin.reactions["n_contact"][0] == 0 and np.isnan(latin.reactions["contact_xmin"][0])
+    assert latin.reactions["n_contact"][-1] > 0
+    assert {"iteration", "relaxations", "indicator", "error", "rank", "wall_s", "sparse_solves"} == set(latin.history)
+    assert all(column.shape == (latin.iterations,) for column in latin.history.values())
+    assert latin.history["indicator"][-1] <= 1e-5 and latin.converged
+    assert latin.error == pytest.approx(latin.history["error"][-1], rel=1e-15)
+
+
+def test_displacement_fields_are_rebuilt_on_request(latin, small_scene):
+    sizes = small_scene.check()
+    u = latin.displacement_fields()
+    assert u.shape == (sizes["dofs"], 41)
+    mesh = small_scene.mesh()
+    top = np.isclose(mesh["nodes"][:, 1], 0.0)
+    # The top edge is driven: u_y = -0.11 at the last instant (examples/scenes/hemicylinder.toml).
+    np.testing.assert_allclose(u[1::2][top, -1], -0.11, rtol=1e-12)
+    # The interface displacement is the normal component of the contact nodes' displacement.
+    nodes = latin.contact_nodes
+    normal_y = u[2 * nodes + 1, :]  # the obstacle's normal is (0, 1)
+    np.testing.assert_allclose(latin.normal_displacements, normal_y, atol=1e-9)
+
+
+def test_summary_is_summary_json(latin):
+    assert latin.summary["solver"] == "latin"
+    assert latin.summary["n_contact_nodes"] == 31 and latin.summary["n_steps"] == 41
+    assert latin.summary["parameters"]["mesh"]["arc_nodes"] == 31
+    assert latin.summary["iterations"] == latin.iterations == len(latin.history["iteration"])
+
+
+def test_callback_sees_every_record_and_stops_the_solve(small_scene):
+    records = []
+
+    def stop_after_three(record):
+        records.append(record)
+        return record.iteration < 3
+
+    result = stcontact.solve(small_scene, "latin", callback=stop_after_three)
+    assert result.termination == "stopped_by_callback"
+    assert result.iterations == 3 and [r.iteration for r in records] == [1, 2, 3]
+    assert records[-1].error is not None and records[-1].indicator > 0
+    assert result.summary["message"] == "stopped by the callback"
+
+
+def test_callback_returning_none_goes_on(small_scene):
+    result = stcontact.solve(small_scene, "latin", max_iterations=5, callback=lambda record: None)
+    assert result.termination == "max_iterations" and result.iterations == 5
+
+
+def test_an_exception_in_the_callback_stops_and_is_raised(small_scene):
+    def fail(record):
+        raise ZeroDivisionError("from the callback")
+
+    with pytest.raises(ZeroDivisionError, match="from the callback"):
+        stcontact.solve(small_scene, "fas-apriori", callback=fail)
+
+
+def test_warm_start_from_a_neighbour_takes_fewer_relaxations(small_scene):
+    first = stcontact.solve(small_scene, "fas-apriori", sets={"contact.friction": 0.2}, reference=False)
+    cold = stcontact.solve(small_scene, "fas-apriori", sets={"contact.friction": 0.25}, reference=False)
+    warm = stcontact.solve(small_scene, "fas-apriori", sets={"contact.friction": 0.25}, reference=False,
+                           start=first)
+    assert cold.converged and warm.converged
+    assert warm.summary["relaxations"] < cold.summary["relaxations"]
+    # The same solution to the tolerance: the reactions agree to a small fraction of their largest value.
+    largest = np.abs(cold.reactions["normal_force"]).max()
+    np.testing.assert_allclose(warm.reactions["normal_force"], cold.reactions["normal_force"], atol=1e-5 * largest)
+    assert first.spatial_modes.shape[0] == small_scene.check()["free_dofs"] and first.spatial_modes.shape[1] > 0
+    assert first.interface_directions.shape[0] == 2 * small_scene.check()["contact_nodes"]
+    assert first.interface_directions.shape[1] > 0
+
+
+def test_a_warm_start_of_other_sizes_is_refused(small_scene, latin):
+    other = small_scene.with_sets("mesh.arc_nodes=21")
+    with pytest.raises(ValueError, match="start history is 62"):
+        stcontact.solve(other, "latin", start=latin)
+
+
+def test_no_reference_means_no_true_error(small_scene):
+    result = stcontact.solve(small_scene, "latin", max_iterations=3, reference=False)
+    assert result.error is None and np.isnan(result.history["error"]).all()
+
+
+def test_threads_change_no_result(small_scene):
+    one = stcontact.solve(small_scene, "latin", max_iterations=20, reference=False, threads=1)
+    two = stcontact.solve(small_scene, "latin", max_iterations=20, reference=False, threads=2)
+    np.testing.assert_array_equal(one.interface_forces, two.interface_forces)
+    assert one.summary["threads"] == 1 and two.summary["threads"] == 2
+
+
+def test_out_writes_the_programs_files(small_scene, tmp_path):
+    result = stcontact.solve(small_scene, "incremental", out=tmp_path)
+    assert {p.name for p in tmp_path.iterdir()} == {"reactions.csv", "contact.csv", "history.csv", "summary.json"}
+    assert result.converged
+
+
+def test_every_strategy_solves(small_scene):
+    assert set(stcontact.available_solvers()) == {"incremental", "latin", "latin-pgd", "fas-aposteriori",
+                                                  "fas-apriori"}
+    for solver in stcontact.available_solvers():
+        result = stcontact.solve(small_scene, solver, tol=1e-4)
+        assert result.converged, (solver, result.summary["message"])
+        assert result.solver == solver and result.interface_forces.shape == (62, 41)

@@ -1,0 +1,104 @@
+// `latin-pgd` and `fas-apriori` against the incremental solver (docs/method.md §5), on a small seed
+// scene; the a priori coarse space; the tolerance as a bound on the true error for every iterative
+// strategy.
+#include <gtest/gtest.h>
+
+#include "fas/apriori_basis.hpp"
+#include "latin/local_stage.hpp"
+#include "pgd/separated_history.hpp"
+#include "solver/seed_scene.hpp"
+#include "src/solver/condensed_interface.hpp"
+#include "src/solver/incremental_solver.hpp"
+#include "src/strategies/solve_by_name.hpp"
+
+namespace {
+
+struct Fixture {
+  stc::Scene scene = stc::test::seedScene(31, 41);
+  stc::Problem problem = stc::buildProblem(scene);
+  stc::SolveResult incremental = stc::solveIncremental(problem);
+  stc::SpdFactor K{problem.stiffness_free, "K"};
+  stc::ErrorReference reference{problem, K, stc::CondensedInterface::build(problem, K).delassus,
+                                incremental.interface.lambda};
+};
+
+const Fixture& fixture() {
+  static const Fixture f;
+  return f;
+}
+
+stc::SolveResult solve(const std::string& name, double tolerance) {
+  const auto& f = fixture();
+  stc::SolverSpec spec = f.scene.solver;
+  spec.tolerance = tolerance;
+  stc::StrategyInputs inputs;
+  inputs.reference = &f.reference;
+  return stc::solveByName(name, f.problem, spec, inputs);
+}
+
+}  // namespace
+
+// docs/method.md §2 "Error estimate": the solvers stop when the estimate of the true error is at
+// most the tolerance; the true error there must be at most the tolerance, and the estimate within
+// 10 times the true error (it is twice the one-mode model, which is nearly exact near the end).
+TEST(Tolerance, BoundsTheTrueErrorOfEveryIterativeStrategy) {
+  for (const std::string name : {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori"})
+    for (double tolerance : {1e-4, 1e-6}) {
+      const auto r = solve(name, tolerance);
+      ASSERT_TRUE(r.summary.converged()) << name << ": " << r.summary.message;
+      ASSERT_TRUE(r.summary.error.has_value()) << name;
+      EXPECT_LE(*r.summary.error, tolerance) << name;
+      EXPECT_LE(r.summary.error_estimate, 10 * *r.summary.error) << name << " at " << tolerance;
+      EXPECT_GE(r.summary.error_estimate, *r.summary.error) << name << " at " << tolerance;
+    }
+}
+
+TEST(LatinPgd, ReachesTheIncrementalSolutionWithFewSparseSolves) {
+  const auto r = solve("latin-pgd", 1e-8);
+  ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+  EXPECT_LE(*r.summary.error, 1e-8);
+  const auto& last = r.summary.history.back();
+  EXPECT_GT(last.rank, 0);
+  // A plain LATIN iteration costs m = 41 solves; latin-pgd spends one per direction, at most 2n_C.
+  EXPECT_LE(last.sparse_solves, 2 * fixture().problem.contact.size() + 2);
+  EXPECT_LT(last.sparse_solves, 41L * r.summary.iterations / 4);
+}
+
+TEST(FasApriori, ReachesTheIncrementalSolutionWithFewerRelaxationsThanLatin) {
+  const auto a = solve("fas-apriori", 1e-8);
+  ASSERT_TRUE(a.summary.converged()) << a.summary.message;
+  EXPECT_LE(*a.summary.error, 1e-8);
+  const auto latin = solve("latin", 1e-8);
+  ASSERT_TRUE(latin.summary.converged());
+  EXPECT_LT(2 * a.summary.relaxations, latin.summary.relaxations);
+}
+
+TEST(AprioriBasis, CoarseSpaceIsEnergyOrthonormal) {
+  // The provider's coarse space is known by its traces B Y; with Y rebuilt from the same
+  // combination the coarse operator Yᵀ A Y must be the identity (seed eq. (8) with R A P = I).
+  const auto& f = fixture();
+  stc::pgd::ControlledGlobalStage stage(f.problem, {});
+  stc::fas::AprioriBasisOptions options;
+  options.modes = 4;
+  options.increment_modes = 3;
+  stc::fas::AprioriBasisProvider provider(stage, options);
+  stc::InterfaceHistory s, hat = stc::InterfaceHistory::zeros(f.problem.contact.size(), f.problem.numSteps());
+  for (int cycle = 1; cycle <= 3; ++cycle) {
+    stc::InterfaceHistory moved = f.incremental.interface;
+    moved.lambda *= cycle / 3.0;  // a moving right-hand side
+    stc::latin::localStage(f.problem.contact, moved, hat);
+    stage.solve(hat, s);
+    const auto space = provider.coarseSpace(s);
+    EXPECT_LE(space.rank(), 7);
+    const stc::pgd::EnergySvd svd = stc::pgd::energySvd(stage.basis(), stage.coordinates(), 4);
+    const Eigen::MatrixXd Y = stc::pgd::spatialModes(stage.basis(), svd.combination);
+    EXPECT_LE((Y.transpose() * (stage.matrix() * Y) - Eigen::MatrixXd::Identity(Y.cols(), Y.cols())).cwiseAbs().maxCoeff(),
+              1e-8);
+    // Its first columns are the leading energy modes of ũ (up to sign): their traces agree.
+    const Eigen::MatrixXd BY = f.problem.contact.B * Y;
+    for (Eigen::Index j = 0; j < Y.cols(); ++j) {
+      const Eigen::VectorXd a = space.interface().col(j), b = BY.col(j);
+      EXPECT_NEAR(std::abs(a.dot(b)) / (a.norm() * b.norm()), 1.0, 1e-8) << "cycle " << cycle << ", mode " << j;
+    }
+  }
+}
