@@ -1,5 +1,6 @@
 #include "src/solver/error_estimate.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,19 +8,23 @@
 namespace stc {
 namespace {
 
-// Safety factor on the one-mode model: before the dominant mode has taken over, the model misses
-// slower components and the estimate is optimistic. Measured on the seed scene (`stcontact solve
-// examples/scenes/hemicylinder.toml --tol 1e-10`, history.csv): estimate / true error of the bare
-// model rises from 0.42 (LATIN, true error 1e-2) to 0.79 (1e-4), 0.98 (1e-6) and 1.00 (1e-9);
-// fas-apriori 0.88 to 4.0. Twice the model keeps the true error below the tolerance there and the
-// estimate within 10 times the true error (docs/method.md §2, "Error estimate").
-constexpr double kSafety = 2.0;
-// The rate used is at least this per period: the error is never assumed to shrink by more than ten
-// times over the next period. Convergence can slow down: fas-aposteriori's first cycles remove what
-// its basis spans (rates 0.003 per cycle on the seed scene at arc_nodes 31, steps 41), then the
-// rest decays at 0.085 per cycle; extrapolating the early rates made the estimate 10 times too
-// small there. Where the rate stays below it the estimate is pessimistic by at most 0.1 / rate.
-constexpr double kMinimumRate = 0.1;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The error is never assumed to shrink by more than ten times over the next period: at least
+// ρ/(1 + ρ) ‖w‖ with ρ = 0.1. Convergence can slow down after a fast start: fas-aposteriori's first
+// cycles remove what its basis spans (0.003 per cycle on the seed scene at arc_nodes 31, steps 41),
+// then the rest decays at 0.085 per cycle, and extrapolating the early cycles was 10 times optimistic.
+constexpr double kSmallestShare = 0.1 / 1.1;
+
+// Solves the symmetric system M c = b in the least-squares sense, ignoring directions of M below
+// 1e-12 of its largest eigenvalue (nearly parallel differences: a lower order is all they hold).
+Eigen::VectorXd pseudoSolve(const Eigen::MatrixXd& M, const Eigen::VectorXd& b) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(M);
+  const Eigen::VectorXd& d = eig.eigenvalues();
+  const double cutoff = 1e-12 * d.cwiseAbs().maxCoeff();
+  Eigen::VectorXd coordinates = eig.eigenvectors().transpose() * b;
+  for (Eigen::Index i = 0; i < d.size(); ++i) coordinates[i] = d[i] > cutoff ? coordinates[i] / d[i] : 0.0;
+  return eig.eigenvectors() * coordinates;
+}
 
 }  // namespace
 
@@ -28,42 +33,52 @@ double energyProduct(const InterfaceHistory& d1, const InterfaceHistory& d2) {
   return 0.5 * (d1.v.cwiseProduct(d2.lambda).sum() + d2.v.cwiseProduct(d1.lambda).sum());
 }
 
-ErrorEstimator::ErrorEstimator(int period, int window)
-    : period_(std::max(1, period)), window_(std::max(1, window)), rate_(std::numeric_limits<double>::quiet_NaN()) {}
+ErrorEstimator::ErrorEstimator(int period, int order, double safety)
+    : period_(std::max(1, period)), order_(std::max(1, order)), safety_(std::max(1.0, safety)), sequences_(period_) {}
 
-double ErrorEstimator::record(const InterfaceHistory& s, double energy) {
-  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+void ErrorEstimator::reset() { sequences_.assign(period_, Sequence{}); }
+
+double ErrorEstimator::extrapolatedError(const Eigen::MatrixXd& gram) const {
+  const Eigen::Index K = order_;
+  // c = argmin ‖w_K + Σ_{j<K} c_j w_j‖: normal equations G_{<K} c = −⟨w_j, w_K⟩.
+  Eigen::VectorXd c(K + 1);
+  c.head(K) = pseudoSolve(gram.topLeftCorner(K, K), -gram.col(K).head(K));
+  c[K] = 1.0;
+  const double sum = c.sum();  // Σc = P(1): zero when the iteration does not contract
+  if (!(std::abs(sum) > 1e-12 * c.cwiseAbs().sum())) return kInfinity;
+  Eigen::VectorXd beta(K + 1);
+  double partial = 0.0;
+  for (Eigen::Index i = 0; i <= K; ++i) beta[i] = (partial += c[i] / sum);
+  return std::sqrt(std::max(0.0, beta.dot(gram * beta)));
+}
+
+double ErrorEstimator::extend(Sequence& q, const InterfaceHistory& s, double energy) const {
   double estimate = kInfinity;
-  if (static_cast<int>(iterates_.size()) == period_) {
-    InterfaceHistory delta{s.v - iterates_.front().v, s.lambda - iterates_.front().lambda};
-    iterates_.pop_front();
-    const double size = std::sqrt(std::max(0.0, energyProduct(delta, delta)));
+  if (q.last) {
+    q.differences.push_back({s.v - q.last->v, s.lambda - q.last->lambda});
+    const bool full = static_cast<Eigen::Index>(q.differences.size()) > order_ + 1;
+    if (full) q.differences.pop_front();
+    const Eigen::Index n = static_cast<Eigen::Index>(q.differences.size());
+    Eigen::MatrixXd gram(n, n);
+    gram.topLeftCorner(n - 1, n - 1) = full ? q.gram.bottomRightCorner(n - 1, n - 1) : q.gram;
+    for (Eigen::Index i = 0; i < n; ++i) gram(i, n - 1) = gram(n - 1, i) = energyProduct(q.differences[i], q.differences.back());
+    q.gram = std::move(gram);
+    const double size = std::sqrt(std::max(0.0, q.gram(n - 1, n - 1)));
+    // A difference larger than every earlier one of the sequence: no contraction (yet).
+    const bool growing = n > 1 && q.gram.diagonal().head(n - 1).maxCoeff() <= q.gram(n - 1, n - 1);
     if (size == 0.0) {
       estimate = 0.0;  // the iteration stands still: a fixed point
-    } else if (static_cast<int>(differences_.size()) == period_) {
-      const InterfaceHistory& before = differences_.front();
-      const double before_squared = energyProduct(before, before);
-      if (before_squared > 0.0) {
-        rate_ = size / std::sqrt(before_squared);
-        // μ = ρ e^{iθ} with ρ cos θ from the product; ρ raised to the floor, θ kept.
-        const double rho = std::max(rate_, kMinimumRate);
-        const double rho_cos = energyProduct(delta, before) / before_squared * rho / rate_;
-        const double gap = std::sqrt(std::max(0.0, 1.0 - 2.0 * rho_cos + rho * rho));  // |1 − μ|
-        factors_.push_back(rho < 1.0 && gap > 0.0 ? rho / gap : kInfinity);
-        if (static_cast<int>(factors_.size()) > window_) factors_.pop_front();
-        // Only a full window: the first periods are a transient whose fast modes make the rate
-        // look smaller than it stays (fas-aposteriori, seed scene at arc_nodes 31, steps 41: the
-        // first two rates 10 times too optimistic; docs/method.md §2).
-        const double factor = kSafety * *std::max_element(factors_.begin(), factors_.end());
-        if (static_cast<int>(factors_.size()) == window_ && std::isfinite(factor) && energy > 0.0)
-          estimate = factor * size / std::sqrt(energy);
-      }
+    } else if (n == order_ + 1 && !growing && energy > 0.0) {
+      const double error = std::max(extrapolatedError(q.gram), kSmallestShare * size);
+      if (std::isfinite(error)) estimate = safety_ * error / std::sqrt(energy);
     }
-    differences_.push_back(std::move(delta));
-    if (static_cast<int>(differences_.size()) > period_) differences_.pop_front();
   }
-  iterates_.push_back(s);
+  q.last = s;
   return estimate;
+}
+
+double ErrorEstimator::record(const InterfaceHistory& s, double energy) {
+  return extend(sequences_[count_++ % period_], s, energy);
 }
 
 }  // namespace stc

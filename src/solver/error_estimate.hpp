@@ -4,20 +4,26 @@
 // docs/method.md §2, "Error estimate").
 //   1. Energy products on the interface. Two equilibrated iterates (K_ff u = f + Bᵀλ) differ by
 //      δu = K_ff⁻¹ Bᵀ δλ, so ⟨δu, δu'⟩_K = δuᵀ Bᵀ δλ' = Σ_k δv_k · δλ'_k: exact, on the interface.
-//   2. The rate. Over a period of p iterations (1 for LATIN, a FAS cycle's relaxations) the
-//      differences Δ_n = u_n − u_{n−p} of a linear iteration near its fixed point follow its dominant
-//      eigenvalue μ = ρ e^{iθ}: Δ_n ≈ μ Δ_{n−p}, with ρ = ‖Δ_n‖ / ‖Δ_{n−p}‖ and
-//      ρ cos θ = ⟨Δ_n, Δ_{n−p}⟩ / ‖Δ_{n−p}‖². The error then is e_n = μ / (1 − μ) · Δ_n, so
-//          ‖u_n − u*‖_K ≈ ρ / |1 − μ| · ‖Δ_n‖,   |1 − μ|² = 1 − 2 ρ cos θ + ρ².
-//      A monotone approach (θ = 0) gives the familiar ρ / (1 − ρ); an alternating one (θ = π, what
-//      LATIN shows on the seed scene) ρ / (1 + ρ), up to 19 times less at ρ = 0.9.
-//      The largest factor of the last `window` periods is used, so that a rate that drifts up (an
-//      active set still changing) does not make the estimate optimistic, and ρ is taken at least
-//      0.1: convergence may slow down after a fast start (error_estimate.cpp).
-//   3. The normalisation: ‖u*‖²_K ≈ E(u_n) (src/solver/equilibrium_energy.hpp).
-// The estimate is +∞ until `window` rates are known (window + 1 periods), and while the measured
-// rate is ≥ 1.
+//   2. Extrapolation. Near its fixed point the iteration is linear; over a period of p iterations
+//      (1 for LATIN, a FAS cycle's relaxations) the iterates x_j = u_{jp} (one per period) approach
+//      the limit along a few dominant eigenvectors. Minimal polynomial extrapolation (MPE, Cabay &
+//      Jackson 1976; Sidi 2017, "Vector extrapolation methods", ch. 1) of order K from the
+//      differences w_j = x_{j+1} − x_j finds the limit s exactly when K modes carry the error:
+//      c = argmin ‖w_K + Σ_{j<K} c_j w_j‖, c_K = 1, γ = c / Σc, s = Σ_j γ_j x_j, and the error of
+//      the newest iterate is x_{K+1} − s = Σ_i β_i w_i with β_i = Σ_{j≤i} γ_j: its energy norm from
+//      the Gram matrix of the w's alone. One mode (K = 1) gives ρ/|1 − μ| ‖w‖ for the eigenvalue
+//      μ = ρe^{iθ}; K = 2 also covers a mixture of a monotone and an alternating mode.
+//   3. Safety: a factor on that (2 for LATIN, 1 for FAS: docs/method.md §2 gives the measured
+//      ratios), and at least (0.1/1.1) ‖w_K‖ (the error is never assumed to shrink by more than ten
+//      times over the next period).
+//   4. The normalisation: ‖u*‖²_K ≈ E(u_n) (src/solver/equilibrium_energy.hpp).
+// Each phase of the period is its own sequence. The estimate is +∞ until its sequence holds K + 1
+// differences (K + 2 periods), while the newest difference is the largest of them, and when the
+// extrapolation finds no contraction.
+#include <Eigen/Core>
 #include <deque>
+#include <optional>
+#include <vector>
 
 #include "src/spacetime/interface_history.hpp"
 
@@ -25,21 +31,32 @@ namespace stc {
 
 class ErrorEstimator {
  public:
-  /// `period`: iterations per period of the iteration (≥ 1); `window`: periods whose factors are
-  /// kept (≥ 1).
-  explicit ErrorEstimator(int period = 1, int window = 3);
+  /// `period`: iterations per period of the iteration (≥ 1); `order`: K of the extrapolation (≥ 1);
+  /// `safety`: the factor on the extrapolated error (≥ 1).
+  explicit ErrorEstimator(int period = 1, int order = 2, double safety = 2.0);
 
   /// Records the equilibrated iterate s_n and E(u_n); returns the estimate of its relative error.
   double record(const InterfaceHistory& s, double energy);
-  /// ρ of the last period (NaN before it is known).
-  double rate() const { return rate_; }
+  /// Forgets the iterates and differences: the next records start a new sequence (the phase within
+  /// the period is kept).
+  void reset();
 
  private:
-  int period_, window_;
-  std::deque<InterfaceHistory> iterates_;     ///< the last `period` iterates
-  std::deque<InterfaceHistory> differences_;  ///< Δ of the last period + 1 records
-  std::deque<double> factors_;                ///< ρ / |1 − μ| of the last `window` periods
-  double rate_;
+  /// The iterates of one phase of the period: x_j = u_{jp + phase}.
+  struct Sequence {
+    std::optional<InterfaceHistory> last;      ///< the newest x_j
+    std::deque<InterfaceHistory> differences;  ///< w_0 … w_K, oldest first
+    Eigen::MatrixXd gram;                      ///< ⟨w_i, w_j⟩_K of the differences held
+  };
+  /// Appends s to `sequence`; returns its extrapolated error relative to √energy, or +∞.
+  double extend(Sequence& sequence, const InterfaceHistory& s, double energy) const;
+  /// ‖x_{K+1} − s‖_K of the extrapolation over the differences held, or +∞.
+  double extrapolatedError(const Eigen::MatrixXd& gram) const;
+
+  int period_, order_;
+  double safety_;
+  long count_ = 0;                  ///< records so far
+  std::vector<Sequence> sequences_;  ///< one per phase of the period
 };
 
 /// ⟨u_a − u_b, u_c − u_d⟩_K of equilibrated iterates, given the differences (δv, δλ) of both pairs:

@@ -20,6 +20,9 @@ struct StoppingRule {
   int max_iterations = defaults::max_iterations;
   int stagnation_window = 0;    ///< iterations without a 1% decrease of the best indicator (0: off)
   int estimate_period = 1;      ///< iterations per period of the iteration (ErrorEstimator)
+  int estimate_order = 2;       ///< order of its extrapolation (ErrorEstimator)
+  double estimate_safety = 2.0; ///< its safety factor (ErrorEstimator)
+
 };
 
 class IterationMonitor {
@@ -32,12 +35,17 @@ class IterationMonitor {
   /// Records one iteration whose equilibrated iterate is `s`; returns true when the solve must stop
   /// (the summary says why).
   bool record(int relaxations, double indicator, const InterfaceHistory& s, int rank, long sparse_solves);
+  /// Starts the error estimate's history afresh: the next iterates follow another map (e.g. after a
+  /// rejected FAS correction), so the rates measured so far do not describe them.
+  void restartEstimate() { estimator_.reset(); }
+
   /// Final summary (termination, message, totals); call once at the end.
   SolveSummary finish();
   double elapsed() const;
 
  private:
   bool stop(Termination termination, std::string message);
+
 
   SolveSummary summary_;
   StoppingRule rule_;
@@ -48,6 +56,7 @@ class IterationMonitor {
   std::chrono::steady_clock::time_point start_;
   double best_indicator_ = 0.0;
   int best_iteration_ = 0;
+
 };
 
 }  // namespace stc

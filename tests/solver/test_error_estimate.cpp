@@ -42,8 +42,8 @@ double estimateOverError(double rho, double theta, int count, int period = 1) {
 
 }  // namespace
 
-// The one-mode model is exact for these sequences, so the estimate is the safety factor (2) times
-// the true error, whatever the sign or rotation of the dominant eigenvalue.
+// The extrapolation is exact for these sequences (one real or complex mode), so the estimate is the
+// safety factor (2) times the true error, whatever the sign or rotation of the eigenvalue.
 TEST(ErrorEstimator, IsTwiceTheErrorOfAMonotoneContraction) {
   EXPECT_NEAR(estimateOverError(0.9, 0.0, 30), 2.0, 1e-9);
 }
@@ -60,14 +60,29 @@ TEST(ErrorEstimator, ComparesIteratesOnePeriodApart) {
   EXPECT_NEAR(estimateOverError(0.5, 0.4, 30, 2), 2.0, 1e-9);
 }
 
-TEST(ErrorEstimator, IsInfiniteUntilTheRateIsKnownAndWhenItIsNotAContraction) {
-  stc::ErrorEstimator estimator;
+TEST(ErrorEstimator, IsInfiniteUntilThreeDifferencesAreKnownAndWhileTheyGrow) {
+  stc::ErrorEstimator estimator;  // period 1, order 2: the first estimate at the 4th record
   Eigen::VectorXd x(2);
   x << 1.0, 2.0;
-  EXPECT_TRUE(std::isinf(estimator.record(iterate(x), 1.0)));
-  EXPECT_TRUE(std::isinf(estimator.record(iterate(2 * x), 1.0)));
-  EXPECT_TRUE(std::isinf(estimator.record(iterate(4 * x), 1.0)));  // rate 2: diverging
-  EXPECT_EQ(estimator.record(iterate(4 * x), 1.0), 0.0);             // standing still
+  for (double scale : {1.0, 2.0, 4.0, 8.0, 16.0})  // differences x, 2x, 4x, 8x: diverging
+    EXPECT_TRUE(std::isinf(estimator.record(iterate(scale * x), 1.0))) << scale;
+  EXPECT_EQ(estimator.record(iterate(16 * x), 1.0), 0.0);  // standing still
+}
+
+TEST(ErrorEstimator, ExtrapolatesAMixtureOfAMonotoneAndAnAlternatingMode) {
+  // e_n = 0.9ⁿ a + (−0.8)ⁿ b: the one-mode model misjudges it (it blends the two), the extrapolation
+  // of order 2 does not.
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(3), b = Eigen::VectorXd::Zero(3), star(3);
+  a[0] = 1.0;
+  b[1] = 3.0;
+  star << 0.5, 0.25, -1.0;
+  stc::ErrorEstimator estimator;
+  double ratio = NAN;
+  for (int n = 0; n < 12; ++n) {
+    const Eigen::VectorXd e = std::pow(0.9, n) * a + std::pow(-0.8, n) * b;
+    ratio = estimator.record(iterate(star + e), 1.0) / e.norm();
+  }
+  EXPECT_NEAR(ratio, 2.0, 1e-6);
 }
 
 // E of docs/method.md §2 for equilibrated iterates, from the interface alone, against the energy of
