@@ -20,7 +20,7 @@ namespace stc::fas {
 
 struct AprioriBasisOptions {
   int modes = defaults::pgd_max_modes;              ///< leading energy-SVD modes of ũ in the coarse space
-  int increment_modes = defaults::residual_vectors;  ///< leading modes of ũ's change since the last coarse step
+  int increment_modes = defaults::pgd_increment_modes;  ///< leading modes of ũ's change since the last coarse step
 
   void validate() const;     ///< throws InputError naming the field
 };

@@ -37,12 +37,15 @@ inline constexpr int block_size = 32;
 inline constexpr int pre_relaxations = 1;      ///< ν1
 inline constexpr int post_relaxations = 1;     ///< ν2
 inline constexpr int coarse_iterations = 15;   ///< i_C
-inline constexpr int residual_vectors = 15;    ///< N_res (seed §4.3)
+inline constexpr int residual_vectors = 15;    ///< N_res of fas-aposteriori (seed §4.3)
 inline constexpr CoarseStart coarse_start = CoarseStart::ZeroCorrection;
 inline constexpr int svd_modes = 10;           ///< fas-aposteriori: leading energy-SVD modes
-/// fas-apriori: leading energy modes of the a priori expansion in the coarse space (beside
-/// residual_vectors modes of its change since the previous coarse step; docs/floor.md).
-inline constexpr int pgd_max_modes = 30;
+/// fas-apriori's coarse space: the pgd_max_modes leading energy modes of the a priori expansion and
+/// the pgd_increment_modes leading modes of its change since the previous coarse step. 15 + 30:
+/// fewer relaxations than 30 + 15 from the seed scene (20 against 18–20) to arc_nodes 401 (30
+/// against 52, with no rejected correction) and 801 (66 against 366; docs/floor.md).
+inline constexpr int pgd_max_modes = 15;
+inline constexpr int pgd_increment_modes = 30;
 /// latin-pgd and fas-apriori: γ, the separated global stage's projection error kept below γ times the
 /// previous gap ‖s − ŝ‖ (pgd/controlled_global_stage.hpp; docs/floor.md).
 inline constexpr double pgd_gap_share = 0.05;

@@ -81,8 +81,10 @@ struct FasSpec {
   int residual_vectors = defaults::residual_vectors;        ///< N_res >= 0
   int svd_modes = defaults::svd_modes;                      ///< fas-aposteriori: leading energy-SVD modes (>= 0)
   /// fas-apriori: leading energy modes of the a priori expansion in the coarse space (>= 0; 0:
-  /// the modes of its change alone, residual_vectors of them).
+  /// the modes of its change alone).
   int pgd_max_modes = defaults::pgd_max_modes;
+  /// fas-apriori: leading modes of the expansion's change since the previous coarse step (>= 0).
+  int pgd_increment_modes = defaults::pgd_increment_modes;
   double pgd_gap_share = defaults::pgd_gap_share;  ///< latin-pgd, fas-apriori: γ in (0, 1)
   CoarseStart coarse_start = defaults::coarse_start;        ///< "zero" (docs/method.md §4 option a) or "mismatch" (b)
 };

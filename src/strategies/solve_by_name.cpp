@@ -27,13 +27,14 @@ fas::FasOptions fasOptions(const SolverSpec& spec) {
 fas::AprioriBasisOptions aprioriOptions(const SolverSpec& spec) {
   fas::AprioriBasisOptions basis;
   basis.modes = spec.fas.pgd_max_modes;
-  basis.increment_modes = spec.fas.residual_vectors;
+  basis.increment_modes = spec.fas.pgd_increment_modes;
   return basis;
 }
 
 pgd::ControlledStageOptions stageOptions(const SolverSpec& spec) {
   pgd::ControlledStageOptions stage;
   stage.gap_share = spec.fas.pgd_gap_share;
+  stage.tolerance = spec.tolerance;
   return stage;
 }
 
