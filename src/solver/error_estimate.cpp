@@ -9,11 +9,6 @@ namespace stc {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// The error is never assumed to shrink by more than ten times over the next period: at least
-// ρ/(1 + ρ) ‖w‖ with ρ = 0.1. Convergence can slow down after a fast start: fas-aposteriori's first
-// cycles remove what its basis spans (0.003 per cycle on the seed scene at arc_nodes 31, steps 41),
-// then the rest decays at 0.085 per cycle, and extrapolating the early cycles was 10 times optimistic.
-constexpr double kSmallestShare = 0.1 / 1.1;
 
 // Solves the symmetric system M c = b in the least-squares sense, ignoring directions of M below
 // 1e-12 of its largest eigenvalue (nearly parallel differences: a lower order is all they hold).
@@ -33,8 +28,13 @@ double energyProduct(const InterfaceHistory& d1, const InterfaceHistory& d2) {
   return 0.5 * (d1.v.cwiseProduct(d2.lambda).sum() + d2.v.cwiseProduct(d1.lambda).sum());
 }
 
-ErrorEstimator::ErrorEstimator(int period, int order, double safety)
-    : period_(std::max(1, period)), order_(std::max(1, order)), safety_(std::max(1.0, safety)), sequences_(period_) {}
+ErrorEstimator::ErrorEstimator(int period, int order, double safety, int window, double min_rate)
+    : period_(std::max(1, period)),
+      order_(std::max(1, order)),
+      safety_(std::max(1.0, safety)),
+      window_(std::max(1, window)),
+      smallest_share_(std::max(0.0, min_rate) / (1.0 + std::max(0.0, min_rate))),
+      sequences_(period_) {}
 
 void ErrorEstimator::reset() { sequences_.assign(period_, Sequence{}); }
 
@@ -69,8 +69,10 @@ double ErrorEstimator::extend(Sequence& q, const InterfaceHistory& s, double ene
     if (size == 0.0) {
       estimate = 0.0;  // the iteration stands still: a fixed point
     } else if (n == order_ + 1 && !growing && energy > 0.0) {
-      const double error = std::max(extrapolatedError(q.gram), kSmallestShare * size);
-      if (std::isfinite(error)) estimate = safety_ * error / std::sqrt(energy);
+      q.factors.push_back(std::max(extrapolatedError(q.gram) / size, smallest_share_));
+      if (static_cast<int>(q.factors.size()) > window_) q.factors.pop_front();
+      const double factor = *std::max_element(q.factors.begin(), q.factors.end());
+      if (std::isfinite(factor)) estimate = safety_ * factor * size / std::sqrt(energy);
     }
   }
   q.last = s;

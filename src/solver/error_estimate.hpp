@@ -13,9 +13,11 @@
 //      the newest iterate is x_{K+1} − s = Σ_i β_i w_i with β_i = Σ_{j≤i} γ_j: its energy norm from
 //      the Gram matrix of the w's alone. One mode (K = 1) gives ρ/|1 − μ| ‖w‖ for the eigenvalue
 //      μ = ρe^{iθ}; K = 2 also covers a mixture of a monotone and an alternating mode.
-//   3. Safety: a factor on that (2 for LATIN, 1 for FAS: docs/method.md §2 gives the measured
-//      ratios), and at least (0.1/1.1) ‖w_K‖ (the error is never assumed to shrink by more than ten
-//      times over the next period).
+//   3. Safety: a factor on that, and at least ρ_min/(1 + ρ_min) ‖w_K‖ (the error is never assumed
+//      to shrink by more than 1/ρ_min times over the next period). LATIN: factor 2 on the order-2
+//      extrapolation, ρ_min = 0.1. FAS, whose cycles change their own map: factor 2 on the largest
+//      ratio of extrapolated error to ‖w_K‖ over the last 3 periods, at order 1, ρ_min = 0.01
+//      (docs/method.md §2 gives the measured ratios).
 //   4. The normalisation: ‖u*‖²_K ≈ E(u_n) (src/solver/equilibrium_energy.hpp).
 // Each phase of the period is its own sequence. The estimate is +∞ until its sequence holds K + 1
 // differences (K + 2 periods), while the newest difference is the largest of them, and when the
@@ -32,8 +34,12 @@ namespace stc {
 class ErrorEstimator {
  public:
   /// `period`: iterations per period of the iteration (≥ 1); `order`: K of the extrapolation (≥ 1);
-  /// `safety`: the factor on the extrapolated error (≥ 1).
-  explicit ErrorEstimator(int period = 1, int order = 2, double safety = 2.0);
+  /// `safety`: the factor on the extrapolated error (≥ 1); `window`: periods over which the largest
+  /// ratio of extrapolated error to newest difference is taken (≥ 1).
+  /// `min_rate`: the smallest contraction per period assumed (the estimate is at least
+  /// min_rate / (1 + min_rate) times the newest difference).
+  explicit ErrorEstimator(int period = 1, int order = 2, double safety = 2.0, int window = 1,
+                          double min_rate = 0.1);
 
   /// Records the equilibrated iterate s_n and E(u_n); returns the estimate of its relative error.
   double record(const InterfaceHistory& s, double energy);
@@ -47,6 +53,7 @@ class ErrorEstimator {
     std::optional<InterfaceHistory> last;      ///< the newest x_j
     std::deque<InterfaceHistory> differences;  ///< w_0 … w_K, oldest first
     Eigen::MatrixXd gram;                      ///< ⟨w_i, w_j⟩_K of the differences held
+    std::deque<double> factors;                ///< extrapolated error / ‖w_K‖ of the last periods
   };
   /// Appends s to `sequence`; returns its extrapolated error relative to √energy, or +∞.
   double extend(Sequence& sequence, const InterfaceHistory& s, double energy) const;
@@ -55,6 +62,8 @@ class ErrorEstimator {
 
   int period_, order_;
   double safety_;
+  int window_;
+  double smallest_share_;  ///< min_rate / (1 + min_rate)
   long count_ = 0;                  ///< records so far
   std::vector<Sequence> sequences_;  ///< one per phase of the period
 };

@@ -9,7 +9,8 @@ IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const 
                                    const ErrorReference* reference, IterationCallback callback)
     : rule_(rule),
       energy_(energy),
-      estimator_(rule.estimate_period, rule.estimate_order, rule.estimate_safety),
+      estimator_(rule.estimate_period, rule.estimate_order, rule.estimate_safety, rule.estimate_window,
+                 rule.estimate_min_rate),
       reference_(reference),
       callback_(std::move(callback)),
       start_(std::chrono::steady_clock::now()) {

@@ -22,6 +22,8 @@ struct StoppingRule {
   int estimate_period = 1;      ///< iterations per period of the iteration (ErrorEstimator)
   int estimate_order = 2;       ///< order of its extrapolation (ErrorEstimator)
   double estimate_safety = 2.0; ///< its safety factor (ErrorEstimator)
+  int estimate_window = 1;      ///< periods of its largest ratio (ErrorEstimator)
+  double estimate_min_rate = 0.1;  ///< the smallest contraction per period it assumes
 
 };
 
