@@ -10,7 +10,7 @@ namespace stc::fas {
 using stc::CoarseStart;
 
 struct FasOptions {
-  /// On the fine-level LATIN indicator, tested after every relaxation.
+  /// On the error estimate (src/solver/error_estimate.hpp), tested after every relaxation.
   double tolerance = defaults::tolerance;
   /// Fine relaxations in all (the cost unit of the seed's Figs. 4–5).
   int max_relaxations = defaults::max_iterations;

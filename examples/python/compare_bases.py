@@ -40,7 +40,7 @@ def arguments():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("out", help="output folder (created)")
     parser.add_argument("--scene", default=SEED_SCENE)
-    parser.add_argument("--tol", type=float, default=1e-8, help="tolerance on the indicator")
+    parser.add_argument("--tol", type=float, default=1e-8, help="tolerance on the error estimate")
     parser.add_argument("--set", dest="sets", action="append", default=[], metavar="KEY=VALUE")
     parser.add_argument("--no-latin", dest="latin", action="store_false", help="leave plain LATIN out")
     return parser.parse_args()

@@ -92,7 +92,7 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args) {
   cmd->add_option("--out", args.out, "report folder (default results/<scene name>/compare)");
   cmd->add_option("--repeats", args.repeats, "timed runs per strategy, medians over them")->capture_default_str();
   cmd->add_option("--set", args.overrides, "override a scene value: section.key=value")->take_all();
-  cmd->add_option("--tol", args.tolerance, "tolerance on the indicator (default: the scene's)");
+  cmd->add_option("--tol", args.tolerance, "tolerance on the error estimate (default: the scene's)");
   cmd->add_flag("--quiet", args.quiet, "no progress, no final report");
   return cmd;
 }

@@ -20,7 +20,7 @@ struct CompareArgs {
   std::optional<std::string> out;      ///< default results/<scene name>/compare
   int repeats = 3;                     ///< timed runs per strategy (medians over them)
   std::vector<std::string> overrides;  ///< --set section.key=value
-  std::optional<double> tolerance;     ///< on the indicator; default the scene's
+  std::optional<double> tolerance;     ///< on the error estimate; default the scene's
   bool quiet = false;
 };
 

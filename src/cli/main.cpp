@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
                         "latin | latin-pgd | fas-aposteriori | fas-apriori | incremental (default: the scene's "
                         "[solver] name, else fas-apriori)");
   solve_cmd->add_option("--out", solve.out, "output folder (default results/<scene name>/<solver>)");
-  solve_cmd->add_option("--tol", solve.tolerance, "tolerance on the LATIN indicator");
+  solve_cmd->add_option("--tol", solve.tolerance, "tolerance on the error estimate");
   solve_cmd->add_option("--max-iterations", solve.max_iterations, "iteration limit");
   solve_cmd->add_option("--set", solve.overrides, "override a scene value: section.key=value")->take_all();
   solve_cmd->add_flag("--quiet", solve.quiet, "no progress, no final report");

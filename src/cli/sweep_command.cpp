@@ -110,7 +110,7 @@ CLI::App* addSweepCommand(CLI::App& app, SweepArgs& args) {
   cmd->add_option("--solver", args.solver, "strategy (default: the scene's [solver] name, else fas-apriori)");
   cmd->add_option("--set", args.overrides, "override a scene value for every solve: section.key=value")->take_all();
   cmd->add_option("--out", args.out, "report folder (default results/<scene name>/sweep_<KEY>)");
-  cmd->add_option("--tol", args.tolerance, "tolerance on the indicator (default: the scene's)");
+  cmd->add_option("--tol", args.tolerance, "tolerance on the error estimate (default: the scene's)");
   cmd->add_flag("--no-independent", args.no_independent, "warm solves only: no cold solve of each value");
   cmd->add_flag("--write-solutions", args.write_solutions, "write each value's solution into --out/value_<VALUE>/");
   cmd->add_flag("--quiet", args.quiet, "no progress, no per-value lines");

@@ -18,7 +18,7 @@ struct SweepArgs {
   std::optional<std::string> solver;   ///< default: the scene's [solver] name
   std::vector<std::string> overrides;  ///< --set section.key=value, for every value
   std::optional<std::string> out;      ///< default results/<scene name>/sweep_<KEY>
-  std::optional<double> tolerance;     ///< on the indicator; default the scene's
+  std::optional<double> tolerance;     ///< on the error estimate; default the scene's
   bool no_independent = false;         ///< warm solves only (no cold solve of each value)
   bool write_solutions = false;        ///< each value's warm solution as `solve` writes it
   bool quiet = false;

@@ -59,7 +59,7 @@ struct Comparison {
   std::string scene_file;
   std::string command;  ///< the command line that produced it
   int n_dofs = 0, n_contact_nodes = 0, n_steps = 0;
-  double tolerance = 0.0;  ///< on the indicator
+  double tolerance = 0.0;  ///< on the error estimate
   int repeats = 0;
   double reference_s = 0.0;  ///< the incremental reference and the error measure's set-up
   std::vector<StrategyMeasurement> strategies;

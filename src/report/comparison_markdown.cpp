@@ -40,7 +40,7 @@ void introduction(std::ostream& out, const Comparison& c) {
   out << "# Work against precision: " << c.scene_name << "\n\n"
       << "Produced by `" << c.command << "`.\n\n"
       << "Scene `" << c.scene_file << "`: " << c.n_dofs << " dofs, " << c.n_contact_nodes << " contact nodes, "
-      << c.n_steps << " instants; indicator tolerance " << shortNumber(c.tolerance, 3) << "; " << c.repeats
+      << c.n_steps << " instants; tolerance on the error estimate " << shortNumber(c.tolerance, 3) << "; " << c.repeats
       << " timed repeats per strategy, medians over them.\n\n"
       << "True error: relative elastic energy over the space-time grid against the incremental solution "
          "(docs/method.md §2). Times are seconds since the solver was called, set-up (factorisations, bases) "

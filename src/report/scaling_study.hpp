@@ -36,7 +36,7 @@ struct ScalingPoint {
 struct ScalingStudy {
   std::string scene_name, scene_file, command;
   double target_error = 1e-4;
-  double tolerance = 0.0;  ///< on the indicator
+  double tolerance = 0.0;  ///< on the error estimate
   int repeats = 1;
   std::optional<double> time_cap_s;
   std::vector<std::string> solvers;

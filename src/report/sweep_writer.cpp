@@ -29,7 +29,7 @@ void introduction(std::ostream& out, const Sweep& s) {
   out << "# Parameter sweep: " << s.scene_name << ", " << s.key << "\n\n"
       << "Produced by `" << s.command << "`.\n\n"
       << "Scene `" << s.scene_file << "`: " << s.n_dofs << " dofs, " << s.n_contact_nodes << " contact nodes, "
-      << s.n_steps << " instants (first value); solver `" << s.solver << "`, indicator tolerance "
+      << s.n_steps << " instants (first value); solver `" << s.solver << "`, tolerance on the error estimate "
       << shortNumber(s.tolerance, 3) << "; " << s.points.size() << " values of `" << s.key << "`.\n\n"
       << "*Warm*: each value starts from the previous value's solution (interface history) and, for the "
          "a priori bases, its spatial modes; the first value starts from zero. *Cold*: every value solved "

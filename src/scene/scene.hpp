@@ -92,7 +92,7 @@ struct FasSpec {
 /// [solver]: choice and common options (each solver validates its own further options).
 struct SolverSpec {
   std::string name = "fas-apriori";  ///< latin, latin-pgd, fas-aposteriori, fas-apriori, incremental
-  double tolerance = defaults::tolerance;         ///< on the LATIN indicator (docs/method.md §2), > 0
+  double tolerance = defaults::tolerance;         ///< on the error estimate (docs/method.md §2), > 0
   int max_iterations = defaults::max_iterations;  ///< >= 1
   double search_scale = 4.0;         ///< kappa of docs/method.md §2, > 0; 4 from docs/search_direction.md
   double relaxation = 1.0;           ///< omega in (0, 1]

@@ -132,7 +132,7 @@ def solve(scene, solver=None, *, tol=None, max_iterations=None, sets=None, refer
 
     solver           latin | latin-pgd | fas-aposteriori | fas-apriori | incremental (default: the
                      scene's [solver] name)                                   (--solver)
-    tol              tolerance on the LATIN indicator                        (--tol)
+    tol              tolerance on the error estimate                         (--tol)
     max_iterations   iteration limit                                         (--max-iterations)
     sets             overrides, ["KEY=VALUE", ...] or {KEY: value}           (--set)
     reference        False: no incremental reference, no true error          (--no-reference)
