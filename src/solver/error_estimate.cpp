@@ -9,6 +9,11 @@ namespace stc {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// A difference below this share of the iterate's energy norm is round-off: ε times the growth of
+// rounding errors through the stages' factorisations. `fas-aposteriori` with the exact solution's
+// SVD modes on 801 contact nodes reaches true error 2.5e-14, where its differences no longer shrink
+// and no extrapolation applies; without this rule it ran to the stagnation limit (1002 relaxations).
+constexpr double kRoundOff = 1e-12;
 
 // Solves the symmetric system M c = b in the least-squares sense, ignoring directions of M below
 // 1e-12 of its largest eigenvalue (nearly parallel differences: a lower order is all they hold).
@@ -68,6 +73,8 @@ double ErrorEstimator::extend(Sequence& q, const InterfaceHistory& s, double ene
     const bool growing = n > 1 && q.gram.diagonal().head(n - 1).maxCoeff() <= q.gram(n - 1, n - 1);
     if (size == 0.0) {
       estimate = 0.0;  // the iteration stands still: a fixed point
+    } else if (energy > 0.0 && size <= kRoundOff * std::sqrt(energy)) {
+      estimate = size / std::sqrt(energy);  // a fixed point to round-off: the error is not resolved below it
     } else if (n == order_ + 1 && !growing && energy > 0.0) {
       q.factors.push_back(std::max(extrapolatedError(q.gram) / size, smallest_share_));
       if (static_cast<int>(q.factors.size()) > window_) q.factors.pop_front();

@@ -69,6 +69,20 @@ TEST(ErrorEstimator, IsInfiniteUntilThreeDifferencesAreKnownAndWhileTheyGrow) {
   EXPECT_EQ(estimator.record(iterate(16 * x), 1.0), 0.0);  // standing still
 }
 
+// Iterates that jitter at round-off about their fixed point (differences 1e-15 of their size, growing
+// and shrinking at random) stop the solve: the differences are what the estimate reports, not +∞.
+TEST(ErrorEstimator, IsTheDifferenceOnceTheIterationStandsStillToRoundOff) {
+  stc::ErrorEstimator estimator;
+  Eigen::VectorXd star(3);
+  star << 0.3, -0.2, 0.7;
+  const double jitter[] = {1e-15, -3e-15, 2e-15, -4e-15, 5e-16, 6e-15};
+  double estimate = NAN;
+  for (double j : jitter) estimate = estimator.record(iterate(star + Eigen::VectorXd::Constant(3, j)), star.squaredNorm());
+  EXPECT_TRUE(std::isfinite(estimate));
+  EXPECT_LE(estimate, 1e-12);
+  EXPECT_GT(estimate, 0.0);
+}
+
 TEST(ErrorEstimator, ExtrapolatesAMixtureOfAMonotoneAndAnAlternatingMode) {
   // e_n = 0.9ⁿ a + (−0.8)ⁿ b: the one-mode model misjudges it (it blends the two), the extrapolation
   // of order 2 does not.
