@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -232,15 +233,19 @@ long long readNodeBlock(LineReader& r, GmshData& data) {
   return n;
 }
 
-void readNodes(LineReader& r, GmshData& data) {
-  r.nextData("the node counts");
-  const Tokens h = r.tokens(4, "(numEntityBlocks numNodes minNodeTag maxNodeTag)");
-  const long long blocks = r.count(h[0], "the number of node blocks");
-  const long long total = r.count(h[1], "the number of nodes");
+/// A $Nodes or $Elements section: "numEntityBlocks numX minXTag maxXTag", then the blocks, read
+/// by `readBlock`, whose counts must add up to numX. `kind` is "node" or "element".
+void readBlocks(LineReader& r, GmshData& data, const std::string& kind,
+                long long (*readBlock)(LineReader&, GmshData&)) {
+  const std::string Kind = static_cast<char>(std::toupper(kind[0])) + kind.substr(1);
+  r.nextData("the " + kind + " counts");
+  const Tokens h = r.tokens(4, "(numEntityBlocks num" + Kind + "s min" + Kind + "Tag max" + Kind + "Tag)");
+  const long long blocks = r.count(h[0], "the number of " + kind + " blocks");
+  const long long total = r.count(h[1], "the number of " + kind + "s");
   long long read = 0;
-  for (long long b = 0; b < blocks; ++b) read += readNodeBlock(r, data);
+  for (long long b = 0; b < blocks; ++b) read += readBlock(r, data);
   if (read != total)
-    r.fail("$Nodes announces " + std::to_string(total) + " nodes but its blocks hold " +
+    r.fail("$" + Kind + "s announces " + std::to_string(total) + " " + kind + "s but its blocks hold " +
            std::to_string(read));
   r.expectEnd();
 }
@@ -297,19 +302,6 @@ long long readElementBlock(LineReader& r, GmshData& data) {
     if (type == 1) data.curve_edges[entity].push_back({{nodes[0], nodes[1]}, tag, r.lineNumber()});
   }
   return n;
-}
-
-void readElements(LineReader& r, GmshData& data) {
-  r.nextData("the element counts");
-  const Tokens h = r.tokens(4, "(numEntityBlocks numElements minElementTag maxElementTag)");
-  const long long blocks = r.count(h[0], "the number of element blocks");
-  const long long total = r.count(h[1], "the number of elements");
-  long long read = 0;
-  for (long long b = 0; b < blocks; ++b) read += readElementBlock(r, data);
-  if (read != total)
-    r.fail("$Elements announces " + std::to_string(total) + " elements but its blocks hold " +
-           std::to_string(read));
-  r.expectEnd();
 }
 
 /// Skips a section this reader does not use ($Periodic, $NodeData, ...) up to its end marker.
@@ -401,9 +393,9 @@ Mesh parseGmsh(std::istream& in, const std::string& source_name) {
     r.enterSection(header);
     if (header == "$PhysicalNames") readPhysicalNames(r, data);
     else if (header == "$Entities") readEntities(r, data);
-    else if (header == "$Nodes") readNodes(r, data);
+    else if (header == "$Nodes") readBlocks(r, data, "node", readNodeBlock);
     else if (header == "$Elements" && !seen["$Nodes"]) r.fail("$Elements before $Nodes");
-    else if (header == "$Elements") readElements(r, data);
+    else if (header == "$Elements") readBlocks(r, data, "element", readElementBlock);
     else skipSection(r, header);
   }
   if (!seen["$Nodes"]) r.failFile("no $Nodes section (truncated file?)");
