@@ -38,8 +38,8 @@ int main(int argc, char** argv) {
     const stc::SolveSummary& summary = result.summary;                    // 4. report
     std::cout << summary.solver << ": " << stc::toString(summary.termination) << " (" << summary.message
               << ")\n  " << problem.numDofs() << " dofs, " << problem.contact.size() << " contact nodes, "
-              << problem.numSteps() << " instants; " << summary.relaxations << " relaxations, indicator "
-              << summary.indicator << ", " << summary.wall_s << " s\n";
+              << problem.numSteps() << " instants; " << summary.relaxations << " relaxations, error estimate "
+              << summary.error_estimate << ", " << summary.wall_s << " s\n";
     // [readme-end]
     return summary.converged() ? 0 : 2;
   } catch (const stc::InputError& e) {
