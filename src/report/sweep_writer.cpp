@@ -32,9 +32,9 @@ void introduction(std::ostream& out, const Sweep& s) {
       << s.n_steps << " instants (first value); solver `" << s.solver << "`, tolerance on the error estimate "
       << shortNumber(s.tolerance, 3) << "; " << s.points.size() << " values of `" << s.key << "`.\n\n"
       << "*Warm*: each value starts from the previous value's solution (interface history) and, for the "
-         "a priori bases, its spatial modes; the first value starts from zero. *Cold*: every value solved "
-         "independently from zero. Each solve rebuilds the problem and its factorisation (the search "
-         "direction and K + BᵀkB may depend on the value). Times: the whole solve call, set-up included; "
+         "separated global stages (latin-pgd, fas-apriori), its interface directions; the first value "
+         "starts from zero. *Cold*: every value solved independently from zero. Each solve rebuilds the "
+         "problem and its factorisation (the search direction and K + BᵀkB may depend on the value). Times: the whole solve call, set-up included; "
          "the problem's assembly and the incremental reference that gives the true error (docs/method.md §2) "
          "are not counted.\n\n";
 }
