@@ -1,0 +1,80 @@
+#pragma once
+// What the triangle mesh (src/mesh/mesh.hpp) and the tetrahedron mesh (src/mesh/tet_mesh.hpp)
+// do alike with their elements and named boundary groups: look a group up, collect its nodes,
+// check node ids and element measures. A group holds faces (edges in 2D, triangles in 3D) in the
+// member `Group::*faces` and their nodes in `nodes`.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "src/core/input_error.hpp"
+
+namespace stc::mesh_checks {
+
+/// The group named `name`; throws InputError listing the groups there are.
+template <class Group>
+const Group& findGroup(const std::map<std::string, Group>& groups, const std::string& name) {
+  auto it = groups.find(name);
+  if (it != groups.end()) return it->second;
+  std::ostringstream msg;
+  msg << "boundary '" << name << "' is not in the mesh (it has:";
+  for (const auto& [key, value] : groups) msg << " '" << key << "'";
+  msg << ")";
+  throw InputError(msg.str());
+}
+
+/// Fills `nodes` of every group from its faces (sorted, unique).
+template <class Group, class Face>
+void finalizeGroupNodes(std::map<std::string, Group>& groups, std::vector<Face> Group::*faces) {
+  for (auto& [name, g] : groups) {
+    for (const auto& face : g.*faces) g.nodes.insert(g.nodes.end(), face.begin(), face.end());
+    std::sort(g.nodes.begin(), g.nodes.end());
+    g.nodes.erase(std::unique(g.nodes.begin(), g.nodes.end()), g.nodes.end());
+  }
+}
+
+/// Throws InputError naming the first element (a column of `elements`) with a node id out of range.
+template <class Elements>
+void checkElementNodeIds(const Elements& elements, int num_nodes) {
+  for (int e = 0; e < static_cast<int>(elements.cols()); ++e)
+    for (int a = 0; a < static_cast<int>(elements.rows()); ++a)
+      if (elements(a, e) < 0 || elements(a, e) >= num_nodes)
+        throw InputError("element " + std::to_string(e) + " refers to node " + std::to_string(elements(a, e)) +
+                         ", which does not exist");
+}
+
+/// Throws InputError naming the first group whose faces hold a node id out of range.
+template <class Group, class Face>
+void checkGroupNodeIds(const std::map<std::string, Group>& groups, std::vector<Face> Group::*faces,
+                       int num_nodes) {
+  for (const auto& [name, g] : groups)
+    for (const auto& face : g.*faces)
+      for (int id : face)
+        if (id < 0 || id >= num_nodes)
+          throw InputError("boundary '" + name + "' refers to node " + std::to_string(id) +
+                           ", which does not exist");
+}
+
+/// Throws InputError naming the first element whose signed measure `measure(e)` (area or volume)
+/// is below 1e-12 of the mean |measure| ("degenerate (<what> m)") or negative ("inverted
+/// (<inverted_what> m)").
+template <class Measure>
+void checkElementMeasures(int num_elements, Measure measure, const std::string& what,
+                          const std::string& inverted_what) {
+  double mean = 0.0;
+  for (int e = 0; e < num_elements; ++e) mean += std::abs(measure(e));
+  mean /= num_elements;
+  for (int e = 0; e < num_elements; ++e) {
+    const double m = measure(e);
+    if (!(std::abs(m) > 1e-12 * mean))
+      throw InputError("element " + std::to_string(e) + " is degenerate (" + what + " " + std::to_string(m) + ")");
+    if (m < 0)
+      throw InputError("element " + std::to_string(e) + " is inverted (" + inverted_what + " " +
+                       std::to_string(m) + ")");
+  }
+}
+
+}  // namespace stc::mesh_checks
