@@ -25,7 +25,7 @@ constexpr int kBlock = stc::defaults::block_size;  // LatinOptions::block_size d
 // A state after a few iterations, so that the local stage sees open, stick and slip nodes.
 struct Iterate {
   stc::latin::GlobalStage global{seedProblem(), kBlock};
-  stc::InterfaceHistory s = stc::InterfaceHistory::zeros(seedProblem().contact.size(), seedProblem().numSteps());
+  stc::InterfaceHistory s = stc::InterfaceHistory::zeros(seedProblem().contact, seedProblem().numSteps());
   stc::InterfaceHistory hat, s_new;
   Iterate() {
     for (int i = 0; i < 20; ++i) step();

@@ -45,7 +45,7 @@ struct Sized {
   explicit Sized(int arc_nodes)
       : problem(stc::buildProblem(stc::readScene(STC_SOURCE_DIR "/examples/scenes/hemicylinder.toml",
                                                  {"solver.search_scale=3", "mesh.arc_nodes=" + std::to_string(arc_nodes)}))) {
-    s = stc::InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+    s = stc::InterfaceHistory::zeros(problem.contact, problem.numSteps());
     stc::InterfaceHistory sep = s, sep_hat;
     for (int i = 0; i < 20; ++i) {
       step();

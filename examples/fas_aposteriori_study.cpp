@@ -162,7 +162,7 @@ stc::SolveResult runOne(const Study& st, const RunSpec& r, stc::latin::GlobalSta
     o.max_iterations = cap;
     o.relaxation = r.omega;
     o.stagnation_window = 150;
-    const auto start = stc::InterfaceHistory::zeros(st.problem.contact.size(), st.problem.numSteps());
+    const auto start = stc::InterfaceHistory::zeros(st.problem.contact, st.problem.numSteps());
     return stc::latin::solveLatin(st.problem, global, start, o, st.reference.get(), stop);
   }
   stc::fas::FasOptions o;
@@ -248,7 +248,7 @@ struct Cost {
 // that a burst of load on the machine hits the numerator and the denominator of a ratio alike.
 Cost measureCost(const Study& st, stc::latin::GlobalStage& global, int repeats) {
   const auto& contact = st.problem.contact;
-  stc::InterfaceHistory s = stc::InterfaceHistory::zeros(contact.size(), st.problem.numSteps()), hat, s2, hat2;
+  stc::InterfaceHistory s = stc::InterfaceHistory::zeros(contact, st.problem.numSteps()), hat, s2, hat2;
 
   stc::latin::localStage(contact, s, hat);
   global.keepDisplacements(true);

@@ -102,7 +102,7 @@ class CoarseGuard {
 SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
                      const FasOptions& options, const std::string& solver_name, const ErrorReference* reference,
                      const IterationCallback& callback) {
-  return solveFas(problem, global, provider, InterfaceHistory::zeros(problem.contact.size(), problem.numSteps()),
+  return solveFas(problem, global, provider, InterfaceHistory::zeros(problem.contact, problem.numSteps()),
                   options, solver_name, reference, callback);
 }
 

@@ -12,7 +12,7 @@ SolveResult solveLatin(const Problem& problem, const LatinOptions& options, cons
                        const IterationCallback& callback) {
   options.validate();
   GlobalStage global(problem, options.block_size);
-  return solveLatin(problem, global, InterfaceHistory::zeros(problem.contact.size(), problem.numSteps()), options,
+  return solveLatin(problem, global, InterfaceHistory::zeros(problem.contact, problem.numSteps()), options,
                     reference, callback);
 }
 

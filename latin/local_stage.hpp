@@ -10,8 +10,11 @@ namespace stc::latin {
 /// Writes ŝ into `hat` (resized as needed). For each node i and instant k:
 ///   λ̂_n = max(0, λ_n − k_n (g0 + v_n));
 ///   open (λ̂_n = 0):  v̂_n = v_n − λ_n/k_n, λ̂_t = 0, v̂_t = v_t − λ_t/k_t;
-///   closed:          v̂_n = −g0, v̂_t = clamp(v̂_t(t_{k−1}), c − b, c + b) with c = v_t − λ_t/k_t,
-///                    b = μ λ̂_n / k_t, then λ̂_t = λ_t + k_t (v̂_t − v_t)   (stick or slip, branch-free).
+///   closed:          v̂_n = −g0, v̂_t = c + P_b(v̂_t(t_{k−1}) − c) with c = v_t − λ_t/k_t,
+///                    b = μ λ̂_n / k_t, then λ̂_t = λ_t + k_t (v̂_t − v_t)   (stick or slip).
+/// P_b projects on the ball of radius b of the tangent space (an interval in 2D: v̂_t is the
+/// clamp of v̂_t(t_{k−1}) to [c − b, c + b]; a disc in 3D: the Coulomb cone's closed form), so that
+/// λ̂_t = k_t P_b(·) lies in the cone and the slip v̂_t − v̂_t(t_{k−1}) points against it.
 /// v̂_t(t_{−1}) = 0: the body starts unloaded. Nodes are independent: with threadCount() > 1 they
 /// are split into contiguous ranges, one per thread (src/core/threads.hpp); the same result.
 void localStage(const ContactInterface& contact, const InterfaceHistory& s, InterfaceHistory& hat);

@@ -11,7 +11,7 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
   options.validate();
   ControlledGlobalStage stage(problem, options.stage);
   if (seed) stage.seed(*seed);
-  const InterfaceHistory zero = InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+  const InterfaceHistory zero = InterfaceHistory::zeros(problem.contact, problem.numSteps());
   SolveResult result =
       latin::solveLatin(problem, stage, start ? *start : zero, options.latin, reference, callback, "latin-pgd");
   result.interface_directions = stage.basis().directions();

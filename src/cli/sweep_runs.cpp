@@ -82,7 +82,7 @@ SweepPoint WarmChain::solveValue(const Scene& scene, const SweepRange& range, st
   }
   TimedSolve solved = timedSolve(problem, scene, warm, reference, label + "warm", settings);
   point.warm = solved.cost;
-  point.forces = endForces(solved.result.interface);
+  point.forces = endForces(problem.contact, solved.result.interface);
   if (settings.independent) point.cold = timedSolve(problem, scene, {}, reference, label + "cold", settings).cost;
   if (settings.solutions_dir)
     writeSolution(*settings.solutions_dir / ("value_" + point.text), problem, scene, solved.result);

@@ -1,39 +1,55 @@
 #pragma once
 // The discrete contact interface of docs/method.md §1: potential contact nodes facing a rigid obstacle,
-// their frames, initial gaps, tributary lengths, the operator B and the LATIN search direction k.
+// their frames, initial gaps, tributary measures, the operator B and the LATIN search direction k.
+// A node has d = 2 or 3 rows (the scene's dimension): one normal, then d − 1 tangential.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <string>
 #include <vector>
 
 #include "src/contact/obstacle.hpp"
 #include "src/mesh/mesh.hpp"
+#include "src/mesh/tet_mesh.hpp"
 
 namespace stc {
 
 struct ContactInterface {
+  int dimension = 2;               ///< d: rows per node (normal + d − 1 tangential)
   std::vector<int> nodes;          ///< mesh node id of each potential contact node i = 0..n_C−1
-  Eigen::Matrix2Xd normals;        ///< n_i, from the obstacle into the body
-  Eigen::Matrix2Xd tangents;       ///< τ_i = (n_y, −n_x)
+  Eigen::MatrixXd normals;         ///< n_i (d × n_C), from the obstacle into the body
+  /// Tangential directions, d × (d − 1) n_C: column (d − 1) i + a is τ_{i,a}. 2D: τ = (n_y, −n_x);
+  /// 3D: τ_1 = the unit projection of the least aligned coordinate axis (e_x first) on the tangent
+  /// plane, τ_2 = n × τ_1, so that (τ_1, τ_2, n) is right-handed.
+  Eigen::MatrixXd tangents;
   Eigen::VectorXd initial_gap;     ///< g0_i = (x_i − x_obs)·n_i ≥ 0
-  Eigen::VectorXd tributary;       ///< ℓ_i: half the length of the contact-boundary edges at node i
+  Eigen::VectorXd tributary;       ///< ℓ_i: half the contact-boundary edge lengths at node i (2D),
+                                   ///< a third of the contact-boundary triangle areas (3D)
   double friction = 0.0;           ///< Coulomb coefficient μ
-  /// v = B u_free: rows 2i (normal: n_i·u_i) and 2i + 1 (tangential: τ_i·u_i), 2n_C × n_free.
+  /// v = B u_free: row d i is the normal n_i·u_i, rows d i + a (a = 1..d−1) the tangential τ_{i,a}·u_i;
+  /// d n_C × n_free.
   Eigen::SparseMatrix<double> B;
-  /// Search direction k (2n_C, diagonal): k_n = k_t = κ E ℓ_i / L (docs/method.md §2).
+  /// Search direction k (d n_C, diagonal): the same k_i = κ E ℓ_i / L on every row of node i
+  /// (docs/method.md §2; ℓ_i an area in 3D, so k_i is a stiffness in both).
   Eigen::VectorXd search_direction;
   double search_scale_per_length = 0.0;  ///< κ E / L, so that k_i = search_scale_per_length · ℓ_i
 
   int size() const { return static_cast<int>(nodes.size()); }
+  int rows() const { return dimension * size(); }
+  /// Row of the normal component of node i; its tangential rows follow.
+  int normalRow(int i) const { return dimension * i; }
 };
 
-/// Builds the interface on boundary group `boundary` of the mesh. Nodes of the group whose two
-/// dofs are both prescribed are left out (their motion is known; the half-disc's arc corners);
+/// Builds the interface on boundary group `boundary` of the mesh. Nodes of the group whose dofs
+/// are all prescribed are left out (their motion is known; the half-disc's arc corners);
 /// `free_index[dof]` is the dof's index among the free dofs, −1 when prescribed. Throws InputError
-/// for a node with only one prescribed dof, or a node that starts inside the obstacle (g0 < 0).
+/// for a node with only some dofs prescribed, or a node that starts inside the obstacle (g0 < 0).
 ContactInterface buildContactInterface(const Mesh& mesh, const std::string& boundary, const Obstacle& obstacle,
                                        const std::vector<int>& free_index, double friction);
+/// The same on a tetrahedron mesh's surface group (3 rows per node).
+ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& boundary, const Obstacle& obstacle,
+                                       const std::vector<int>& free_index, double friction);
 
-/// Sets k = κ E ℓ_i / L on both directions of every node.
+/// Sets k = κ E ℓ_i / L on every row of every node.
 void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale);
 
 }  // namespace stc

@@ -12,12 +12,14 @@ namespace stc {
 class ContactStateTable {
  public:
   ContactStateTable(const ContactInterface& contact, const InterfaceHistory& s);
-  /// Δv_t = v_t(t_k) − v_t(t_{k−1}), with v_t(t_{−1}) = 0.
+  /// Δv_t = v_t(t_k) − v_t(t_{k−1}), with v_t(t_{−1}) = 0 (2D); its norm |Δv_t| in 3D. The state
+  /// uses λ_t in 2D and |λ_t| in 3D.
   double slip(int i, int k) const;
   ContactState state(int i, int k) const;
 
  private:
   const InterfaceHistory& s_;
+  int d_;
   double mu_, force_scale_, length_scale_;
 };
 

@@ -10,11 +10,11 @@ Obstacle makeObstacle(const ObstacleSpec& spec) {
   return PlaneObstacle{spec.point, spec.normal.normalized()};
 }
 
-Eigen::Vector2d obstacleNormal(const Obstacle& obstacle, const Eigen::Vector2d& /*x*/) {
+Eigen::VectorXd obstacleNormal(const Obstacle& obstacle, const Eigen::VectorXd& /*x*/) {
   return std::visit([](const PlaneObstacle& plane) { return plane.normal; }, obstacle);
 }
 
-double obstacleGap(const Obstacle& obstacle, const Eigen::Vector2d& x) {
+double obstacleGap(const Obstacle& obstacle, const Eigen::VectorXd& x) {
   return std::visit([&](const PlaneObstacle& plane) { return (x - plane.point).dot(plane.normal); }, obstacle);
 }
 

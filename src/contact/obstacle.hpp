@@ -1,6 +1,7 @@
 #pragma once
-// Rigid obstacles. Only a plane for now; the variant keeps room for a circle (or any shape that
-// can give a signed distance and an outward normal at a point).
+// Rigid obstacles. Only a plane for now; the variant keeps room for a circle or a sphere (or any
+// shape that can give a signed distance and an outward normal at a point). Points and normals have
+// the scene's dimension (2 or 3 entries).
 #include <Eigen/Core>
 #include <variant>
 
@@ -8,10 +9,11 @@
 
 namespace stc {
 
-/// The half-plane below the line through `point` with unit `normal` pointing into the body.
+/// The half-space below the plane (a line in 2D) through `point` with unit `normal` pointing into
+/// the body.
 struct PlaneObstacle {
-  Eigen::Vector2d point;
-  Eigen::Vector2d normal;
+  Eigen::VectorXd point;
+  Eigen::VectorXd normal;
 };
 
 using Obstacle = std::variant<PlaneObstacle>;
@@ -19,9 +21,9 @@ using Obstacle = std::variant<PlaneObstacle>;
 Obstacle makeObstacle(const ObstacleSpec& spec);
 
 /// Unit normal n at x, pointing from the obstacle into the body (docs/method.md §1).
-Eigen::Vector2d obstacleNormal(const Obstacle& obstacle, const Eigen::Vector2d& x);
+Eigen::VectorXd obstacleNormal(const Obstacle& obstacle, const Eigen::VectorXd& x);
 
 /// Signed initial gap g0 = (x − x_obs)·n (negative: x is inside the obstacle).
-double obstacleGap(const Obstacle& obstacle, const Eigen::Vector2d& x);
+double obstacleGap(const Obstacle& obstacle, const Eigen::VectorXd& x);
 
 }  // namespace stc

@@ -19,12 +19,13 @@ py::dict checkSizes(const SceneHandle& handle) {
   py::dict sizes;
   sizes["scene"] = scene.name;
   sizes["source"] = handle.source().string();
-  sizes["plane"] = p.plane == PlaneModel::Strain ? "strain" : "stress";
+  sizes["dimension"] = p.dimension;
+  sizes["plane"] = p.dimension == 3 ? "none" : p.plane == PlaneModel::Strain ? "strain" : "stress";
   sizes["young"] = p.material.young;
   sizes["poisson"] = p.material.poisson;
   sizes["friction"] = c.friction;
-  sizes["nodes"] = p.mesh.numNodes();
-  sizes["elements"] = p.mesh.numElements();
+  sizes["nodes"] = p.numNodes();
+  sizes["elements"] = p.numElements();
   sizes["dofs"] = p.numDofs();
   sizes["free_dofs"] = p.numFreeDofs();
   sizes["prescribed_dofs"] = p.numDofs() - p.numFreeDofs();
@@ -45,13 +46,14 @@ py::dict checkSizes(const SceneHandle& handle) {
   return sizes;
 }
 
-/// The mesh and the contact interface as arrays: nodes (N × 2), triangles (E × 3, counter-clockwise
-/// node ids), contact_nodes (n_C mesh node ids, in the order of the interface rows), times (m).
+/// The mesh and the contact interface as arrays: nodes (N × d), triangles (E × 3, counter-clockwise
+/// node ids; 2D) or tetrahedra (E × 4, positive volume; 3D), contact_nodes (n_C mesh node ids, in the order of the interface rows), times (m).
 py::dict meshArrays(const SceneHandle& handle) {
   const std::shared_ptr<const Problem> problem = handle.problem();
   py::dict mesh;
-  mesh["nodes"] = movedToNumpy(Eigen::MatrixXd(problem->mesh.nodes.transpose()));
-  mesh["triangles"] = movedToNumpy(Eigen::MatrixXi(problem->mesh.triangles.transpose()));
+  mesh["nodes"] = movedToNumpy(Eigen::MatrixXd(problem->nodePositions().transpose()));
+  if (problem->dimension == 3) mesh["tetrahedra"] = movedToNumpy(Eigen::MatrixXi(problem->solid.tets.transpose()));
+  else mesh["triangles"] = movedToNumpy(Eigen::MatrixXi(problem->mesh.triangles.transpose()));
   mesh["contact_nodes"] = movedToNumpy(std::vector<int>(problem->contact.nodes));
   mesh["initial_gap"] = movedToNumpy(Eigen::VectorXd(problem->contact.initial_gap));
   mesh["times"] = movedToNumpy(std::vector<double>(problem->times));

@@ -98,6 +98,7 @@ py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
   reactions["t"] = movedToNumpy(std::move(table.t));
   reactions["normal_force"] = movedToNumpy(std::move(table.normal_force));
   reactions["tangential_force"] = movedToNumpy(std::move(table.tangential_force));
+  if (problem.dimension == 3) reactions["tangential_force_2"] = movedToNumpy(std::move(table.tangential_force_2));
   reactions["contact_xmin"] = movedToNumpy(std::move(table.contact_xmin));
   reactions["contact_xmax"] = movedToNumpy(std::move(table.contact_xmax));
   reactions["n_contact"] = movedToNumpy(std::move(table.n_contact));
@@ -111,6 +112,7 @@ py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
 py::dict resultDict(const ProblemPtr& problem, const Scene& scene, SolveResult&& result) {
   py::dict out;
   out["solver"] = scene.solver.name;
+  out["dimension"] = problem->dimension;
   out["summary_json"] = summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION});
   out["history"] = historyArrays(result.summary);
   out["reactions"] = reactionArrays(*problem, result);
@@ -160,13 +162,13 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   return resultDict(problem, scene, std::move(result));
 }
 
-/// Full displacements n × m (dof 2j: u_x of node j, 2j + 1: u_y) rebuilt from the forces.
+/// Full displacements n × m (dof d j: u_x of node j, d j + 1: u_y, d j + 2: u_z in 3D) rebuilt from the forces.
 py::array displacementsFromForces(const ProblemRef& ref, const Eigen::MatrixXd& forces) {
   const ProblemPtr& problem = ref.problem;
-  if (forces.rows() != 2 * problem->contact.size() || forces.cols() != problem->numSteps()) {
+  if (forces.rows() != problem->contact.rows() || forces.cols() != problem->numSteps()) {
     std::ostringstream message;
     message << "forces are " << forces.rows() << " x " << forces.cols() << ", the problem's interface "
-            << 2 * problem->contact.size() << " x " << problem->numSteps();
+            << problem->contact.rows() << " x " << problem->numSteps();
     throw std::invalid_argument(message.str());
   }
   Eigen::MatrixXd u;

@@ -26,13 +26,13 @@ SolveCost costOf(const SolveSummary& summary, double wall_s) {
   return cost;
 }
 
-EndForces endForces(const InterfaceHistory& s) {
+EndForces endForces(const ContactInterface& contact, const InterfaceHistory& s) {
   EndForces forces;
   if (s.lambda.cols() == 0) return forces;
   const Eigen::VectorXd last = s.lambda.col(s.lambda.cols() - 1);
-  for (Eigen::Index i = 0; 2 * i + 1 < last.size(); ++i) {
-    forces.normal += last(2 * i);
-    forces.tangential += last(2 * i + 1);
+  for (int i = 0; i < contact.size(); ++i) {
+    forces.normal += last(contact.normalRow(i));
+    forces.tangential += last(contact.normalRow(i) + 1);
   }
   return forces;
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "src/contact/contact_interface.hpp"
 #include "src/report/run_environment.hpp"
 #include "src/solver/solve_result.hpp"
 
@@ -31,9 +32,9 @@ SolveCost costOf(const SolveSummary& summary, double wall_s);
 /// Total contact forces on the body at the last instant (as reactions.csv's last row).
 struct EndForces {
   double normal = 0.0;      ///< Σ_i λ_n,i (positive in compression)
-  double tangential = 0.0;  ///< Σ_i λ_t,i (along the obstacle's tangent)
+  double tangential = 0.0;  ///< Σ_i λ_t,i (along τ_1, the first tangent of the frame)
 };
-EndForces endForces(const InterfaceHistory& s);
+EndForces endForces(const ContactInterface& contact, const InterfaceHistory& s);
 
 /// How a warm solve began.
 enum class WarmStart {

@@ -17,17 +17,30 @@ struct Scales {
   double v = 0.0, force = 0.0, gap = 0.0;
 };
 
-Scales historyScales(const Problem& problem, const InterfaceHistory& h) {
+Scales historyScales(const ContactInterface& c, const InterfaceHistory& h) {
   Scales s;
-  const int nc = h.numContactNodes();
   s.v = h.v.size() > 0 ? h.v.cwiseAbs().maxCoeff() : 0.0;
   for (int k = 0; k < h.numSteps(); ++k)
-    for (int i = 0; i < nc; ++i) {
-      s.force = std::max(s.force, std::abs(h.lambda(2 * i, k)));
-      s.gap = std::max(s.gap, problem.contact.initial_gap[i] + h.v(2 * i, k));
+    for (int i = 0; i < c.size(); ++i) {
+      s.force = std::max(s.force, std::abs(h.lambda(c.normalRow(i), k)));
+      s.gap = std::max(s.gap, c.initial_gap[i] + h.v(c.normalRow(i), k));
     }
   return s;
 }
+
+// Node i at instant k: normal force, gap, tangential force and slip increment (vectors of d − 1).
+struct NodeInstant {
+  double ln, g;
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2, 1> lt, s;  // at most 2 entries: no allocation
+  NodeInstant(const ContactInterface& c, const InterfaceHistory& h, int i, int k) {
+    const int n = c.normalRow(i), t = n + 1, d = c.dimension - 1;
+    ln = h.lambda(n, k);
+    g = c.initial_gap[i] + h.v(n, k);
+    lt = h.lambda.col(k).segment(t, d);
+    s = h.v.col(k).segment(t, d);
+    if (k > 0) s -= h.v.col(k - 1).segment(t, d);
+  }
+};
 
 }  // namespace
 
@@ -36,21 +49,22 @@ double ContactLawViolation::max() const {
 }
 
 ContactLawViolation checkContactLaw(const Problem& problem, const InterfaceHistory& history) {
-  const Scales sc = historyScales(problem, history);
-  const double mu = problem.contact.friction;
+  const ContactInterface& c = problem.contact;
+  const Scales sc = historyScales(c, history);
+  const double mu = c.friction;
   ContactLawViolation out;
   for (int k = 0; k < history.numSteps(); ++k)
-    for (int i = 0; i < history.numContactNodes(); ++i) {
-      const double ln = history.lambda(2 * i, k), lt = history.lambda(2 * i + 1, k);
-      const double g = problem.contact.initial_gap[i] + history.v(2 * i, k);
-      const double s = history.v(2 * i + 1, k) - (k > 0 ? history.v(2 * i + 1, k - 1) : 0.0);
-      out.penetration = std::max(out.penetration, relative(std::max(-g, 0.0), sc.v));
-      out.negative_pressure = std::max(out.negative_pressure, relative(std::max(-ln, 0.0), sc.force));
-      out.complementarity = std::max(out.complementarity, relative(std::abs(g * ln), sc.gap * sc.force));
-      out.cone = std::max(out.cone, relative(std::max(std::abs(lt) - mu * ln, 0.0), sc.force));
-      const double inside = relative(std::max(mu * ln - std::abs(lt), 0.0), sc.force);
-      out.stick_slip = std::max(out.stick_slip, std::min(relative(std::abs(s), sc.v), inside));
-      out.slip_direction = std::max(out.slip_direction, relative(std::max(lt * s, 0.0), sc.force * sc.v));
+    for (int i = 0; i < c.size(); ++i) {
+      const NodeInstant x(c, history, i, k);
+      const double lt = x.lt.norm(), s = x.s.norm();
+      out.penetration = std::max(out.penetration, relative(std::max(-x.g, 0.0), sc.v));
+      out.negative_pressure = std::max(out.negative_pressure, relative(std::max(-x.ln, 0.0), sc.force));
+      out.complementarity = std::max(out.complementarity, relative(std::abs(x.g * x.ln), sc.gap * sc.force));
+      out.cone = std::max(out.cone, relative(std::max(lt - mu * x.ln, 0.0), sc.force));
+      const double inside = relative(std::max(mu * x.ln - lt, 0.0), sc.force);
+      out.stick_slip = std::max(out.stick_slip, std::min(relative(s, sc.v), inside));
+      // (|λ_t| |s| + λ_t·s) / 2: 0 when the force opposes the slip; max(λ_t s, 0) in 2D.
+      out.slip_direction = std::max(out.slip_direction, relative(0.5 * (lt * s + x.lt.dot(x.s)), sc.force * sc.v));
     }
   return out;
 }

@@ -11,26 +11,26 @@ std::string size(Eigen::Index rows, Eigen::Index cols) { return std::to_string(r
 }  // namespace
 
 bool fitsProblem(const InterfaceHistory& history, const Problem& problem) {
-  const Eigen::Index rows = 2 * problem.contact.size(), cols = problem.numSteps();
+  const Eigen::Index rows = problem.contact.rows(), cols = problem.numSteps();
   return history.v.rows() == rows && history.v.cols() == cols && history.lambda.rows() == rows &&
          history.lambda.cols() == cols;
 }
 
 bool fitsProblem(const Eigen::MatrixXd& directions, const Problem& problem) {
-  return directions.rows() == 2 * problem.contact.size();
+  return directions.rows() == problem.contact.rows();
 }
 
 void requireFits(const InterfaceHistory& start, const Problem& problem) {
   if (fitsProblem(start, problem)) return;
   throw std::invalid_argument("start history is " + size(start.v.rows(), start.v.cols()) + " (v) and " +
                               size(start.lambda.rows(), start.lambda.cols()) + " (λ), the problem's interface " +
-                              size(2 * problem.contact.size(), problem.numSteps()));
+                              size(problem.contact.rows(), problem.numSteps()));
 }
 
 void requireFits(const Eigen::MatrixXd& directions, const Problem& problem) {
   if (fitsProblem(directions, problem)) return;
   throw std::invalid_argument("basis seed has " + std::to_string(directions.rows()) + " rows, the problem's interface " +
-                              std::to_string(2 * problem.contact.size()));
+                              std::to_string(problem.contact.rows()));
 }
 
 }  // namespace stc

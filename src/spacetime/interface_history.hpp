@@ -1,18 +1,22 @@
 #pragma once
-// Space-time interface fields: one column per instant, rows 2i (normal) and 2i + 1 (tangential)
-// of contact node i. These are the only quantities LATIN keeps between iterations (docs/method.md §2).
+// Space-time interface fields: one column per instant; contact node i owns the d rows from d i on
+// (normal, then the d − 1 tangential components; d = ContactInterface::dimension). These are the
+// only quantities LATIN keeps between iterations (docs/method.md §2).
 #include <Eigen/Core>
+
+#include "src/contact/contact_interface.hpp"
 
 namespace stc {
 
 struct InterfaceHistory {
-  Eigen::MatrixXd v;       ///< interface displacements (v_n, v_t), 2n_C × m
-  Eigen::MatrixXd lambda;  ///< contact forces on the body (λ_n, λ_t), 2n_C × m
+  Eigen::MatrixXd v;       ///< interface displacements (v_n, v_t), d n_C × m
+  Eigen::MatrixXd lambda;  ///< contact forces on the body (λ_n, λ_t), d n_C × m
 
-  static InterfaceHistory zeros(int contact_nodes, int steps) {
-    return {Eigen::MatrixXd::Zero(2 * contact_nodes, steps), Eigen::MatrixXd::Zero(2 * contact_nodes, steps)};
+  /// Zero fields for `contact` on `steps` instants.
+  static InterfaceHistory zeros(const ContactInterface& contact, int steps) { return zerosWithRows(contact.rows(), steps); }
+  static InterfaceHistory zerosWithRows(int rows, int steps) {
+    return {Eigen::MatrixXd::Zero(rows, steps), Eigen::MatrixXd::Zero(rows, steps)};
   }
-  int numContactNodes() const { return static_cast<int>(v.rows() / 2); }
   int numSteps() const { return static_cast<int>(v.cols()); }
 };
 

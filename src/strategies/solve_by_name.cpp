@@ -42,7 +42,7 @@ namespace {
 
 InterfaceHistory startOf(const Problem& problem, const StrategyInputs& inputs) {
   if (inputs.start) return *inputs.start;
-  return InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+  return InterfaceHistory::zeros(problem.contact, problem.numSteps());
 }
 
 SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {

@@ -56,7 +56,7 @@ TEST(Fas, EmptyBasisGivesExactlyLatinsIterates) {
   latin.tolerance = 1e-14;
   // LATIN starts from s = 0 with a local stage; FAS's fine level does the same.
   const auto a = stc::fas::solveFas(f.problem, g1, empty, fas, "fas");
-  const auto b = stc::latin::solveLatin(f.problem, g2, stc::InterfaceHistory::zeros(f.problem.contact.size(), f.problem.numSteps()), latin);
+  const auto b = stc::latin::solveLatin(f.problem, g2, stc::InterfaceHistory::zeros(f.problem.contact, f.problem.numSteps()), latin);
   ASSERT_EQ(a.summary.history.size(), b.summary.history.size());
   for (std::size_t i = 0; i < a.summary.history.size(); ++i)
     EXPECT_EQ(a.summary.history[i].indicator, b.summary.history[i].indicator) << "relaxation " << i + 1;

@@ -23,7 +23,7 @@ stc::Problem smallSeed(double kappa = 3.0) {
 TEST(GlobalStage, ResultIsInEquilibriumAndOnTheSearchDirection) {
   const stc::Problem problem = smallSeed();
   stc::latin::GlobalStage global(problem, 7);  // a block size that does not divide m
-  auto hat = stc::InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+  auto hat = stc::InterfaceHistory::zeros(problem.contact, problem.numSteps());
   hat.lambda.setConstant(0.3);
   hat.v.setConstant(-0.002);
   stc::InterfaceHistory s;

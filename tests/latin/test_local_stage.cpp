@@ -16,7 +16,7 @@ namespace {
 stc::InterfaceHistory randomState(const stc::Problem& problem, unsigned seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
-  auto s = stc::InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+  auto s = stc::InterfaceHistory::zeros(problem.contact, problem.numSteps());
   for (Eigen::Index j = 0; j < s.v.size(); ++j) {
     s.v(j) = 0.01 * normal(rng);
     s.lambda(j) = normal(rng);
@@ -60,7 +60,7 @@ TEST_F(LocalStageTest, LeavesAnAdmissibleStateUnchanged) {
 
 TEST_F(LocalStageTest, OpenNodeKeepsNoForce) {
   // Far from the obstacle with a pulling force: the node opens, λ̂ = 0 and v̂ = v − λ/k.
-  auto s = stc::InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+  auto s = stc::InterfaceHistory::zeros(problem.contact, problem.numSteps());
   s.lambda.setConstant(-1.0);
   stc::InterfaceHistory hat;
   stc::latin::localStage(problem.contact, s, hat);
@@ -73,7 +73,7 @@ TEST_F(LocalStageTest, SlipsWhenTrialLeavesConeAndSticksInside) {
   // One node pressed hard (closed) at every instant; a tangential displacement that grows fast
   // slips with λ̂_t = −μ λ̂_n sign(Δv̂_t), one that barely moves sticks.
   const double mu = problem.contact.friction, kt = problem.contact.search_direction[1];
-  auto s = stc::InterfaceHistory::zeros(problem.contact.size(), problem.numSteps());
+  auto s = stc::InterfaceHistory::zeros(problem.contact, problem.numSteps());
   s.v.row(0).setConstant(-problem.contact.initial_gap[0]);  // at the obstacle
   s.lambda.row(0).setConstant(10.0);                          // pressed
   for (int k = 0; k < problem.numSteps(); ++k) s.v(1, k) = 1.0 * k;  // large tangential motion

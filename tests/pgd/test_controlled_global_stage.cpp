@@ -92,7 +92,7 @@ TEST(ControlledGlobalStage, IsTheExactStageWhenTheDirectionsSpanTheRightHandSide
   exact.solve(hat, s_exact);
   stage.observeGap(0.0);  // no error allowed: enrich until w is spanned
   stage.solve(hat, s);
-  EXPECT_LE(stage.projectionError(), 1e-10 * distance(f.problem, s_exact, stc::InterfaceHistory::zeros(31, 41)));
-  EXPECT_LE(distance(f.problem, s, s_exact), 1e-9 * distance(f.problem, s_exact, stc::InterfaceHistory::zeros(31, 41)));
+  EXPECT_LE(stage.projectionError(), 1e-10 * distance(f.problem, s_exact, stc::InterfaceHistory::zeros(f.problem.contact, 41)));
+  EXPECT_LE(distance(f.problem, s, s_exact), 1e-9 * distance(f.problem, s_exact, stc::InterfaceHistory::zeros(f.problem.contact, 41)));
   EXPECT_LE(stage.rank(), 2 * f.problem.contact.size());
 }

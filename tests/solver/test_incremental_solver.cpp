@@ -61,7 +61,7 @@ std::vector<stc::ContactState> states(const Solved& s, int k) {
   const auto& h = s.result.interface;
   const double force = h.lambda.cwiseAbs().maxCoeff(), length = h.v.cwiseAbs().maxCoeff();
   std::vector<stc::ContactState> out;
-  for (int i = 0; i < h.numContactNodes(); ++i)
+  for (int i = 0; i < s.problem.contact.size(); ++i)
     out.push_back(stc::classifyContact(h.lambda(2 * i, k), h.lambda(2 * i + 1, k), slipIncrement(h, i, k),
                                        s.problem.contact.friction, force, length));
   return out;
@@ -141,7 +141,7 @@ TEST(IncrementalSolver, NoContactBeforeTheBodyTravelsTheInitialGapAndContactAfte
     const Eigen::VectorXd gap = s.problem.contact.initial_gap + h.v.col(touch)(Eigen::seq(0, Eigen::last, 2));
     EXPECT_NEAR(gap.minCoeff(), 0.0, 1e-14);
     for (int k = touch + 1; k < steps; ++k)
-      EXPECT_GT(h.lambda.row(2 * (h.numContactNodes() / 2)).coeff(k), 0.0) << "bottom node open at instant " << k;
+      EXPECT_GT(h.lambda.row(2 * (s.problem.contact.size() / 2)).coeff(k), 0.0) << "bottom node open at instant " << k;
   }
 }
 

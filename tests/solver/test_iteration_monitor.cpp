@@ -6,7 +6,7 @@
 #include "src/solver/iteration_monitor.hpp"
 
 namespace {
-stc::InterfaceHistory zeros() { return stc::InterfaceHistory::zeros(1, 2); }
+stc::InterfaceHistory zeros() { return stc::InterfaceHistory::zerosWithRows(2, 2); }
 }  // namespace
 
 // Without an energy the monitor has no error estimate: the indicator stands in for it, so these

@@ -98,7 +98,7 @@ TEST(AprioriBasis, CoarseSpaceIsEnergyOrthonormal) {
   options.modes = 4;
   options.increment_modes = 3;
   stc::fas::AprioriBasisProvider provider(stage, options);
-  stc::InterfaceHistory s, hat = stc::InterfaceHistory::zeros(f.problem.contact.size(), f.problem.numSteps());
+  stc::InterfaceHistory s, hat = stc::InterfaceHistory::zeros(f.problem.contact, f.problem.numSteps());
   for (int cycle = 1; cycle <= 3; ++cycle) {
     stc::InterfaceHistory moved = f.incremental.interface;
     moved.lambda *= cycle / 3.0;  // a moving right-hand side

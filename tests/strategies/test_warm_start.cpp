@@ -120,7 +120,7 @@ TEST(WarmStart, AprioriDirectionsSeedTheNextBasis) {
 
 TEST(WarmStart, AStartOfTheWrongSizeIsRefused) {
   const Value& v = value(0.15);
-  const stc::InterfaceHistory wrong = stc::InterfaceHistory::zeros(v.problem.contact.size() + 1, v.problem.numSteps());
+  const stc::InterfaceHistory wrong = stc::InterfaceHistory::zerosWithRows(v.problem.contact.rows() + 2, v.problem.numSteps());
   const Eigen::MatrixXd wrong_modes = Eigen::MatrixXd::Zero(2 * v.problem.contact.size() + 2, 3);
   for (const std::string& solver : iterativeSolvers()) {
     stc::StrategyInputs inputs;

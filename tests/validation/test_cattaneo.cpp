@@ -67,7 +67,7 @@ StickZone measureStickZone(const Problem& problem, const InterfaceHistory& h, in
   const double sign = r.tangential >= 0.0 ? 1.0 : -1.0;
   const std::vector<double> x = contactX(problem), normal = normalForces(h.lambda, k);
   std::vector<double> deficit;
-  for (int i = 0; i < h.numContactNodes(); ++i) deficit.push_back(mu * h.lambda(2 * i, k) - sign * h.lambda(2 * i + 1, k));
+  for (int i = 0; i < problem.contact.size(); ++i) deficit.push_back(mu * h.lambda(2 * i, k) - sign * h.lambda(2 * i + 1, k));
   const SemicircleFit contact = semicircleFromMoments(x, normal, step);
   const SemicircleFit stick = semicircleFromMoments(x, deficit, step);
   StickZone z;
@@ -76,7 +76,7 @@ StickZone measureStickZone(const Problem& problem, const InterfaceHistory& h, in
   z.shift = (stick.centre - contact.centre) / contact.half_width;
   double closed_length = 0.0, stick_length = 0.0;
   const std::vector<ContactState> states = contactStates(problem, h, k);
-  for (int i = 0; i < h.numContactNodes(); ++i) {
+  for (int i = 0; i < problem.contact.size(); ++i) {
     if (states[i] != ContactState::Open) closed_length += problem.contact.tributary[i];
     if (states[i] != ContactState::Stick) continue;
     stick_length += problem.contact.tributary[i];

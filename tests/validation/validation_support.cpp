@@ -47,7 +47,7 @@ double slipIncrement(const InterfaceHistory& h, int i, int k) {
 std::vector<ContactState> contactStates(const Problem& problem, const InterfaceHistory& h, int k) {
   const double force = h.lambda.cwiseAbs().maxCoeff(), length = h.v.cwiseAbs().maxCoeff();
   std::vector<ContactState> states;
-  for (int i = 0; i < h.numContactNodes(); ++i)
+  for (int i = 0; i < problem.contact.size(); ++i)
     states.push_back(classifyContact(h.lambda(2 * i, k), h.lambda(2 * i + 1, k), slipIncrement(h, i, k),
                                      problem.contact.friction, force, length));
   return states;

@@ -12,19 +12,24 @@ import json
 class SolveResult:
     """One solve: the interface histories, the tables of reactions.csv and history.csv, summary.json.
 
-    Interface arrays (the library's layout, NumPy order 'F': column k is instant t_k):
-      interface_forces         2n_C x m   rows 2i: normal force of contact node i, 2i + 1: tangential
-      interface_displacements  2n_C x m   the same rows for the interface displacements v_n, v_t
+    Interface arrays (the library's layout, NumPy order 'F': column k is instant t_k; d = dimension,
+    2 or 3):
+      interface_forces         d n_C x m  rows d i: normal force of contact node i, d i + 1: tangential
+                                          (along tau_1), d i + 2 (3D): along tau_2
+      interface_displacements  d n_C x m  the same rows for the interface displacements v_n, v_t
       normal_forces, tangential_forces, normal_displacements, tangential_displacements
-                               n_C x m    views of the rows above (no copy)
+                               n_C x m    views of the rows above (no copy); tangential: along tau_1
+      tangential_forces_2, tangential_displacements_2
+                               n_C x m    3D only: along tau_2
     Node i of the interface is mesh node contact_nodes[i].
     A priori strategies (fas-apriori, latin-pgd; no columns for the others):
       spatial_modes            n_free x r  energy modes of the separated expansion, by energy
-      interface_directions     2n_C x p    the separated global stage's directions (warm starts)
+      interface_directions     d n_C x p   the separated global stage's directions (warm starts)
     """
 
     def __init__(self, data):
         self.solver = data["solver"]
+        self.dimension = data["dimension"]
         self.summary = json.loads(data["summary_json"])
         self.history = data["history"]
         self.reactions = data["reactions"]
@@ -39,22 +44,37 @@ class SolveResult:
     @property
     def normal_forces(self):
         """lambda_n, n_C x m (a view of interface_forces)."""
-        return self.interface_forces[0::2]
+        return self.interface_forces[0::self.dimension]
 
     @property
     def tangential_forces(self):
         """lambda_t, n_C x m (a view of interface_forces)."""
-        return self.interface_forces[1::2]
+        return self.interface_forces[1::self.dimension]
 
     @property
     def normal_displacements(self):
         """v_n, n_C x m (a view of interface_displacements)."""
-        return self.interface_displacements[0::2]
+        return self.interface_displacements[0::self.dimension]
 
     @property
     def tangential_displacements(self):
         """v_t, n_C x m (a view of interface_displacements)."""
-        return self.interface_displacements[1::2]
+        return self.interface_displacements[1::self.dimension]
+
+    @property
+    def tangential_forces_2(self):
+        """3D: lambda_t along tau_2, n_C x m (a view of interface_forces)."""
+        return self._second_tangent(self.interface_forces)
+
+    @property
+    def tangential_displacements_2(self):
+        """3D: v_t along tau_2, n_C x m (a view of interface_displacements)."""
+        return self._second_tangent(self.interface_displacements)
+
+    def _second_tangent(self, rows):
+        if self.dimension != 3:
+            raise ValueError("the second tangential component exists in 3D scenes only")
+        return rows[2::3]
 
     @property
     def termination(self):
@@ -76,7 +96,8 @@ class SolveResult:
 
     def displacement_fields(self):
         """The full displacements n_dofs x m, rebuilt from the interface forces with one factorisation
-        of K_ff: row 2j is u_x of mesh node j, row 2j + 1 its u_y; column k is instant t_k."""
+        of K_ff: row d j is u_x of mesh node j, row d j + 1 its u_y (d j + 2: u_z in 3D); column k is
+        instant t_k."""
         return self.problem.displacements(self.interface_forces)
 
     def __repr__(self):
