@@ -12,13 +12,15 @@ int runCheck(const CheckArgs& args) {
   const Problem p = buildProblem(scene);
   const auto& c = p.contact;
   std::cout << "scene            " << scene.name << " (" << args.scene << ")\n"
-            << "model            plane " << (p.plane == PlaneModel::Strain ? "strain" : "stress")
+            << "model            "
+            << (p.dimension == 3 ? "3D, P1 tetrahedra" : p.plane == PlaneModel::Strain ? "plane strain" : "plane stress")
             << ", E = " << p.material.young << ", nu = " << p.material.poisson << ", mu = " << c.friction << "\n"
-            << "nodes            " << p.mesh.numNodes() << "\n"
-            << "elements         " << p.mesh.numElements() << "\n"
+            << "nodes            " << p.numNodes() << "\n"
+            << "elements         " << p.numElements() << "\n"
             << "dofs             " << p.numDofs() << " (" << p.numFreeDofs() << " free, "
             << p.numDofs() - p.numFreeDofs() << " prescribed)\n"
-            << "contact nodes    " << c.size() << " on boundary '" << scene.contact.boundary << "'\n"
+            << "contact nodes    " << c.size() << " on boundary '" << scene.contact.boundary << "' ("
+            << c.rows() << " interface unknowns per field and instant)\n"
             << "steps            " << p.numSteps() << " instants on [" << p.times.front() << ", " << p.times.back()
             << "]\n"
             << "initial gap      min " << c.initial_gap.minCoeff() << ", max " << c.initial_gap.maxCoeff() << "\n"

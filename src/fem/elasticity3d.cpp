@@ -1,6 +1,7 @@
 #include "src/fem/elasticity3d.hpp"
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <vector>
 
 namespace stc {
@@ -72,6 +73,21 @@ Eigen::SparseMatrix<double> assembleStiffness(const TetMesh& mesh, const Eigen::
   Eigen::SparseMatrix<double> K(mesh.numDofs(), mesh.numDofs());
   K.setFromTriplets(triplets.begin(), triplets.end());
   return K;
+}
+
+Eigen::Matrix<double, 7, Eigen::Dynamic> elementStresses(const TetMesh& mesh, const MaterialSpec& material,
+                                                          const Eigen::VectorXd& u) {
+  const Eigen::Matrix<double, 6, 6> D = hookeMatrix3d(material);
+  Eigen::Matrix<double, 7, Eigen::Dynamic> out(7, mesh.numElements());
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    Eigen::Matrix<double, 12, 1> ue;
+    for (int a = 0; a < 4; ++a) ue.segment<3>(3 * a) = u.segment<3>(3 * mesh.tets(a, e));
+    const Eigen::Matrix<double, 6, 1> s = D * (strainDisplacement(mesh, e) * ue);
+    const double deviatoric = 0.5 * ((s(0) - s(1)) * (s(0) - s(1)) + (s(1) - s(2)) * (s(1) - s(2)) +
+                                     (s(2) - s(0)) * (s(2) - s(0)));
+    out.col(e) << s, std::sqrt(deviatoric + 3.0 * s.tail<3>().squaredNorm());
+  }
+  return out;
 }
 
 }  // namespace stc

@@ -21,4 +21,9 @@ Eigen::Matrix<double, 6, 12> strainDisplacement(const TetMesh& mesh, int e);
 /// Global stiffness K = Σ_e V_e B_eᵀ D B_e (3n × 3n, symmetric positive semi-definite, unconstrained).
 Eigen::SparseMatrix<double> assembleStiffness(const TetMesh& mesh, const Eigen::Matrix<double, 6, 6>& hooke);
 
+/// Per-element stresses of one displacement field u (size 3n): rows σ_xx, σ_yy, σ_zz, σ_yz, σ_xz,
+/// σ_xy, von Mises √(½[(σ_xx−σ_yy)² + (σ_yy−σ_zz)² + (σ_zz−σ_xx)²] + 3(σ_yz² + σ_xz² + σ_xy²)).
+Eigen::Matrix<double, 7, Eigen::Dynamic> elementStresses(const TetMesh& mesh, const MaterialSpec& material,
+                                                          const Eigen::VectorXd& u);
+
 }  // namespace stc

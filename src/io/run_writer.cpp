@@ -7,9 +7,11 @@
 #include "src/contact/contact_state_table.hpp"
 #include "src/core/threads.hpp"
 #include "src/fem/elasticity.hpp"
+#include "src/fem/elasticity3d.hpp"
 #include "src/io/atomic_file.hpp"
 #include "src/io/contact_tables.hpp"
 #include "src/io/json_writer.hpp"
+#include "src/io/output_error.hpp"
 #include "src/io/vtu_writer.hpp"
 #include "src/solver/condensed_interface.hpp"
 
@@ -29,18 +31,36 @@ std::string frameName(int k) {
   return name;
 }
 
-// Nodal contact force (λ_n n + λ_t τ) and state code (−1: not a contact node, 0 open, 1 stick, 2 slip).
+// Nodal contact force (λ_n n + Σ_a λ_{t,a} τ_a) and state code (−1: not a contact node, 0 open,
+// 1 stick, 2 slip).
 void contactFields(const Problem& problem, const SolveResult& result, int k, Eigen::MatrixXd& force,
                    Eigen::MatrixXd& state) {
   const auto& c = problem.contact;
+  const int d = c.dimension;
   const ContactStateTable states(problem.contact, result.admissible());
-  force = Eigen::MatrixXd::Zero(2, problem.mesh.numNodes());
-  state = Eigen::MatrixXd::Constant(1, problem.mesh.numNodes(), -1.0);
+  force = Eigen::MatrixXd::Zero(d, problem.numNodes());
+  state = Eigen::MatrixXd::Constant(1, problem.numNodes(), -1.0);
   for (int i = 0; i < c.size(); ++i) {
     const int node = c.nodes[i];
-    const double ln = result.interface.lambda(2 * i, k), lt = result.interface.lambda(2 * i + 1, k);
-    force.col(node) = ln * c.normals.col(i) + lt * c.tangents.col(i);
+    const Eigen::VectorXd l = result.interface.lambda.col(k).segment(c.normalRow(i), d);
+    force.col(node) = l[0] * c.normals.col(i) + c.tangents.middleCols(static_cast<Eigen::Index>(d - 1) * i, d - 1) * l.tail(d - 1);
     state(0, node) = static_cast<double>(states.state(i, k));
+  }
+}
+
+// One VTU frame: displacement, contact force and state on the nodes; stress and von Mises on the
+// elements (σ_xx, σ_yy, σ_xy in 2D; the six components xx, yy, zz, yz, xz, xy in 3D).
+void writeFrame(std::ostream& out, const Problem& problem, const Eigen::VectorXd& u, const Eigen::MatrixXd& force,
+                const Eigen::MatrixXd& state) {
+  const Eigen::MatrixXd displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), problem.dimension, problem.numNodes());
+  const std::vector<PointField> nodal{{"displacement", displacement}, {"contact_force", force}, {"contact_state", state}};
+  if (problem.dimension == 3) {
+    const auto stress = elementStresses(problem.solid, problem.material, u);
+    (void)stress;
+    throw OutputError("VTU output of 3D scenes is not written yet: set output.vtu = false");
+  } else {
+    const auto stress = elementStresses(problem.mesh, problem.material, problem.plane, u);
+    writeVtu(out, problem.mesh, nodal, {{"stress", stress.topRows(3)}, {"von_mises", stress.bottomRows(1)}});
   }
 }
 
@@ -91,12 +111,8 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
     const Eigen::VectorXd u = problem.fullDisplacement(factor.solve(rhs), k);
     Eigen::MatrixXd force, state;
     contactFields(problem, result, k, force, state);
-    const auto stress = elementStresses(problem.mesh, problem.material, problem.plane, u);
-    const Eigen::MatrixXd displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), 2, problem.mesh.numNodes());
     AtomicFile file(dir / frameName(k));
-    writeVtu(file.stream(), problem.mesh,
-             {{"displacement", displacement}, {"contact_force", force}, {"contact_state", state}},
-             {{"stress", stress.topRows(3)}, {"von_mises", stress.bottomRows(1)}});
+    writeFrame(file.stream(), problem, u, force, state);
     file.commit();
     frames.emplace_back(problem.times[k], frameName(k));
   }

@@ -5,15 +5,18 @@
 
 #include "src/core/input_error.hpp"
 #include "src/fem/elasticity.hpp"
+#include "src/fem/elasticity3d.hpp"
 #include "src/fem/load_history.hpp"
+#include "src/mesh/facet_measure.hpp"
 #include "src/mesh/gmsh_reader.hpp"
+#include "src/mesh/half_ball.hpp"
 #include "src/mesh/half_disc.hpp"
 
 namespace stc {
 namespace {
 
-int componentIndex(Component c) { return c == Component::X ? 0 : 1; }
-const char* componentName(Component c) { return c == Component::X ? "x" : "y"; }
+int componentIndex(Component c) { return c == Component::X ? 0 : c == Component::Y ? 1 : 2; }
+const char* componentName(Component c) { return c == Component::X ? "x" : c == Component::Y ? "y" : "z"; }
 
 std::vector<double> uniformGrid(const TimeSpec& time) {
   std::vector<double> t(time.steps);
@@ -22,12 +25,14 @@ std::vector<double> uniformGrid(const TimeSpec& time) {
 }
 
 // Marks the dofs of every [[dirichlet]] entry; returns, per dof, the entry that prescribes it (−1: free).
-std::vector<int> prescribedBy(const Mesh& mesh, const std::vector<DirichletSpec>& dirichlet) {
+template <class MeshT>
+std::vector<int> prescribedBy(const MeshT& mesh, const std::vector<DirichletSpec>& dirichlet) {
+  const int dim = static_cast<int>(mesh.nodes.rows());
   std::vector<int> owner(mesh.numDofs(), -1);
   for (std::size_t j = 0; j < dirichlet.size(); ++j) {
     const auto& spec = dirichlet[j];
     for (int node : mesh.group(spec.boundary).nodes) {
-      const int dof = 2 * node + componentIndex(spec.component);
+      const int dof = dim * node + componentIndex(spec.component);
       if (owner[dof] >= 0) {
         std::ostringstream msg;
         msg << "dirichlet[" << j << "]: component " << componentName(spec.component) << " of node " << node
@@ -40,24 +45,34 @@ std::vector<int> prescribedBy(const Mesh& mesh, const std::vector<DirichletSpec>
   return owner;
 }
 
-// Spreads a total force over the boundary's nodes in proportion to their tributary edge length.
-Eigen::VectorXd edgeLoadPattern(const Mesh& mesh, const LoadSpec& spec) {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.numDofs());
-  const auto& group = mesh.group(spec.boundary);
+// Spreads a total force over the boundary's nodes in proportion to their tributary measure
+// (an equal share of each edge's length in 2D, of each triangle's area in 3D).
+template <class Facet>
+Eigen::VectorXd facetLoadPattern(const Eigen::MatrixXd& x, const std::vector<Facet>& facets, const LoadSpec& spec) {
+  const int dim = static_cast<int>(x.rows());
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(dim * x.cols());
+  const double share = 1.0 / static_cast<double>(std::tuple_size_v<Facet>);
   double total = 0.0;
-  for (const auto& edge : group.edges) {
-    const double length = (mesh.nodes.col(edge[0]) - mesh.nodes.col(edge[1])).norm();
-    total += length;
-    for (int node : edge) f[2 * node + componentIndex(spec.component)] += 0.5 * length;
+  for (const auto& facet : facets) {
+    const double measure = facetMeasure(x, facet);
+    total += measure;
+    for (int node : facet) f[dim * node + componentIndex(spec.component)] += share * measure;
   }
-  if (!(total > 0.0)) throw InputError("load on boundary '" + spec.boundary + "': the boundary has no edge");
+  if (!(total > 0.0))
+    throw InputError("load on boundary '" + spec.boundary + "': the boundary has no " + (dim == 3 ? "face" : "edge"));
   return f / total;
 }
 
-double defaultLengthScale(const Scene& scene, const Mesh& mesh) {
+Eigen::VectorXd loadPattern(const Problem& p, const LoadSpec& spec) {
+  if (p.dimension == 3) return facetLoadPattern(p.solid.nodes, p.solid.group(spec.boundary).triangles, spec);
+  return facetLoadPattern(p.mesh.nodes, p.mesh.group(spec.boundary).edges, spec);
+}
+
+double defaultLengthScale(const Scene& scene, const Problem& p) {
   if (scene.contact.length_scale) return *scene.contact.length_scale;
   if (!scene.mesh.generator.empty()) return scene.mesh.radius;
-  return (mesh.nodes.rowwise().maxCoeff() - mesh.nodes.rowwise().minCoeff()).maxCoeff();
+  const Eigen::MatrixXd x = p.nodePositions();
+  return (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).maxCoeff();
 }
 
 void addLoads(Problem& p, const Scene& scene, const std::vector<int>& owner) {
@@ -75,7 +90,7 @@ void addLoads(Problem& p, const Scene& scene, const std::vector<int>& owner) {
     p.loads.push_back({restrict(force), pattern, LoadHistory(scene.dirichlet[j].history).sample(p.times)});
   }
   for (const auto& spec : scene.loads)
-    p.loads.push_back({restrict(edgeLoadPattern(p.mesh, spec)), Eigen::VectorXd::Zero(p.numDofs()),
+    p.loads.push_back({restrict(loadPattern(p, spec)), Eigen::VectorXd::Zero(p.numDofs()),
                        LoadHistory(spec.history).sample(p.times)});
 }
 
@@ -95,23 +110,43 @@ auto withContext(const Scene& scene, const std::string& key, Step&& step) {
 Mesh buildMesh(const MeshSpec& spec) {
   if (!spec.file.empty()) return readGmsh(spec.file);
   if (spec.generator == "half_disc") return makeHalfDisc({spec.radius, spec.arc_nodes, spec.grading});
-  throw InputError("mesh generator '" + spec.generator + "' is unknown (known: half_disc)");
+  throw InputError("mesh generator '" + spec.generator + "' is unknown (known in 2D: half_disc)");
+}
+
+TetMesh buildSolidMesh(const MeshSpec& spec) {
+  if (!spec.file.empty()) throw InputError("3D mesh files are not read yet: use generator = \"half_ball\"");
+  if (spec.generator == "half_ball") return makeHalfBall({spec.radius, spec.divisions, spec.grading});
+  throw InputError("mesh generator '" + spec.generator + "' is unknown (known in 3D: half_ball)");
 }
 
 Problem buildProblem(const Scene& scene) {
   Problem p;
   p.name = scene.name;
-  p.mesh = withContext(scene, scene.mesh.file.empty() ? "mesh.generator" : "", [&] { return buildMesh(scene.mesh); });
+  p.dimension = scene.dimension;
+  if (scene.obstacle.point.size() != p.dimension || scene.obstacle.normal.size() != p.dimension)
+    withContext(scene, "obstacle", [&] {
+      throw InputError("point and normal must have " + std::to_string(p.dimension) + " entries in a " +
+                       std::to_string(p.dimension) + "D scene");
+    });
+  const std::string mesh_key = scene.mesh.file.empty() ? "mesh.generator" : "";
+  if (p.dimension == 3) p.solid = withContext(scene, mesh_key, [&] { return buildSolidMesh(scene.mesh); });
+  else p.mesh = withContext(scene, mesh_key, [&] { return buildMesh(scene.mesh); });
   p.material = scene.material;
   p.plane = scene.plane;
   p.times = uniformGrid(scene.time);
-  p.stiffness = assembleStiffness(p.mesh, hookeMatrix(p.material, p.plane));
-
+  p.stiffness = p.dimension == 3 ? assembleStiffness(p.solid, hookeMatrix3d(p.material))
+                                 : assembleStiffness(p.mesh, hookeMatrix(p.material, p.plane));
+  const auto group = [&](const std::string& name) {
+    if (p.dimension == 3) p.solid.group(name);
+    else p.mesh.group(name);
+  };
   for (std::size_t j = 0; j < scene.dirichlet.size(); ++j)  // name the entry whose boundary is missing
-    withContext(scene, "dirichlet[" + std::to_string(j) + "].boundary", [&] { p.mesh.group(scene.dirichlet[j].boundary); });
+    withContext(scene, "dirichlet[" + std::to_string(j) + "].boundary", [&] { group(scene.dirichlet[j].boundary); });
   for (std::size_t j = 0; j < scene.loads.size(); ++j)
-    withContext(scene, "load[" + std::to_string(j) + "].boundary", [&] { p.mesh.group(scene.loads[j].boundary); });
-  const std::vector<int> owner = withContext(scene, "dirichlet", [&] { return prescribedBy(p.mesh, scene.dirichlet); });
+    withContext(scene, "load[" + std::to_string(j) + "].boundary", [&] { group(scene.loads[j].boundary); });
+  const std::vector<int> owner = withContext(scene, "dirichlet", [&] {
+    return p.dimension == 3 ? prescribedBy(p.solid, scene.dirichlet) : prescribedBy(p.mesh, scene.dirichlet);
+  });
   p.free_index.assign(p.numDofs(), -1);
   for (int dof = 0; dof < p.numDofs(); ++dof)
     if (owner[dof] < 0) {
@@ -128,12 +163,14 @@ Problem buildProblem(const Scene& scene) {
   p.stiffness_free.setFromTriplets(triplets.begin(), triplets.end());
 
   withContext(scene, "load", [&] { addLoads(p, scene, owner); });
-  withContext(scene, "contact.boundary", [&] { return p.mesh.group(scene.contact.boundary); });
+  withContext(scene, "contact.boundary", [&] { group(scene.contact.boundary); });
   p.contact = withContext(scene, "", [&] {
-    return buildContactInterface(p.mesh, scene.contact.boundary, makeObstacle(scene.obstacle), p.free_index,
-                                 scene.contact.friction);
+    const Obstacle obstacle = makeObstacle(scene.obstacle);
+    return p.dimension == 3
+               ? buildContactInterface(p.solid, scene.contact.boundary, obstacle, p.free_index, scene.contact.friction)
+               : buildContactInterface(p.mesh, scene.contact.boundary, obstacle, p.free_index, scene.contact.friction);
   });
-  p.length_scale = defaultLengthScale(scene, p.mesh);
+  p.length_scale = defaultLengthScale(scene, p);
   setSearchDirection(p.contact, scene.solver.search_scale, p.material.young, p.length_scale);
   return p;
 }

@@ -8,6 +8,7 @@
 
 #include "src/contact/contact_interface.hpp"
 #include "src/mesh/mesh.hpp"
+#include "src/mesh/tet_mesh.hpp"
 #include "src/scene/scene.hpp"
 
 namespace stc {
@@ -24,9 +25,11 @@ struct SeparatedLoad {
 
 struct Problem {
   std::string name;
-  Mesh mesh;
+  int dimension = 2;                          ///< 2: `mesh` holds the body; 3: `solid` does
+  Mesh mesh;                                  ///< the plane body (dimension 2), empty in 3D
+  TetMesh solid;                              ///< the body (dimension 3), empty in 2D
   MaterialSpec material;
-  PlaneModel plane = PlaneModel::Strain;
+  PlaneModel plane = PlaneModel::Strain;      ///< 2D only
   std::vector<double> times;                  ///< t_0 … t_{m−1}
   Eigen::SparseMatrix<double> stiffness;      ///< full, unconstrained K (n × n), for energies
   Eigen::SparseMatrix<double> stiffness_free; ///< K_ff (n_free × n_free)
@@ -36,7 +39,11 @@ struct Problem {
   ContactInterface contact;
   double length_scale = 1.0;                  ///< L of the search direction
 
-  int numDofs() const { return mesh.numDofs(); }
+  int numNodes() const { return dimension == 3 ? solid.numNodes() : mesh.numNodes(); }
+  int numElements() const { return dimension == 3 ? solid.numElements() : mesh.numElements(); }
+  int numDofs() const { return dimension * numNodes(); }
+  /// Node coordinates, d × numNodes().
+  Eigen::MatrixXd nodePositions() const { return dimension == 3 ? Eigen::MatrixXd(solid.nodes) : Eigen::MatrixXd(mesh.nodes); }
   int numFreeDofs() const { return static_cast<int>(free_dofs.size()); }
   int numSteps() const { return static_cast<int>(times.size()); }
 
@@ -48,12 +55,14 @@ struct Problem {
   Eigen::VectorXd fullDisplacement(const Eigen::VectorXd& u_free, int k) const;
 };
 
-/// Builds the mesh, assembles K, eliminates Dirichlet dofs, samples the histories and sets up the
+/// Builds the mesh (triangles or tetrahedra, by scene.dimension), assembles K, eliminates Dirichlet dofs, samples the histories and sets up the
 /// contact interface with k = κ E ℓ_i / L. Throws InputError on inconsistent input (a boundary that
 /// the mesh lacks, a dof prescribed twice, initial penetration, a contact node half prescribed).
 Problem buildProblem(const Scene& scene);
 
-/// The scene's mesh: built-in generator or Gmsh file.
+/// The scene's 2D mesh: built-in generator or Gmsh file.
 Mesh buildMesh(const MeshSpec& spec);
+/// The scene's 3D mesh: built-in generator (half_ball).
+TetMesh buildSolidMesh(const MeshSpec& spec);
 
 }  // namespace stc

@@ -12,15 +12,17 @@
 namespace stc {
 
 enum class PlaneModel { Strain, Stress };
-enum class Component { X, Y };
+enum class Component { X, Y, Z };  ///< Z only in a 3D scene
 
-/// [mesh]: either the built-in generator or a Gmsh 4.1 file.
+/// [mesh]: either a built-in generator or a Gmsh 4.1 file.
 struct MeshSpec {
-  std::string generator;              ///< "half_disc", or empty when `file` is given
+  std::string generator;              ///< "half_disc" (2D), "half_ball" (3D), or empty when `file` is given
   std::filesystem::path file;         ///< resolved against the scene file's folder
-  double radius = 1.0;                ///< half_disc: radius R (> 0)
+  double radius = 1.0;                ///< half_disc, half_ball: radius R (> 0)
   int arc_nodes = 101;                ///< half_disc: potential contact nodes on the arc (>= 3)
-  double grading = 1.135;             ///< half_disc: growth of the element size per ring inward (1 = uniform)
+  double grading = 1.135;             ///< half_disc: growth of the element size per ring inward (1 = uniform);
+                                      ///< half_ball: grading toward the pole, in [1, 2] (default 1.5)
+  int divisions = 8;                  ///< half_ball: cells along the radius (>= 2; src/mesh/half_ball.hpp)
 };
 
 /// [material]: isotropic linear elasticity.
@@ -31,11 +33,12 @@ struct MaterialSpec {
 
 enum class ObstacleType { Plane };
 
-/// [obstacle]: rigid obstacle. Plane: through `point` with unit `normal` pointing into the body.
+/// [obstacle]: rigid obstacle. Plane: through `point` with unit `normal` pointing into the body,
+/// both with the scene's dimension of entries.
 struct ObstacleSpec {
   ObstacleType type = ObstacleType::Plane;
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();
-  Eigen::Vector2d normal = Eigen::Vector2d(0.0, 1.0);  ///< normalised on reading (must be nonzero)
+  Eigen::VectorXd point = Eigen::VectorXd::Zero(2);
+  Eigen::VectorXd normal = Eigen::VectorXd::Unit(2, 1);  ///< normalised on reading (must be nonzero)
 };
 
 /// [contact]: which boundary may touch the obstacle, with which Coulomb coefficient.
@@ -65,7 +68,8 @@ struct DirichletSpec {
   History history;
 };
 
-/// [[load]]: total force (per unit thickness) on a boundary, spread by edge length.
+/// [[load]]: total force on a boundary (per unit thickness in 2D), spread by edge length (2D) or
+/// face area (3D).
 struct LoadSpec {
   std::string boundary;
   Component component = Component::X;
@@ -108,7 +112,8 @@ struct OutputSpec {
 struct Scene {
   std::string name;
   std::filesystem::path source;  ///< the scene file, for messages and relative paths
-  PlaneModel plane = PlaneModel::Strain;
+  int dimension = 2;             ///< 2 (plane, P1 triangles) or 3 (P1 tetrahedra)
+  PlaneModel plane = PlaneModel::Strain;  ///< 2D only
   MeshSpec mesh;
   MaterialSpec material;
   ObstacleSpec obstacle;

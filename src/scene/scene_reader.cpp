@@ -40,9 +40,11 @@ std::string readKeyword(const TableView& table, std::string_view key,
   return readKeyword(table, key, std::span<const std::string_view>(allowed.begin(), allowed.size()));
 }
 
-/// Reads a Component ("x" or "y").
-Component readComponent(const TableView& table) {
-  return readKeyword(table, "component", {"x", "y"}) == "x" ? Component::X : Component::Y;
+/// Reads a Component: "x" or "y", and "z" in a 3D scene.
+Component readComponent(const TableView& table, int dimension) {
+  const std::string name =
+      dimension == 3 ? readKeyword(table, "component", {"x", "y", "z"}) : readKeyword(table, "component", {"x", "y"});
+  return name == "x" ? Component::X : name == "y" ? Component::Y : Component::Z;
 }
 
 /// Throws "key 'P' = V is out of range: must be RULE" unless `ok`.
@@ -61,15 +63,22 @@ std::string requiredName(const TableView& table, std::string_view key) {
   return name;
 }
 
-/// Two finite numbers [x, y].
-Eigen::Vector2d readVector2(const TableView& table, std::string_view key) {
-  const std::vector<double> xy = table.requiredNumbers(key);
-  if (xy.size() != 2) {
+/// `dimension` finite numbers [x, y] or [x, y, z].
+Eigen::VectorXd readVector(const TableView& table, std::string_view key, int dimension) {
+  const std::vector<double> x = table.requiredNumbers(key);
+  if (static_cast<int>(x.size()) != dimension) {
     const std::string path = table.keyPath(key);
-    table.errors().fail(
-        path, "key '" + path + "' must have 2 entries [x, y], got " + std::to_string(xy.size()));
+    table.errors().fail(path, "key '" + path + "' must have " + std::to_string(dimension) + " entries " +
+                                  (dimension == 3 ? "[x, y, z]" : "[x, y]") + ", got " + std::to_string(x.size()));
   }
-  return {xy[0], xy[1]};
+  return Eigen::Map<const Eigen::VectorXd>(x.data(), dimension);
+}
+
+/// `dimension = 2` (default) or 3.
+int readDimension(const TableView& root) {
+  const int dimension = root.optionalInt("dimension").value_or(2);
+  requireRange(root, "dimension", dimension, dimension == 2 || dimension == 3, "must be 2 or 3");
+  return dimension;
 }
 
 /// The scene name becomes a folder of the default output path, so it must be a plain name.
@@ -82,16 +91,18 @@ std::string readName(const TableView& root) {
   return name;
 }
 
-PlaneModel readModel(const TableView& root) {
+PlaneModel readModel(const TableView& root, int dimension) {
   const auto model = root.optionalTable("model", {"plane"});
   if (!model) return PlaneModel::Strain;
+  if (dimension == 3) root.errors().fail("model", "table [model] (plane strain or stress) applies to 2D scenes only");
   if (!model->has("plane")) return PlaneModel::Strain;
   return readKeyword(*model, "plane", {"strain", "stress"}) == "strain" ? PlaneModel::Strain
                                                                         : PlaneModel::Stress;
 }
 
 void readHalfDisc(const TableView& mesh, MeshSpec& spec) {
-  spec.generator = readKeyword(mesh, "generator", {"half_disc"});
+  if (mesh.has("divisions"))
+    mesh.errors().fail(mesh.keyPath("divisions"), "key 'mesh.divisions' applies to generator = \"half_ball\"");
   spec.radius = mesh.optionalNumber("radius").value_or(spec.radius);
   requireRange(mesh, "radius", spec.radius, spec.radius > 0.0, "must be > 0");
   spec.arc_nodes = mesh.optionalInt("arc_nodes").value_or(spec.arc_nodes);
@@ -101,9 +112,22 @@ void readHalfDisc(const TableView& mesh, MeshSpec& spec) {
                "must be in [1, 4] (1 = uniform)");
 }
 
-MeshSpec readMesh(const TableView& root, const std::filesystem::path& source) {
+// The 3D generator: half-ball of src/mesh/half_ball.hpp.
+void readHalfBall(const TableView& mesh, MeshSpec& spec) {
+  if (mesh.has("arc_nodes"))
+    mesh.errors().fail(mesh.keyPath("arc_nodes"), "key 'mesh.arc_nodes' applies to generator = \"half_disc\"");
+  spec.radius = mesh.optionalNumber("radius").value_or(spec.radius);
+  requireRange(mesh, "radius", spec.radius, spec.radius > 0.0, "must be > 0");
+  spec.divisions = mesh.optionalInt("divisions").value_or(spec.divisions);
+  requireRange(mesh, "divisions", spec.divisions, spec.divisions >= 2, "must be >= 2");
+  spec.grading = mesh.optionalNumber("grading").value_or(1.5);
+  requireRange(mesh, "grading", spec.grading, spec.grading >= 1.0 && spec.grading <= 2.0,
+               "must be in [1, 2] (1 = uniform)");
+}
+
+MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, int dimension) {
   const TableView mesh =
-      root.requiredTable("mesh", {"generator", "file", "radius", "arc_nodes", "grading"});
+      root.requiredTable("mesh", {"generator", "file", "radius", "arc_nodes", "grading", "divisions"});
   const ErrorReporter& errors = mesh.errors();
   const bool hasGenerator = mesh.has("generator");
   if (hasGenerator == mesh.has("file")) {
@@ -113,14 +137,17 @@ MeshSpec readMesh(const TableView& root, const std::filesystem::path& source) {
   }
   MeshSpec spec;
   if (hasGenerator) {
-    readHalfDisc(mesh, spec);
+    spec.generator = dimension == 3 ? readKeyword(mesh, "generator", {"half_ball"})
+                                    : readKeyword(mesh, "generator", {"half_disc"});
+    if (dimension == 3) readHalfBall(mesh, spec);
+    else readHalfDisc(mesh, spec);
     return spec;
   }
-  for (const std::string_view key : {"radius", "arc_nodes", "grading"}) {
+  const char* generator = dimension == 3 ? "half_ball" : "half_disc";
+  for (const std::string_view key : {"radius", "arc_nodes", "grading", "divisions"}) {
     if (mesh.has(key)) {
-      errors.fail(mesh.keyPath(key),
-                  "key '" + mesh.keyPath(key) +
-                      "' applies to generator = \"half_disc\", not to a mesh file");
+      errors.fail(mesh.keyPath(key), "key '" + mesh.keyPath(key) + "' applies to generator = \"" + generator +
+                                         "\", not to a mesh file");
     }
   }
   const std::filesystem::path file = requiredName(mesh, "file");
@@ -139,18 +166,19 @@ MaterialSpec readMaterial(const TableView& root) {
   return spec;
 }
 
-ObstacleSpec readObstacle(const TableView& root) {
+ObstacleSpec readObstacle(const TableView& root, int dimension) {
   const TableView obstacle = root.requiredTable("obstacle", {"type", "point", "normal"});
   ObstacleSpec spec;
   if (obstacle.has("type")) readKeyword(obstacle, "type", {"plane"});
   spec.type = ObstacleType::Plane;
-  spec.point = readVector2(obstacle, "point");
-  const Eigen::Vector2d normal = readVector2(obstacle, "normal");
+  spec.point = readVector(obstacle, "point", dimension);
+  const Eigen::VectorXd normal = readVector(obstacle, "normal", dimension);
   const double length = normal.norm();
   if (!(length > 0.0) || !std::isfinite(length)) {
+    std::string entries;
+    for (double x : normal) entries += (entries.empty() ? "" : ", ") + formatNumber(x);
     obstacle.errors().fail(obstacle.keyPath("normal"),
-                           "key 'obstacle.normal' = [" + formatNumber(normal.x()) + ", " +
-                               formatNumber(normal.y()) + "] must be a nonzero finite vector");
+                           "key 'obstacle.normal' = [" + entries + "] must be a nonzero finite vector");
   }
   spec.normal = normal / length;
   return spec;
@@ -204,7 +232,7 @@ History readHistory(const TableView& entry) {
 
 /// [[dirichlet]] and [[load]]: an array of tables {boundary, component, times, values}.
 template <class Spec>
-std::vector<Spec> readHistories(const TableView& root, std::string_view key) {
+std::vector<Spec> readHistories(const TableView& root, std::string_view key, int dimension) {
   std::vector<Spec> specs;
   const toml::node* node = root.find(key);
   if (node == nullptr) return specs;
@@ -219,7 +247,7 @@ std::vector<Spec> readHistories(const TableView& root, std::string_view key) {
                           root.errors(), {"boundary", "component", "times", "values"});
     Spec spec;
     spec.boundary = requiredName(entry, "boundary");
-    spec.component = readComponent(entry);
+    spec.component = readComponent(entry, dimension);
     spec.history = readHistory(entry);
     specs.push_back(std::move(spec));
   }
@@ -310,19 +338,20 @@ std::string toJson(const toml::table& table) {
 Scene readTable(const toml::table& table, const std::filesystem::path& source,
                 const ErrorReporter& errors) {
   const TableView root(table, "", errors,
-                       {"name", "model", "mesh", "material", "obstacle", "contact", "time",
+                       {"name", "dimension", "model", "mesh", "material", "obstacle", "contact", "time",
                         "dirichlet", "load", "solver", "output"});
   Scene scene;
   scene.source = source;
   scene.name = readName(root);
-  scene.plane = readModel(root);
-  scene.mesh = readMesh(root, source);
+  scene.dimension = readDimension(root);
+  scene.plane = readModel(root, scene.dimension);
+  scene.mesh = readMesh(root, source, scene.dimension);
   scene.material = readMaterial(root);
-  scene.obstacle = readObstacle(root);
+  scene.obstacle = readObstacle(root, scene.dimension);
   scene.contact = readContact(root);
   scene.time = readTime(root);
-  scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet");
-  scene.loads = readHistories<LoadSpec>(root, "load");
+  scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet", scene.dimension);
+  scene.loads = readHistories<LoadSpec>(root, "load", scene.dimension);
   scene.solver = readSolver(root, scene.warnings);
   scene.output = readOutput(root);
   scene.parameters_json = toJson(table);
