@@ -1,5 +1,7 @@
 #include "src/solver/condensed_interface.hpp"
 
+#include "src/solver/lazy_delassus.hpp"
+
 namespace stc {
 
 CondensedInterface CondensedInterface::build(const Problem& problem, const SpdFactor& stiffness_free) {
@@ -8,11 +10,7 @@ CondensedInterface CondensedInterface::build(const Problem& problem, const SpdFa
   const Eigen::MatrixXd Bt = Eigen::MatrixXd(B.transpose());
   c.delassus = B * stiffness_free.solve(Bt);
   c.delassus = 0.5 * (c.delassus + c.delassus.transpose()).eval();  // symmetric to round-off
-  c.free_response = Eigen::MatrixXd::Zero(B.rows(), problem.numSteps());
-  for (const auto& term : problem.loads) {
-    const Eigen::VectorXd w = B * stiffness_free.solve(term.free_force);
-    c.free_response.noalias() += w * Eigen::Map<const Eigen::RowVectorXd>(term.values.data(), problem.numSteps());
-  }
+  c.free_response = freeInterfaceResponse(problem, stiffness_free);
   c.sparse_solves = static_cast<int>(Bt.cols() + problem.loads.size());
   return c;
 }

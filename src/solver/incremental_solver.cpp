@@ -12,12 +12,12 @@
 #include "src/core/input_error.hpp"
 #include "src/linalg/spd_factor.hpp"
 #include "src/solver/condensed_interface.hpp"
+#include "src/solver/cone_newton.hpp"
+#include "src/solver/lazy_delassus.hpp"
+#include "src/solver/newton_instant.hpp"
 
 namespace stc {
 namespace {
-
-constexpr double kArmijo = 1e-4;   // sufficient decrease of ‖F‖₂ along the step
-constexpr int kMaxHalvings = 12;   // smallest step length tried: 2⁻¹²
 
 // What F depends on at instant k besides λ (see the header).
 struct Instant {
@@ -49,7 +49,7 @@ Eigen::VectorXd interfaceDisplacement(const Instant& d, const Eigen::VectorXd& l
 }
 
 // Alart–Curnier residual, node by node (the equations in the header).
-Evaluation evaluate(const Instant& d, const Eigen::VectorXd& lambda) {
+Evaluation evaluatePlane(const Instant& d, const Eigen::VectorXd& lambda) {
   Evaluation e{interfaceDisplacement(d, lambda), Eigen::VectorXd(lambda.size()),
                std::vector<ContactState>(d.nc()), std::vector<double>(d.nc(), 1.0)};
   for (int i = 0; i < d.nc(); ++i) {
@@ -81,7 +81,7 @@ Evaluation evaluate(const Instant& d, const Eigen::VectorXd& lambda) {
 // Δλ_t = σ μ Δλ_n + (σ μ λ_n − λ_t); the rest from the dense system on the closed nodes
 //   W(r, :) Δλ = −g_r (closed normal rows),  W(r, :) Δλ = −s_r (sticking tangential rows).
 // Returns false if the system is singular or produces non-finite numbers.
-bool newtonStep(const Instant& d, const Eigen::VectorXd& lambda, const Evaluation& e, Eigen::VectorXd& step) {
+bool planeNewtonStep(const Instant& d, const Eigen::VectorXd& lambda, const Evaluation& e, Eigen::VectorXd& step) {
   std::vector<int> rows;
   for (int i = 0; i < d.nc(); ++i) {
     if (e.piece[i] == ContactState::Open) continue;
@@ -117,71 +117,18 @@ bool newtonStep(const Instant& d, const Eigen::VectorXd& lambda, const Evaluatio
   return step.allFinite();
 }
 
-struct InstantOutcome {
-  Eigen::VectorXd lambda;
-  Eigen::VectorXd v;
-  double residual = 0.0;  // final ‖F‖∞ / S_k
-  int iterations = 0, halvings = 0, fallbacks = 0;
-  bool converged = false;
-  std::string failure;
+// The plane law at one instant, as the model of solveInstantByNewton (newton_instant.hpp).
+struct PlaneLaw {
+  const Instant& d;
+  Evaluation evaluate(const Eigen::VectorXd& lambda) const { return evaluatePlane(d, lambda); }
+  bool newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eigen::VectorXd& step) const {
+    return planeNewtonStep(d, lambda, e, step);
+  }
+  // S_k = max(‖λ‖∞, max_i ρ_i ‖v_0(:, k)‖∞) (header).
+  double forceScale(const Eigen::VectorXd& lambda) const {
+    return std::max(lambda.lpNorm<Eigen::Infinity>(), d.rho_max * d.v0.lpNorm<Eigen::Infinity>());
+  }
 };
-
-// S_k = max(‖λ‖∞, max_i ρ_i ‖v_0(:, k)‖∞) (header).
-double forceScale(const Instant& d, const Eigen::VectorXd& lambda) {
-  return std::max(lambda.lpNorm<Eigen::Infinity>(), d.rho_max * d.v0.lpNorm<Eigen::Infinity>());
-}
-
-// Backtracking on ‖F‖₂ from λ along `step`; full step when no length decreases it.
-void lineSearch(const Instant& d, const Eigen::VectorXd& step, InstantOutcome& out, Evaluation& e) {
-  const double phi0 = e.F.norm();
-  Evaluation full = evaluate(d, out.lambda + step);
-  double alpha = 1.0;
-  Evaluation trial = full;
-  for (int h = 0; h <= kMaxHalvings; ++h) {
-    if (h > 0) trial = evaluate(d, out.lambda + alpha * step);
-    if (trial.F.norm() <= (1.0 - kArmijo * alpha) * phi0) {
-      out.lambda += alpha * step;
-      e = std::move(trial);
-      out.halvings += h;
-      return;
-    }
-    alpha *= 0.5;
-  }
-  out.lambda += step;
-  e = std::move(full);
-  ++out.fallbacks;
-}
-
-// Semismooth Newton at one instant from λ_{k−1}.
-InstantOutcome solveInstant(const Instant& d, const Eigen::VectorXd& start, const IncrementalOptions& options) {
-  InstantOutcome out;
-  out.lambda = start;
-  Evaluation e = evaluate(d, out.lambda);
-  for (;; ++out.iterations) {
-    const double scale = forceScale(d, out.lambda), r = e.F.lpNorm<Eigen::Infinity>();
-    out.residual = scale > 0.0 ? r / scale : (r > 0.0 ? INFINITY : 0.0);
-    if (!e.F.allFinite() || !std::isfinite(out.residual)) {  // lpNorm's max can skip a NaN
-      out.failure = "non-finite residual";
-      break;
-    }
-    if (r <= options.tolerance * scale) {
-      out.converged = true;
-      break;
-    }
-    if (out.iterations == options.max_newton_iterations) {
-      out.failure = "no convergence";
-      break;
-    }
-    Eigen::VectorXd step;
-    if (!newtonStep(d, out.lambda, e, step)) {
-      out.failure = "singular or non-finite Newton system";
-      break;
-    }
-    lineSearch(d, step, out, e);
-  }
-  out.v = std::move(e.v);
-  return out;
-}
 
 std::string describeFailure(const Problem& problem, int k, const InstantOutcome& o, int newton_total) {
   std::ostringstream msg;
@@ -223,28 +170,27 @@ void IncrementalOptions::validate() const {
   if (!msg.str().empty()) throw InputError(msg.str());
 }
 
-SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& options,
-                             const IterationCallback& callback) {
-  options.validate();
-  const auto start = std::chrono::steady_clock::now();
-  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  const SpdFactor factor(problem.stiffness_free, "the free-dof stiffness K_ff");
-  const CondensedInterface condensed = CondensedInterface::build(problem, factor);
-  const int nc = problem.contact.size(), m = problem.numSteps();
-  const Eigen::VectorXd rho = condensed.delassus.diagonal().cwiseInverse();  // ρ = 1 / diag(W)
+namespace {
 
+using Clock = std::chrono::steady_clock;
+
+// Marches over the instants: `solve_at(k, λ_{k−1}, v_{k−1})` solves instant k (zero fields before
+// k = 0); `sparse_solves()` counts the solves so far. Fills the history, summary and message.
+template <class SolveAt, class SparseSolves>
+SolveResult march(const Problem& problem, const IterationCallback& callback, Clock::time_point start,
+                  SolveAt&& solve_at, SparseSolves&& sparse_solves) {
+  const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  const int m = problem.numSteps();
   SolveResult result;
-  result.interface = InterfaceHistory::zeros(nc, m);
+  result.interface = InterfaceHistory::zeros(problem.contact, m);
   SolveSummary& summary = result.summary;
   summary.solver = "incremental";
   summary.termination = Termination::Converged;
-  Instant d{condensed.delassus, Eigen::VectorXd(), problem.contact.initial_gap, Eigen::VectorXd::Zero(nc), rho,
-            rho.maxCoeff(), problem.contact.friction};
-  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(2 * nc);  // λ_{k−1}, the starting point at k
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(problem.contact.rows());  // λ_{k−1}, the starting point at k
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(problem.contact.rows());       // v_{k−1}
   NewtonTotals totals;
   for (int k = 0; k < m; ++k) {
-    d.v0 = condensed.free_response.col(k);
-    const InstantOutcome o = solveInstant(d, lambda, options);
+    const InstantOutcome o = solve_at(k, lambda, v);
     totals.add(o);
     if (!o.converged) {
       summary.termination = Termination::NumericalIssue;
@@ -252,10 +198,10 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
       break;
     }
     lambda = o.lambda;
+    v = o.v;
     result.interface.lambda.col(k) = o.lambda;
     result.interface.v.col(k) = o.v;
-    for (int i = 0; i < nc; ++i) d.vt_prev[i] = o.v[2 * i + 1];
-    summary.history.push_back({k + 1, 0, o.residual, 0.0, std::nullopt, 0, condensed.sparse_solves, elapsed()});
+    summary.history.push_back({k + 1, 0, o.residual, 0.0, std::nullopt, 0, sparse_solves(), elapsed()});
     summary.indicator = std::max(summary.indicator, o.residual);
     if (callback && !callback(summary.history.back())) {
       summary.termination = Termination::StoppedByCallback;
@@ -266,6 +212,54 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
   summary.wall_s = elapsed();
   if (summary.termination != Termination::NumericalIssue) summary.message = describeSuccess(summary, m, totals);
   return result;
+}
+
+// The plane law with the dense Delassus operator (the header's method).
+SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
+                       Clock::time_point start, const SpdFactor& factor) {
+  const CondensedInterface condensed = CondensedInterface::build(problem, factor);
+  const int nc = problem.contact.size();
+  const Eigen::VectorXd rho = condensed.delassus.diagonal().cwiseInverse();  // ρ = 1 / diag(W)
+  Instant d{condensed.delassus, Eigen::VectorXd(), problem.contact.initial_gap, Eigen::VectorXd::Zero(nc), rho,
+            rho.maxCoeff(), problem.contact.friction};
+  const auto solve_at = [&](int k, const Eigen::VectorXd& lambda, const Eigen::VectorXd& v_previous) {
+    d.v0 = condensed.free_response.col(k);
+    for (int i = 0; i < nc; ++i) d.vt_prev[i] = v_previous[2 * i + 1];
+    PlaneLaw law{d};
+    return solveInstantByNewton(law, lambda, options.tolerance, options.max_newton_iterations);
+  };
+  return march(problem, callback, start, solve_at, [&] { return condensed.sparse_solves; });
+}
+
+// The cone law of cone_newton.hpp with the Delassus columns computed on demand.
+SolveResult solveCone(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
+                      Clock::time_point start, const SpdFactor& factor) {
+  const Eigen::MatrixXd v0 = freeInterfaceResponse(problem, factor);
+  LazyDelassus delassus(problem, factor);
+  ConeLaw law(problem, delassus);
+  const auto solve_at = [&](int k, const Eigen::VectorXd& lambda, const Eigen::VectorXd& v_previous) {
+    law.setInstant(v0.col(k), v_previous);
+    return solveInstantByNewton(law, lambda, options.tolerance, options.max_newton_iterations);
+  };
+  const int load_solves = static_cast<int>(problem.loads.size());
+  SolveResult result =
+      march(problem, callback, start, solve_at, [&] { return load_solves + delassus.sparseSolves(); });
+  std::ostringstream note;
+  note << "; Delassus columns of " << delassus.nodesComputed() << " of " << problem.contact.size()
+       << " contact nodes (" << delassus.bytes() / 1e6 << " MB)";
+  result.summary.message += note.str();
+  return result;
+}
+
+}  // namespace
+
+SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& options,
+                             const IterationCallback& callback) {
+  options.validate();
+  const auto start = Clock::now();
+  const SpdFactor factor(problem.stiffness_free, "the free-dof stiffness K_ff");
+  if (problem.contact.dimension == 3 || options.cone_law) return solveCone(problem, options, callback, start, factor);
+  return solvePlane(problem, options, callback, start, factor);
 }
 
 }  // namespace stc

@@ -1,0 +1,126 @@
+#include "src/solver/cone_newton.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+
+namespace stc {
+
+ConeLaw::ConeLaw(const Problem& problem, LazyDelassus& delassus)
+    : contact_(problem.contact),
+      W_(delassus),
+      d_(problem.contact.dimension),
+      rho_n_(Eigen::VectorXd::Zero(problem.contact.size())),
+      rho_t_(Eigen::VectorXd::Zero(problem.contact.size())) {}
+
+void ConeLaw::setInstant(const Eigen::VectorXd& v0, const Eigen::VectorXd& v_previous) {
+  v0_ = v0;
+  v_previous_ = v_previous;
+}
+
+// v = v_0 + W λ over the nodes that carry a force (their columns exist: a force only appears on a
+// node after it closed).
+Eigen::VectorXd ConeLaw::displacement(const Eigen::VectorXd& lambda) const {
+  Eigen::VectorXd v = v0_;
+  for (int j = 0; j < contact_.size(); ++j)
+    for (int a = 0; a < d_; ++a)
+      if (const double l = lambda[d_ * j + a]; l != 0.0) v.noalias() += W_.column(j, a) * l;
+  return v;
+}
+
+// Computes the columns of `nodes` and their ρ_n = 1 / W_nn, ρ_t = (d − 1) / tr(W_tt).
+void ConeLaw::learnScaling(const std::vector<int>& nodes) {
+  W_.ensure(nodes);
+  for (int i : nodes) {
+    const int n = d_ * i;
+    rho_n_[i] = 1.0 / W_.entry(n, i, 0);
+    double trace = 0.0;
+    for (int a = 1; a < d_; ++a) trace += W_.entry(n + a, i, a);
+    rho_t_[i] = (d_ - 1) / trace;
+    rho_max_ = std::max({rho_max_, rho_n_[i], rho_t_[i]});
+  }
+}
+
+void ConeLaw::nodeLaw(int i, const Eigen::VectorXd& lambda, Evaluation& e) const {
+  const int n = d_ * i, t = n + 1, dt = d_ - 1;
+  auto A = e.A.middleCols(n, d_), C = e.C.middleCols(n, d_);
+  A.setZero();
+  C.setZero();
+  const double g = contact_.initial_gap[i] + e.v[n];
+  const double hat_n = lambda[n] - rho_n_[i] * g;
+  if (!(hat_n > 0.0)) {  // open (also an uncomputed node with g ≥ 0: ρ_n = 0, λ = 0)
+    e.F.segment(n, d_) = lambda.segment(n, d_);
+    A.setIdentity();
+    return;
+  }
+  e.closed[i] = true;
+  const Eigen::VectorXd s = e.v.segment(t, dt) - v_previous_.segment(t, dt);
+  const Eigen::VectorXd lt = lambda.segment(t, dt);
+  const Eigen::VectorXd xi = lt - rho_t_[i] * s;
+  const double radius = contact_.friction * hat_n, norm = xi.norm();
+  e.F[n] = rho_n_[i] * g;
+  C(0, 0) = rho_n_[i];
+  if (norm <= radius) {  // stick
+    e.F.segment(t, dt) = rho_t_[i] * s;
+    C.bottomRightCorner(dt, dt).diagonal().setConstant(rho_t_[i]);
+    return;
+  }
+  const Eigen::VectorXd unit = xi / norm;
+  const double q = radius / norm;
+  const Eigen::MatrixXd P = Eigen::MatrixXd::Identity(dt, dt) - unit * unit.transpose();
+  e.F.segment(t, dt) = lt - radius * unit;
+  A.bottomRightCorner(dt, dt) = Eigen::MatrixXd::Identity(dt, dt) - q * P;
+  A.bottomLeftCorner(dt, 1) = -contact_.friction * unit;
+  C.bottomLeftCorner(dt, 1) = contact_.friction * rho_n_[i] * unit;
+  C.bottomRightCorner(dt, dt) = q * rho_t_[i] * P;
+}
+
+ConeLaw::Evaluation ConeLaw::evaluate(const Eigen::VectorXd& lambda) {
+  const int nc = contact_.size();
+  Evaluation e{displacement(lambda), Eigen::VectorXd(lambda.size()), std::vector<bool>(nc, false),
+               Eigen::MatrixXd(d_, d_ * nc), Eigen::MatrixXd(d_, d_ * nc)};
+  std::vector<int> entering;  // nodes without columns that are about to close
+  for (int i = 0; i < nc; ++i)
+    if (!W_.has(i) && contact_.initial_gap[i] + e.v[d_ * i] < 0.0) entering.push_back(i);
+  if (!entering.empty()) learnScaling(entering);
+  for (int i = 0; i < nc; ++i) nodeLaw(i, lambda, e);
+  return e;
+}
+
+bool ConeLaw::newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eigen::VectorXd& step) {
+  std::vector<int> closed, forced_open;
+  for (int i = 0; i < contact_.size(); ++i) {
+    if (e.closed[i]) closed.push_back(i);
+    else if (lambda.segment(d_ * i, d_).squaredNorm() > 0.0) forced_open.push_back(i);
+  }
+  const int nA = static_cast<int>(closed.size()) * d_;
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(nA, nA);
+  Eigen::VectorXd rhs(nA);
+  for (int p = 0; p < static_cast<int>(closed.size()); ++p) {
+    const int i = closed[p], n = d_ * i;
+    const auto A = e.A.middleCols(n, d_), C = e.C.middleCols(n, d_);
+    rhs.segment(d_ * p, d_) = -e.F.segment(n, d_);
+    for (int q = 0; q < static_cast<int>(closed.size()); ++q) {
+      Eigen::MatrixXd Wij(d_, d_);
+      for (int b = 0; b < d_; ++b) Wij.col(b) = W_.column(closed[q], b).segment(n, d_);
+      M.block(d_ * p, d_ * q, d_, d_) = C * Wij;
+    }
+    M.block(d_ * p, d_ * p, d_, d_) += A;
+    for (int j : forced_open) {  // Δλ_j = −λ_j on an open node: −C W_ij Δλ_j moves to the right
+      Eigen::VectorXd w = Eigen::VectorXd::Zero(d_);
+      for (int b = 0; b < d_; ++b) w += W_.column(j, b).segment(n, d_) * lambda[d_ * j + b];
+      rhs.segment(d_ * p, d_) += C * w;
+    }
+  }
+  step = -lambda;
+  if (nA > 0) {
+    const Eigen::VectorXd x = M.partialPivLu().solve(rhs);
+    for (int p = 0; p < static_cast<int>(closed.size()); ++p) step.segment(d_ * closed[p], d_) = x.segment(d_ * p, d_);
+  }
+  return step.allFinite();
+}
+
+double ConeLaw::forceScale(const Eigen::VectorXd& lambda) const {
+  return std::max(lambda.lpNorm<Eigen::Infinity>(), rho_max_ * v0_.lpNorm<Eigen::Infinity>());
+}
+
+}  // namespace stc

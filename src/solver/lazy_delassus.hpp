@@ -1,0 +1,45 @@
+#pragma once
+// The columns of the Delassus operator W = B K⁻¹ Bᵀ (src/solver/condensed_interface.hpp), computed
+// only for the contact nodes that need them, the first time they do: node j's d columns
+// W(:, d j … d j + d − 1) = B K⁻¹ B(d j … d j + d − 1, :)ᵀ take d sparse solves. The incremental
+// solver needs the columns of the nodes that carry a force (v = v_0 + W λ) and of the closed ones
+// (the Newton system), never those of the nodes that stay open: memory d n_C × d n_ever-closed
+// instead of the dense (d n_C)², and as many sparse solves as nodes ever closed (times d).
+#include <Eigen/Core>
+#include <vector>
+
+#include "src/linalg/spd_factor.hpp"
+#include "src/problem/problem.hpp"
+
+namespace stc {
+
+class LazyDelassus {
+ public:
+  LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free);
+
+  /// Computes the columns of the nodes of `nodes` that do not have them yet (one multi-right-hand-
+  /// side solve for all of them).
+  void ensure(const std::vector<int>& nodes);
+  bool has(int node) const { return slot_[node] >= 0; }
+  /// W(:, d node + a), a = 0 … d − 1 (the node's columns must exist).
+  auto column(int node, int a) const { return columns_.col(static_cast<Eigen::Index>(slot_[node]) * d_ + a); }
+  /// W(r, d node + a).
+  double entry(int r, int node, int a) const { return columns_(r, static_cast<Eigen::Index>(slot_[node]) * d_ + a); }
+  int nodesComputed() const { return count_; }
+  int sparseSolves() const { return count_ * d_; }
+  /// Bytes held by the columns.
+  double bytes() const { return 8.0 * static_cast<double>(columns_.rows()) * d_ * count_; }
+
+ private:
+  const Problem& problem_;
+  const SpdFactor& factor_;
+  int d_;
+  std::vector<int> slot_;    // per contact node: its block among the columns, −1 if not computed
+  Eigen::MatrixXd columns_;  // d n_C × d capacity
+  int count_ = 0;
+};
+
+/// v_0 = B K⁻¹ f(t_k) for every instant (d n_C × m), one sparse solve per load term.
+Eigen::MatrixXd freeInterfaceResponse(const Problem& problem, const SpdFactor& stiffness_free);
+
+}  // namespace stc

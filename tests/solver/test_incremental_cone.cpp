@@ -1,0 +1,90 @@
+// The incremental solver's cone law with lazily computed Delassus columns (src/solver/cone_newton.hpp):
+// the same solution as the plane law in 2D, and in 3D the contact law to round-off, the symmetry of
+// the scene, Coulomb sliding at the end of the slide, and columns only for the nodes that close.
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <regex>
+
+#include "src/solver/contact_law_check.hpp"
+#include "src/solver/incremental_solver.hpp"
+#include "tests/solver/hemisphere_scene.hpp"
+#include "tests/solver/seed_scene.hpp"
+
+namespace {
+
+double relativeDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
+}
+
+// Rows d i + r of every node i (r = 0: normal, 1 and 2: tangential), summed per instant.
+Eigen::RowVectorXd resultant(const Eigen::MatrixXd& lambda, int d, int r) {
+  Eigen::RowVectorXd total = Eigen::RowVectorXd::Zero(lambda.cols());
+  for (Eigen::Index i = 0; d * i < lambda.rows(); ++i) total += lambda.row(d * i + r);
+  return total;
+}
+
+}  // namespace
+
+// Two exact methods for the same discrete law: they agree to round-off amplified by the Newton
+X
+TEST(IncrementalCone, AgreesWithThePlaneLawOnTheSeedScene) {
+  const stc::Problem problem = stc::buildProblem(stc::test::seedScene(31, 41));
+  const stc::SolveResult plane = stc::solveIncremental(problem);
+  stc::IncrementalOptions options;
+  options.cone_law = true;
+  const stc::SolveResult cone = stc::solveIncremental(problem, options);
+  ASSERT_EQ(cone.summary.termination, stc::Termination::Converged) << cone.summary.message;
+  const double force = relativeDifference(cone.interface.lambda, plane.interface.lambda);
+  const double displacement = relativeDifference(cone.interface.v, plane.interface.v);
+  std::cout << "cone law vs plane law: relative difference " << force << " (forces), " << displacement
+            << " (displacements)\n";
+  EXPECT_LT(force, 1e-10);
+  EXPECT_LT(displacement, 1e-10);
+}
+
+TEST(IncrementalCone, SolvesTheHemisphereToRoundOff) {
+  const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(4, 21));
+  const stc::SolveResult r = stc::solveIncremental(problem);
+  ASSERT_EQ(r.summary.termination, stc::Termination::Converged) << r.summary.message;
+  EXPECT_LT(stc::checkContactLaw(problem, r.interface).max(), 1e-10);
+  EXPECT_LE(r.summary.indicator, 1e-13);
+}
+
+// The scene is symmetric about the plane y = 0 and slides along x: no resultant along y (τ_2 = e_y
+// for the normal e_z), and at t = 1 every closed node slips, so the x resultant is nearly −μ N
+// (equal if all slip directions were parallel to x; never more, by the cone).
+TEST(IncrementalCone, HemisphereSlidesAlongXWithCoulombFriction) {
+  const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(4, 21));
+  const stc::SolveResult r = stc::solveIncremental(problem);
+  const Eigen::RowVectorXd normal = resultant(r.interface.lambda, 3, 0);
+  const Eigen::RowVectorXd along_x = resultant(r.interface.lambda, 3, 1), along_y = resultant(r.interface.lambda, 3, 2);
+  EXPECT_LT(along_y.cwiseAbs().maxCoeff(), 1e-10 * normal.maxCoeff());
+  const double N = normal(20), T = -along_x(20), mu = problem.contact.friction;
+  EXPECT_GT(N, 0.0);
+  EXPECT_LE(T, mu * N * (1.0 + 1e-12));
+  EXPECT_GT(T, 0.95 * mu * N);
+}
+
+TEST(IncrementalCone, FrictionlessHemisphereHasNoTangentialForce) {
+  const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(3, 11, 0.0));
+  const stc::SolveResult r = stc::solveIncremental(problem);
+  ASSERT_EQ(r.summary.termination, stc::Termination::Converged) << r.summary.message;
+  const double scale = r.interface.lambda.cwiseAbs().maxCoeff();
+  EXPECT_GT(scale, 0.0);
+  for (Eigen::Index i = 0; i < problem.contact.size(); ++i)  // zero up to the LU's round-off
+    EXPECT_LT(r.interface.lambda.block(3 * i + 1, 0, 2, r.interface.lambda.cols()).cwiseAbs().maxCoeff(), 1e-12 * scale);
+}
+
+// Only the nodes that close get Delassus columns: the message reports "columns of N of n_C".
+TEST(IncrementalCone, ComputesColumnsOnlyForNodesThatClose) {
+  const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(4, 21));
+  const stc::SolveResult r = stc::solveIncremental(problem);
+  std::smatch match;
+  ASSERT_TRUE(std::regex_search(r.summary.message, match, std::regex("columns of ([0-9]+) of ([0-9]+) contact nodes")))
+      << r.summary.message;
+  const int computed = std::stoi(match[1]), total = std::stoi(match[2]);
+  EXPECT_EQ(total, problem.contact.size());
+  EXPECT_GE(computed, 13);  // the closed nodes at t = 1 (reactions.csv: n_contact = 15 at the last instant)
+  EXPECT_LT(computed, total / 4);
+}
