@@ -10,34 +10,16 @@
 #include "latin/local_stage.hpp"
 #include "pgd/separated_history.hpp"
 #include "solver/seed_scene.hpp"
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "strategies/strategy_fixture.hpp"
 
 namespace {
 
-struct Fixture {
-  stc::Scene scene = stc::test::seedScene(31, 41);
-  stc::Problem problem = stc::buildProblem(scene);
-  stc::SolveResult incremental = stc::solveIncremental(problem);
-  stc::SpdFactor K{problem.stiffness_free, "K"};
-  stc::ErrorReference reference{problem, K, stc::CondensedInterface::build(problem, K).delassus,
-                                incremental.interface.lambda};
-};
-
-const Fixture& fixture() {
-  static const Fixture f;
+const stc::test::StrategyFixture& fixture() {
+  static const stc::test::StrategyFixture f(stc::test::seedScene(31, 41));
   return f;
 }
 
-stc::SolveResult solve(const std::string& name, double tolerance) {
-  const auto& f = fixture();
-  stc::SolverSpec spec = f.scene.solver;
-  spec.tolerance = tolerance;
-  stc::StrategyInputs inputs;
-  inputs.reference = &f.reference;
-  return stc::solveByName(name, f.problem, spec, inputs);
-}
+stc::SolveResult solve(const std::string& name, double tolerance) { return fixture().solve(name, tolerance); }
 
 }  // namespace
 

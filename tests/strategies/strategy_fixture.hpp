@@ -1,0 +1,29 @@
+#pragma once
+// A scene solved once by the incremental reference, with the error reference every strategy's true
+// error is measured against; `solve` runs a strategy by name at a tolerance.
+#include <string>
+
+#include "src/solver/condensed_interface.hpp"
+#include "src/solver/incremental_solver.hpp"
+#include "src/strategies/solve_by_name.hpp"
+
+namespace stc::test {
+
+struct StrategyFixture {
+  explicit StrategyFixture(Scene s) : scene(std::move(s)) {}
+  Scene scene;
+  Problem problem = buildProblem(scene);
+  SolveResult incremental = solveIncremental(problem);
+  SpdFactor K{problem.stiffness_free, "K"};
+  ErrorReference reference{problem, K, CondensedInterface::build(problem, K).delassus, incremental.interface.lambda};
+
+  SolveResult solve(const std::string& name, double tolerance) const {
+    SolverSpec spec = scene.solver;
+    spec.tolerance = tolerance;
+    StrategyInputs inputs;
+    inputs.reference = &reference;
+    return solveByName(name, problem, spec, inputs);
+  }
+};
+
+}  // namespace stc::test

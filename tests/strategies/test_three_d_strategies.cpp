@@ -1,0 +1,43 @@
+// Every strategy on the small 3D seed scene (tests/solver/hemisphere_scene.hpp), against the
+// incremental solver's cone law: the same code above the contact interface as in 2D, only the
+// interface has three rows per node. The full-size study is docs/three_d.md.
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <string>
+
+#include "solver/hemisphere_scene.hpp"
+#include "src/solver/contact_law_check.hpp"
+#include "strategies/strategy_fixture.hpp"
+
+namespace {
+
+const stc::test::StrategyFixture& hemisphere() {
+  static const stc::test::StrategyFixture f(stc::test::hemisphereScene(4, 21));
+  return f;
+}
+
+}  // namespace
+
+// The tolerance bounds the true error (docs/method.md §2) in 3D as in 2D, and the admissible
+// iterate satisfies the cone law to the tolerance's order.
+TEST(ThreeD, EveryStrategyReachesTheIncrementalSolutionWithinTheTolerance) {
+  for (const std::string name : {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori"}) {
+    const auto r = hemisphere().solve(name, 1e-6);
+    ASSERT_TRUE(r.summary.converged()) << name << ": " << r.summary.message;
+    ASSERT_TRUE(r.summary.error.has_value()) << name;
+    EXPECT_LE(*r.summary.error, 1e-6) << name;
+    EXPECT_GE(r.summary.error_estimate, *r.summary.error) << name;
+    EXPECT_LT(stc::checkContactLaw(hemisphere().problem, r.admissible()).max(), 1e-4) << name;
+    std::cout << "[ measured ] 3D " << name << ": " << r.summary.relaxations << " relaxations, true error "
+              << *r.summary.error << ", estimate / true " << r.summary.error_estimate / *r.summary.error << "\n";
+  }
+}
+
+// The a priori two-level solver keeps its advantage in relaxations over plain LATIN in 3D.
+TEST(ThreeD, FasAprioriNeedsFewerRelaxationsThanLatin) {
+  const auto fas = hemisphere().solve("fas-apriori", 1e-6);
+  const auto latin = hemisphere().solve("latin", 1e-6);
+  ASSERT_TRUE(fas.summary.converged() && latin.summary.converged());
+  EXPECT_LT(2 * fas.summary.relaxations, latin.summary.relaxations);
+}
