@@ -130,6 +130,18 @@ void writeFigures(const std::filesystem::path& out, const Problem& problem, cons
   if (status == FigureStatus::GnuplotFailed) std::cerr << "warning: " << detail << "\n";
 }
 
+// The contact zone's localisation bands, or none (with a note) when no node ever closes.
+std::unique_ptr<ModeLocalisation> localisation(const Problem& problem, const SolveResult& solved) {
+  ContactZone zone = ContactZone::everClosed(problem, solved.admissible());
+  if (zone.empty()) {
+    std::cerr << "note: no contact node ever closes: no contact zone, no localisation.csv\n";
+    return nullptr;
+  }
+  std::vector<double> depths;
+  for (double d : kBandDepths) depths.push_back(d * problem.length_scale);
+  return std::make_unique<ModeLocalisation>(problem, std::move(zone), depths);
+}
+
 void report(const std::filesystem::path& out, const Problem& problem, const Analysis& a,
             const ModeLocalisation* loc, int modes) {
   std::printf("svd: %s, %d dofs x %d instants, energy SVD by ARPACK: %d pairs (%d resolved), %d products, %.3g s\n",
@@ -195,23 +207,18 @@ int runSvd(const SvdArgs& args) {
   const Analysis a = analyse(U, problem.stiffness, args.modes);
   const int modes = std::min(args.modes, a.svd.size());
 
-  std::unique_ptr<ModeLocalisation> loc;
-  ContactZone zone = ContactZone::everClosed(problem, solved.admissible());
-  if (!zone.empty()) {
-    std::vector<double> depths;
-    for (double d : kBandDepths) depths.push_back(d * problem.length_scale);
-    loc = std::make_unique<ModeLocalisation>(problem, std::move(zone), depths);
-  } else {
-    std::cerr << "note: no contact node ever closes: no contact zone, no localisation.csv\n";
-  }
+  // The localisation bands, the mode figures and modes.vtu draw plane meshes: 2D scenes only.
+  const bool plane = problem.dimension == 2;
+  if (!plane) std::cerr << "note: 3D scene: tables and svd_summary.json only (mode figures, localisation and modes.vtu are 2D)\n";
+  const std::unique_ptr<ModeLocalisation> loc = plane ? localisation(problem, solved) : nullptr;
 
   writeFileAtomically(out / "singular_values.csv", singularValuesCsv(a.svd));
   writeFileAtomically(out / "time_functions.csv", timeFunctionsCsv(a.svd, problem.times, modes));
   if (loc) writeFileAtomically(out / "localisation.csv", localisationCsv(a.svd, *loc, modes));
-  writeFileAtomically(out / "modes.vtu", modesVtu(problem.mesh, a.svd, modes, loc.get()));
+  if (plane) writeFileAtomically(out / "modes.vtu", modesVtu(problem.mesh, a.svd, modes, loc.get()));
   writeFileAtomically(out / "svd_summary.json", summaryJson(problem, a, loc.get(), solve_s));
-  if (a.svd.total_energy > 0.0) writeFigures(out, problem, a, loc.get());
-  else std::cerr << "note: zero elastic energy over the history: no figures\n";
+  if (plane && a.svd.total_energy > 0.0) writeFigures(out, problem, a, loc.get());
+  else if (plane) std::cerr << "note: zero elastic energy over the history: no figures\n";
   report(out, problem, a, loc.get(), modes);
   return 0;
 }
