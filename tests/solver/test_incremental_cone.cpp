@@ -27,7 +27,8 @@ Eigen::RowVectorXd resultant(const Eigen::MatrixXd& lambda, int d, int r) {
 }  // namespace
 
 // Two exact methods for the same discrete law: they agree to round-off amplified by the Newton
-X
+// systems' conditioning (measured 1.9e-15 on the forces; 1e-10 leaves room for other BLAS and
+// compilers, and is far below any modelling difference).
 TEST(IncrementalCone, AgreesWithThePlaneLawOnTheSeedScene) {
   const stc::Problem problem = stc::buildProblem(stc::test::seedScene(31, 41));
   const stc::SolveResult plane = stc::solveIncremental(problem);
