@@ -3,6 +3,7 @@
 #include <Eigen/CholmodSupport>
 #include <algorithm>
 #include <cstring>
+#include <mutex>
 #include <stdexcept>
 
 #include "src/core/input_error.hpp"
@@ -31,12 +32,17 @@ SpdFactor::Workspace::~Workspace() = default;
 SpdFactor::Workspace::Workspace(Workspace&&) noexcept = default;
 SpdFactor::Workspace& SpdFactor::Workspace::operator=(Workspace&&) noexcept = default;
 
-// Simplicial LLᵀ (the settings of Eigen's CholmodSimplicialLLT). Not supernodal: the supernodal
-// solve calls the BLAS (dtrsm, dgemm), and Debian's serial OpenBLAS 0.3.21 returns wrong columns when
-// two threads call it at once (measured: ~2% of concurrent 16-column solves; none with the reference
-// BLAS); the simplicial solve is plain C, and on these 2D meshes it is not slower (thread CPU time
-// per 201 right-hand sides, chunks of 16: 2.3–2.6 vs 2.6–2.7 ms at n = 1088, 7.1–8.2 vs 9–11 ms at
-// n = 2560, 19–22 vs 18–23 ms at n = 5700; docs/threads.md).
+// Solves are simplicial LLᵀ (the settings of Eigen's CholmodSimplicialLLT). Not supernodal: the
+// supernodal solve calls the BLAS (dtrsm, dgemm), and Debian's serial OpenBLAS 0.3.21 returns wrong
+// columns when two threads call it at once (measured: ~2% of concurrent 16-column solves; none with
+// the reference BLAS); the simplicial solve is plain C, and on these 2D meshes it is not slower
+// (thread CPU time per 201 right-hand sides, chunks of 16: 2.3–2.6 vs 2.6–2.7 ms at n = 1088,
+// 7.1–8.2 vs 9–11 ms at n = 2560, 19–22 vs 18–23 ms at n = 5700; docs/threads.md).
+// The factorisation is left to CHOLMOD's own choice (CHOLMOD_AUTO: supernodal when the flop count
+// per factor entry reaches common.supernodal_switch = 40, which the 2D meshes do not and 3D meshes
+// do): a supernodal factor is converted to a simplicial one before any solve
+// (cholmod_change_factor), and supernodal factorisations, the only BLAS calls, run one at a time.
+// Measured on the half-ball (dimension = 3, divisions 16, 52272 free dofs): 24 s simplicial.
 struct SpdFactor::Impl {
   cholmod_common common;
   cholmod_factor* L = nullptr;
@@ -46,7 +52,7 @@ struct SpdFactor::Impl {
     cholmod_start(&common);
     common.print = 0;  // "not positive definite" is the InputError below, not a line on stdout
     common.final_asis = 0;
-    common.supernodal = CHOLMOD_SIMPLICIAL;
+    common.supernodal = CHOLMOD_AUTO;
     common.final_ll = 1;
   }
   ~Impl() {
@@ -63,9 +69,17 @@ SpdFactor::SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& wh
   cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
   impl_->L = cholmod_analyze(&view, &impl_->common);
   double beta[2] = {0.0, 0.0};
-  if (impl_->L) cholmod_factorize_p(&view, beta, nullptr, 0, impl_->L, &impl_->common);
+  if (impl_->L && impl_->L->is_super) {
+    static std::mutex blas;  // see above: one BLAS caller at a time
+    const std::lock_guard<std::mutex> lock(blas);
+    cholmod_factorize_p(&view, beta, nullptr, 0, impl_->L, &impl_->common);
+  } else if (impl_->L) {
+    cholmod_factorize_p(&view, beta, nullptr, 0, impl_->L, &impl_->common);
+  }
   if (!impl_->L || impl_->L->minor != impl_->L->n)
     throw InputError(what + " is not positive definite (do the Dirichlet conditions fix every rigid-body motion?)");
+  if (impl_->L->is_super && !cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, impl_->L, &impl_->common))
+    throw std::runtime_error("CHOLMOD could not convert the supernodal factor of " + what + " to a simplicial one");
 }
 
 SpdFactor::~SpdFactor() = default;
