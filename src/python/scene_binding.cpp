@@ -30,6 +30,7 @@ py::dict checkSizes(const SceneHandle& handle) {
   sizes["free_dofs"] = p.numFreeDofs();
   sizes["prescribed_dofs"] = p.numDofs() - p.numFreeDofs();
   sizes["contact_nodes"] = c.size();
+  sizes["interface_rows"] = c.rows();
   sizes["boundary"] = scene.contact.boundary;
   sizes["instants"] = p.numSteps();
   sizes["t_start"] = p.times.front();

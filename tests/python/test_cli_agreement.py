@@ -81,7 +81,8 @@ def test_check_equals_the_programs(cli):
     assert field(r"^elements\s+(\d+)$") == (str(sizes["elements"]),)
     assert field(r"^dofs\s+(\d+) \((\d+) free, (\d+) prescribed\)$") == (
         str(sizes["dofs"]), str(sizes["free_dofs"]), str(sizes["prescribed_dofs"]))
-    assert field(r"^contact nodes\s+(\d+) on boundary '(\w+)'$") == (str(sizes["contact_nodes"]), sizes["boundary"])
+    assert field(r"^contact nodes\s+(\d+) on boundary '(\w+)' \((\d+) interface unknowns") == (
+        str(sizes["contact_nodes"]), sizes["boundary"], str(sizes["interface_rows"]))
     assert field(r"^steps\s+(\d+) instants") == (str(sizes["instants"]),)
     assert field(r"kappa = (\S+), L") == ("%g" % sizes["kappa"],)
     assert sizes["contact_nodes"] == 31 and sizes["instants"] == 41
