@@ -11,7 +11,6 @@
 #include "src/io/atomic_file.hpp"
 #include "src/io/contact_tables.hpp"
 #include "src/io/json_writer.hpp"
-#include "src/io/output_error.hpp"
 #include "src/io/vtu_writer.hpp"
 #include "src/solver/condensed_interface.hpp"
 
@@ -56,8 +55,7 @@ void writeFrame(std::ostream& out, const Problem& problem, const Eigen::VectorXd
   const std::vector<PointField> nodal{{"displacement", displacement}, {"contact_force", force}, {"contact_state", state}};
   if (problem.dimension == 3) {
     const auto stress = elementStresses(problem.solid, problem.material, u);
-    (void)stress;
-    throw OutputError("VTU output of 3D scenes is not written yet: set output.vtu = false");
+    writeVtu(out, problem.solid, nodal, {{"stress", stress.topRows(6)}, {"von_mises", stress.bottomRows(1)}});
   } else {
     const auto stress = elementStresses(problem.mesh, problem.material, problem.plane, u);
     writeVtu(out, problem.mesh, nodal, {{"stress", stress.topRows(3)}, {"von_mises", stress.bottomRows(1)}});

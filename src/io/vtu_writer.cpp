@@ -18,6 +18,7 @@ namespace {
 constexpr int kVtuDigits = 10;
 constexpr int kScalarsPerLine = 12;  ///< one-component arrays; larger tuples take a line each
 constexpr int kVtkTriangle = 5;
+constexpr int kVtkTetra = 10;
 constexpr const char* kDataIndent = "          ";  ///< the values, one level inside DataArray
 
 void putNumber(std::ostream& out, double value) {
@@ -121,30 +122,33 @@ void openData(std::ostream& out, const char* tag, const std::vector<Field>& fiel
 /// Components written for a point field: plane vectors get z = 0 (Warp By Vector needs 3).
 Eigen::Index paddedComponents(Eigen::Index rows) { return rows == 2 ? 3 : rows; }
 
-void writeCells(std::ostream& out, const Mesh& mesh) {
-  const Eigen::Index n = mesh.numElements();
+/// Cells of one type, `cells` holding the node ids of each (one column per cell).
+template <typename Cells>
+void writeCells(std::ostream& out, const Cells& cells, int vtkType) {
+  const Eigen::Index n = cells.cols(), k = cells.rows();
   out << "      <Cells>\n";
-  writeIntArray(out, "Int64", "connectivity", 3 * n, 3,
-                [&](Eigen::Index k) { return mesh.triangles(k % 3, k / 3); });
+  writeIntArray(out, "Int64", "connectivity", k * n, k,
+                [&](Eigen::Index j) { return cells(j % k, j / k); });
   writeIntArray(out, "Int64", "offsets", n, kScalarsPerLine,
-                [](Eigen::Index e) { return 3 * (e + 1); });
+                [k](Eigen::Index e) { return k * (e + 1); });
   writeIntArray(out, "UInt8", "types", n, kScalarsPerLine,
-                [](Eigen::Index) { return kVtkTriangle; });
+                [vtkType](Eigen::Index) { return vtkType; });
   out << "      </Cells>\n";
 }
 
-}  // namespace
-
-void writeVtu(std::ostream& out, const Mesh& mesh, const std::vector<PointField>& pointFields,
-              const std::vector<CellField>& cellFields) {
-  validateFields(pointFields, "point", mesh.numNodes(), "nodes", 3);
-  validateFields(cellFields, "cell", mesh.numElements(), "elements",
+/// The document for points (2 or 3 rows; z = 0 when 2) and cells of one VTK type.
+template <typename Points, typename Cells>
+void writeGrid(std::ostream& out, const Points& points, const Cells& cells, int vtkType,
+               const std::vector<PointField>& pointFields, const std::vector<CellField>& cellFields) {
+  const Eigen::Index numPoints = points.cols(), numCells = cells.cols();
+  validateFields(pointFields, "point", static_cast<int>(numPoints), "nodes", 3);
+  validateFields(cellFields, "cell", static_cast<int>(numCells), "elements",
                  std::numeric_limits<int>::max());
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "  <UnstructuredGrid>\n"
-      << "    <Piece NumberOfPoints=\"" << mesh.numNodes() << "\" NumberOfCells=\""
-      << mesh.numElements() << "\">\n";
+      << "    <Piece NumberOfPoints=\"" << numPoints << "\" NumberOfCells=\""
+      << numCells << "\">\n";
   openData(out, "PointData", pointFields);
   for (const PointField& field : pointFields)
     writeFloatArray(out, field.name, field.values, paddedComponents(field.values.rows()));
@@ -154,15 +158,34 @@ void writeVtu(std::ostream& out, const Mesh& mesh, const std::vector<PointField>
     writeFloatArray(out, field.name, field.values, field.values.rows());
   out << "      </CellData>\n";
   out << "      <Points>\n";
-  writeFloatArray(out, "Points", mesh.nodes, 3);
+  writeFloatArray(out, "Points", points, 3);
   out << "      </Points>\n";
-  writeCells(out, mesh);
+  writeCells(out, cells, vtkType);
   out << "    </Piece>\n"
       << "  </UnstructuredGrid>\n"
       << "</VTKFile>\n";
 }
 
+}  // namespace
+
+void writeVtu(std::ostream& out, const Mesh& mesh, const std::vector<PointField>& pointFields,
+              const std::vector<CellField>& cellFields) {
+  writeGrid(out, mesh.nodes, mesh.triangles, kVtkTriangle, pointFields, cellFields);
+}
+
+void writeVtu(std::ostream& out, const TetMesh& mesh, const std::vector<PointField>& pointFields,
+              const std::vector<CellField>& cellFields) {
+  writeGrid(out, mesh.nodes, mesh.tets, kVtkTetra, pointFields, cellFields);
+}
+
 std::string vtuDocument(const Mesh& mesh, const std::vector<PointField>& pointFields,
+                        const std::vector<CellField>& cellFields) {
+  std::ostringstream out;
+  writeVtu(out, mesh, pointFields, cellFields);
+  return out.str();
+}
+
+std::string vtuDocument(const TetMesh& mesh, const std::vector<PointField>& pointFields,
                         const std::vector<CellField>& cellFields) {
   std::ostringstream out;
   writeVtu(out, mesh, pointFields, cellFields);

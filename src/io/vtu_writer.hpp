@@ -1,6 +1,6 @@
 #pragma once
 // ParaView output (docs/interface.md: solution.pvd + vtu/): a VTK XML UnstructuredGrid of the P1
-// triangle mesh with nodal and element fields, and the collection (.pvd) that makes a series of
+// triangle or tetrahedron mesh with nodal and element fields, and the collection (.pvd) that makes a series of
 // them a time series. Format: "VTK File Formats", XML section (Kitware, VTK User's Guide); ASCII
 // data arrays, so the files can be read and diffed as text.
 #include <Eigen/Core>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "src/mesh/mesh.hpp"
+#include "src/mesh/tet_mesh.hpp"
 
 namespace stc {
 
@@ -36,6 +37,12 @@ void writeVtu(std::ostream& out, const Mesh& mesh, const std::vector<PointField>
               const std::vector<CellField>& cellFields);
 /// The same document as a string.
 std::string vtuDocument(const Mesh& mesh, const std::vector<PointField>& pointFields,
+                        const std::vector<CellField>& cellFields);
+
+/// The same for tetrahedra (VTK_TETRA = 10), points with their z.
+void writeVtu(std::ostream& out, const TetMesh& mesh, const std::vector<PointField>& pointFields,
+              const std::vector<CellField>& cellFields);
+std::string vtuDocument(const TetMesh& mesh, const std::vector<PointField>& pointFields,
                         const std::vector<CellField>& cellFields);
 
 /// A ParaView collection listing `frames` (time, file name relative to the .pvd) in the given

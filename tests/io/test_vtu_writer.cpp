@@ -284,3 +284,47 @@ TEST(PvdDocument, RejectsEmptyFileNamesAndNonFiniteTimes) {
 
 }  // namespace
 }  // namespace stc
+
+namespace stc {
+namespace {
+
+/// Two tetrahedra sharing the face (1 2 3): (0 1 2 3) and (4 1 3 2), both of positive volume.
+TetMesh twoTetrahedra() {
+  TetMesh mesh;
+  mesh.nodes.resize(3, 5);
+  mesh.nodes << 0, 1, 0, 0, 1,  //
+      0, 0, 1, 0, 1,            //
+      0, 0, 0, 1, 1;
+  mesh.tets.resize(4, 2);
+  mesh.tets << 0, 4,  //
+      1, 1,           //
+      2, 3,           //
+      3, 2;
+  return mesh;
+}
+
+}  // namespace
+
+TEST(VtuTetDocument, HasTetraConnectivityOffsetsTypesAndThreeDimensionalPoints) {
+  const TetMesh mesh = twoTetrahedra();
+  ASSERT_GT(mesh.sixSignedVolume(0), 0.0);
+  ASSERT_GT(mesh.sixSignedVolume(1), 0.0);
+  Eigen::MatrixXd displacement(3, 5);
+  displacement.setOnes();
+  const std::string document =
+      vtuDocument(mesh, {{"displacement", displacement}}, {{"von_mises", Eigen::MatrixXd::Constant(1, 2, 2.5)}});
+  EXPECT_TRUE(xmlStructureProblem(document).empty()) << xmlStructureProblem(document);
+  EXPECT_EQ(arrayText(document, "Cells", "connectivity"), "0 1 2 3 4 1 3 2");
+  EXPECT_EQ(arrayText(document, "Cells", "offsets"), "4 8");
+  EXPECT_EQ(arrayText(document, "Cells", "types"), "10 10");
+  EXPECT_EQ(arrayText(document, "Points", "Points"), "0 0 0 1 0 0 0 1 0 0 0 1 1 1 1");
+  EXPECT_NE(document.find("<Piece NumberOfPoints=\"5\" NumberOfCells=\"2\">"), std::string::npos);
+}
+
+TEST(VtuTetDocument, RejectsAFieldWithTheWrongNumberOfColumnsNamingIt) {
+  EXPECT_THROW(vtuDocument(twoTetrahedra(), {{"displacement", Eigen::MatrixXd::Zero(3, 4)}}, {}),
+               std::invalid_argument);
+  EXPECT_THROW(vtuDocument(twoTetrahedra(), {}, {{"stress", Eigen::MatrixXd::Zero(6, 3)}}), std::invalid_argument);
+}
+
+}  // namespace stc
