@@ -31,6 +31,18 @@ add_test(NAME cli.solve_writes_every_output
          COMMAND bash -c "for f in reactions.csv contact.csv history.csv summary.json solution.pvd vtu/step_00020.vtu; do test -s ${out}/latin3/$f || { echo missing $f; exit 1; }; done; grep -q '\"termination\": \"max_iterations\"' ${out}/latin3/summary.json")
 set_tests_properties(cli.solve_writes_every_output PROPERTIES DEPENDS cli.solve_not_converged_exits_2 LABELS cli)
 
+# The 3D seed scene (examples/scenes/hemisphere.toml) at small settings: sizes, a solve with its
+# 3D tables and tetrahedron VTU, the svd tables.
+set(hemisphere ${scenes}/hemisphere.toml)
+set(small3d --set mesh.divisions=3 --set time.steps=11)
+stc_cli_test(check_hemisphere_model 0 "model +3D, P1 tetrahedra" check ${hemisphere})
+stc_cli_test(check_hemisphere_interface 0 "contact nodes +737 on boundary 'contact' \\(2211 interface unknowns" check ${hemisphere})
+stc_cli_test(solve_hemisphere_small 0 "fas-apriori: converged" solve ${hemisphere} ${small3d} --out ${out}/hemisphere)
+add_test(NAME cli.solve_hemisphere_writes_3d_tables
+         COMMAND bash -c "head -1 ${out}/hemisphere/reactions.csv | grep -qx 'step,t,normal_force,tangential_force,tangential_force_2,contact_xmin,contact_xmax,n_contact,n_slip' && head -1 ${out}/hemisphere/contact.csv | grep -qx 'step,node,x,y,z,normal_force,tangential_force,tangential_force_2,pressure,shear,shear_2,gap,slip,slip_2,state' && grep -q 'NumberOfComponents=\"6\"' ${out}/hemisphere/vtu/step_00010.vtu && grep -q '10 10 10' ${out}/hemisphere/vtu/step_00010.vtu")
+set_tests_properties(cli.solve_hemisphere_writes_3d_tables PROPERTIES DEPENDS cli.solve_hemisphere_small LABELS cli)
+stc_cli_test(svd_hemisphere_small 0 "99.9" svd ${hemisphere} ${small3d} --out ${out}/svd3d)
+
 # A posteriori space-time SVD (docs/method.md §3): prints the modes for 99%, 99.9%, 99.99% of the energy.
 stc_cli_test(svd_small 0 "99.9" svd ${seed} ${small} --out ${out}/svd)
 

@@ -7,6 +7,7 @@
 #include "latin/local_stage.hpp"
 #include "src/problem/problem.hpp"
 #include "src/solver/contact_law_check.hpp"
+#include "solver/hemisphere_scene.hpp"
 #include "solver/seed_scene.hpp"
 
 namespace {
@@ -88,4 +89,19 @@ TEST_F(LocalStageTest, SlipsWhenTrialLeavesConeAndSticksInside) {
   stc::latin::localStage(problem.contact, s, hat);
   for (int k = 1; k < problem.numSteps(); ++k) EXPECT_EQ(hat.v(1, k), hat.v(1, k - 1));
   EXPECT_GT(kt, 0.0);
+}
+
+// In 3D the local stage projects on the Coulomb disc: the same two properties on random states of
+// the half-ball's interface (three rows per node).
+TEST(LocalStage3d, OutputSatisfiesTheConeLawAndFollowsTheSearchDirection) {
+  const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(3, 11));
+  for (unsigned seed : {1u, 2u}) {
+    const stc::InterfaceHistory s = randomState(problem, seed);
+    stc::InterfaceHistory hat;
+    stc::latin::localStage(problem.contact, s, hat);
+    EXPECT_LE(stc::checkContactLaw(problem, hat).max(), 1e-13) << "seed " << seed;
+    const Eigen::MatrixXd residual =
+        (hat.lambda - s.lambda) - problem.contact.search_direction.asDiagonal() * (hat.v - s.v);
+    EXPECT_LE(residual.cwiseAbs().maxCoeff(), 1e-12 * s.lambda.cwiseAbs().maxCoeff()) << "seed " << seed;
+  }
 }
