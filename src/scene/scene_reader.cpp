@@ -100,29 +100,26 @@ PlaneModel readModel(const TableView& root, int dimension) {
                                                                         : PlaneModel::Stress;
 }
 
-void readHalfDisc(const TableView& mesh, MeshSpec& spec) {
-  if (mesh.has("divisions"))
-    mesh.errors().fail(mesh.keyPath("divisions"), "key 'mesh.divisions' applies to generator = \"half_ball\"");
+// The keys of the built-in generator of the scene's dimension: half_disc (2D) or half_ball (3D,
+// src/mesh/half_ball.hpp); the other generator's own key is refused by name.
+void readGenerator(const TableView& mesh, MeshSpec& spec, int dimension) {
+  const bool ball = dimension == 3;
+  if (const char* foreign = ball ? "arc_nodes" : "divisions"; mesh.has(foreign))
+    mesh.errors().fail(mesh.keyPath(foreign), "key '" + mesh.keyPath(foreign) + "' applies to generator = \"" +
+                                                  (ball ? "half_disc" : "half_ball") + "\"");
   spec.radius = mesh.optionalNumber("radius").value_or(spec.radius);
   requireRange(mesh, "radius", spec.radius, spec.radius > 0.0, "must be > 0");
-  spec.arc_nodes = mesh.optionalInt("arc_nodes").value_or(spec.arc_nodes);
-  requireRange(mesh, "arc_nodes", spec.arc_nodes, spec.arc_nodes >= 3, "must be >= 3");
-  spec.grading = mesh.optionalNumber("grading").value_or(spec.grading);
-  requireRange(mesh, "grading", spec.grading, spec.grading >= 1.0 && spec.grading <= 4.0,
-               "must be in [1, 4] (1 = uniform)");
-}
-
-// The 3D generator: half-ball of src/mesh/half_ball.hpp.
-void readHalfBall(const TableView& mesh, MeshSpec& spec) {
-  if (mesh.has("arc_nodes"))
-    mesh.errors().fail(mesh.keyPath("arc_nodes"), "key 'mesh.arc_nodes' applies to generator = \"half_disc\"");
-  spec.radius = mesh.optionalNumber("radius").value_or(spec.radius);
-  requireRange(mesh, "radius", spec.radius, spec.radius > 0.0, "must be > 0");
-  spec.divisions = mesh.optionalInt("divisions").value_or(spec.divisions);
-  requireRange(mesh, "divisions", spec.divisions, spec.divisions >= 2, "must be >= 2");
-  spec.grading = mesh.optionalNumber("grading").value_or(1.5);
-  requireRange(mesh, "grading", spec.grading, spec.grading >= 1.0 && spec.grading <= 2.0,
-               "must be in [1, 2] (1 = uniform)");
+  if (ball) {
+    spec.divisions = mesh.optionalInt("divisions").value_or(spec.divisions);
+    requireRange(mesh, "divisions", spec.divisions, spec.divisions >= 2, "must be >= 2");
+  } else {
+    spec.arc_nodes = mesh.optionalInt("arc_nodes").value_or(spec.arc_nodes);
+    requireRange(mesh, "arc_nodes", spec.arc_nodes, spec.arc_nodes >= 3, "must be >= 3");
+  }
+  const double max_grading = ball ? 2.0 : 4.0;
+  spec.grading = mesh.optionalNumber("grading").value_or(ball ? 1.5 : spec.grading);
+  requireRange(mesh, "grading", spec.grading, spec.grading >= 1.0 && spec.grading <= max_grading,
+               ball ? "must be in [1, 2] (1 = uniform)" : "must be in [1, 4] (1 = uniform)");
 }
 
 MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, int dimension) {
@@ -139,8 +136,7 @@ MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, in
   if (hasGenerator) {
     spec.generator = dimension == 3 ? readKeyword(mesh, "generator", {"half_ball"})
                                     : readKeyword(mesh, "generator", {"half_disc"});
-    if (dimension == 3) readHalfBall(mesh, spec);
-    else readHalfDisc(mesh, spec);
+    readGenerator(mesh, spec, dimension);
     return spec;
   }
   const char* generator = dimension == 3 ? "half_ball" : "half_disc";

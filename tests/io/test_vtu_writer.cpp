@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "io/scratch_dir.hpp"
+#include "mesh/two_tets.hpp"
 
 namespace stc {
 namespace {
@@ -286,27 +287,11 @@ TEST(PvdDocument, RejectsEmptyFileNamesAndNonFiniteTimes) {
 }  // namespace stc
 
 namespace stc {
-namespace {
 
-/// Two tetrahedra sharing the face (1 2 3): (0 1 2 3) and (4 1 3 2), both of positive volume.
-TetMesh twoTetrahedra() {
-  TetMesh mesh;
-  mesh.nodes.resize(3, 5);
-  mesh.nodes << 0, 1, 0, 0, 1,  //
-      0, 0, 1, 0, 1,            //
-      0, 0, 0, 1, 1;
-  mesh.tets.resize(4, 2);
-  mesh.tets << 0, 4,  //
-      1, 1,           //
-      2, 3,           //
-      3, 2;
-  return mesh;
-}
-
-}  // namespace
+using test::twoTets;
 
 TEST(VtuTetDocument, HasTetraConnectivityOffsetsTypesAndThreeDimensionalPoints) {
-  const TetMesh mesh = twoTetrahedra();
+  const TetMesh mesh = twoTets();
   ASSERT_GT(mesh.sixSignedVolume(0), 0.0);
   ASSERT_GT(mesh.sixSignedVolume(1), 0.0);
   Eigen::MatrixXd displacement(3, 5);
@@ -314,17 +299,17 @@ TEST(VtuTetDocument, HasTetraConnectivityOffsetsTypesAndThreeDimensionalPoints) 
   const std::string document =
       vtuDocument(mesh, {{"displacement", displacement}}, {{"von_mises", Eigen::MatrixXd::Constant(1, 2, 2.5)}});
   EXPECT_TRUE(xmlStructureProblem(document).empty()) << xmlStructureProblem(document);
-  EXPECT_EQ(arrayText(document, "Cells", "connectivity"), "0 1 2 3 4 1 3 2");
+  EXPECT_EQ(arrayText(document, "Cells", "connectivity"), "0 1 2 3 0 2 4 3");
   EXPECT_EQ(arrayText(document, "Cells", "offsets"), "4 8");
   EXPECT_EQ(arrayText(document, "Cells", "types"), "10 10");
-  EXPECT_EQ(arrayText(document, "Points", "Points"), "0 0 0 1 0 0 0 1 0 0 0 1 1 1 1");
+  EXPECT_EQ(arrayText(document, "Points", "Points"), "0 0 0 1 0 0 0 1 0 0 0 1 -1 0 0");
   EXPECT_NE(document.find("<Piece NumberOfPoints=\"5\" NumberOfCells=\"2\">"), std::string::npos);
 }
 
 TEST(VtuTetDocument, RejectsAFieldWithTheWrongNumberOfColumnsNamingIt) {
-  EXPECT_THROW(vtuDocument(twoTetrahedra(), {{"displacement", Eigen::MatrixXd::Zero(3, 4)}}, {}),
+  EXPECT_THROW(vtuDocument(twoTets(), {{"displacement", Eigen::MatrixXd::Zero(3, 4)}}, {}),
                std::invalid_argument);
-  EXPECT_THROW(vtuDocument(twoTetrahedra(), {}, {{"stress", Eigen::MatrixXd::Zero(6, 3)}}), std::invalid_argument);
+  EXPECT_THROW(vtuDocument(twoTets(), {}, {{"stress", Eigen::MatrixXd::Zero(6, 3)}}), std::invalid_argument);
 }
 
 }  // namespace stc

@@ -5,23 +5,11 @@
 
 #include "src/core/input_error.hpp"
 #include "src/mesh/tet_mesh.hpp"
+#include "tests/mesh/two_tets.hpp"
+
+using stc::test::twoTets;
 
 namespace {
-
-// The unit corner tetrahedron (0, e_x, e_y, e_z) and, sharing its face x = 0, its mirror image in x.
-stc::TetMesh twoTets() {
-  stc::TetMesh mesh;
-  mesh.nodes.resize(3, 5);
-  mesh.nodes << 0, 1, 0, 0, -1,  //
-      0, 0, 1, 0, 0,             //
-      0, 0, 0, 1, 0;
-  mesh.tets.resize(4, 2);
-  mesh.tets << 0, 0,  //
-      1, 2,           //
-      2, 4,           //
-      3, 3;
-  return mesh;
-}
 
 std::string messageOf(const stc::TetMesh& mesh) {
   try {
