@@ -14,8 +14,9 @@
 #include <vector>
 
 #include "src/core/input_error.hpp"
+#include "src/mesh/detail/gmsh_sections.hpp"
 
-namespace stc {
+namespace stc::detail {
 namespace {
 
 /// Views into the reader's current line: valid only until the next line is read.
@@ -37,7 +38,10 @@ Tokens split(std::string_view line) {
 /// The start of a line, for quoting in messages.
 std::string quote(std::string_view text) {
   constexpr std::size_t kMax = 40;
-  return "'" + std::string(text.substr(0, kMax)) + (text.size() > kMax ? "...'" : "'");
+  std::string out = "'";  // appended step by step: GCC 12 warns (-Wrestrict, falsely) on a + chain here
+  out.append(text.substr(0, kMax));
+  out.append(text.size() > kMax ? "...'" : "'");
+  return out;
 }
 
 /// Line-by-line access that knows the line number and the section being read, so that every
@@ -112,25 +116,6 @@ class LineReader {
   std::string end_;
 };
 
-/// A 2-node line element as read: node positions in file order, and where it was.
-struct RawEdge {
-  std::array<int, 2> nodes;
-  long long tag;
-  int line;
-};
-
-/// Everything read from the file, before unused nodes are dropped.
-struct GmshData {
-  std::map<std::pair<long long, long long>, std::string> names;  ///< (dim, tag) -> name
-  std::map<long long, std::vector<long long>> curve_groups;      ///< curve -> physical tags
-  std::unordered_map<long long, int> node_index;                 ///< node tag -> file order
-  std::vector<long long> node_tags;
-  std::vector<Eigen::Vector2d> coords;
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<std::pair<long long, int>> triangle_origin;  ///< (element tag, line) per triangle
-  std::map<long long, std::vector<RawEdge>> curve_edges;  ///< curve -> its line elements
-};
-
 void readMeshFormat(LineReader& r) {
   r.enterSection("$MeshFormat");
   r.nextData("the version line");
@@ -187,6 +172,7 @@ void readEntity(LineReader& r, int dim, GmshData& data) {
   if (dim > 0) takeList("bounding entities");
   if (pos != t.size()) r.fail("too many numbers for " + what + " " + std::to_string(tag));
   if (dim == 1) data.curve_groups[tag] = std::move(physicals);
+  if (dim == 2) data.surface_groups[tag] = std::move(physicals);
 }
 
 void readEntities(LineReader& r, GmshData& data) {
@@ -225,10 +211,10 @@ long long readNodeBlock(LineReader& r, GmshData& data) {
     const double x = r.real(c[0], "x of " + node);
     const double y = r.real(c[1], "y of " + node);
     const double z = r.real(c[2], "z of " + node);
-    if (std::abs(z) > 1e-12 * std::max({1.0, std::abs(x), std::abs(y)}))
+    if (data.dimension == 2 && std::abs(z) > 1e-12 * std::max({1.0, std::abs(x), std::abs(y)}))
       r.fail("not a 2D mesh: " + node + " has z = " + std::string(c[2]) +
-             " (all nodes must lie in the plane z = 0)");
-    data.coords.emplace_back(x, y);
+             " (all nodes must lie in the plane z = 0; a volume mesh needs dimension = 3 in the scene)");
+    data.coords.emplace_back(x, y, z);
   }
   return n;
 }
@@ -263,7 +249,34 @@ std::string elementTypeName(long long type) {
          std::string(it->second) + ")");
 }
 
-/// One block of $Elements: triangles and lines are kept, points skipped, anything else refused.
+/// Element types a reader of `dimension` takes: type -> (entity dimension, nodes per element).
+/// 2D: triangles (the body), lines (boundaries), points; 3D: tetrahedra (the body), triangles
+/// (boundaries), lines and points (skipped).
+const std::map<long long, std::pair<long long, std::size_t>>& acceptedTypes(int dimension) {
+  static const std::map<long long, std::pair<long long, std::size_t>> kPlane = {{1, {1, 2}}, {2, {2, 3}}, {15, {0, 1}}};
+  static const std::map<long long, std::pair<long long, std::size_t>> kSolid = {
+      {1, {1, 2}}, {2, {2, 3}}, {4, {3, 4}}, {15, {0, 1}}};
+  return dimension == 3 ? kSolid : kPlane;
+}
+
+/// Keeps one element of a block (its nodes in file order) where the reader of data.dimension wants it.
+void keepElement(GmshData& data, long long type, long long entity, long long tag, int line,
+                 const std::array<int, 4>& nodes) {
+  if (data.dimension == 2 && type == 2) {
+    data.triangles.push_back({nodes[0], nodes[1], nodes[2]});
+    data.triangle_origin.emplace_back(tag, line);
+  } else if (data.dimension == 2 && type == 1) {
+    data.curve_edges[entity].push_back({{nodes[0], nodes[1]}, tag, line});
+  } else if (type == 4) {
+    data.tets.push_back(nodes);
+    data.tet_origin.emplace_back(tag, line);
+  } else if (type == 2) {
+    data.surface_triangles[entity].push_back({{nodes[0], nodes[1], nodes[2]}, tag, line});
+  }
+}
+
+/// One block of $Elements: the body's elements and the boundaries' are kept, points (and lines in
+/// 3D) skipped, anything else refused.
 long long readElementBlock(LineReader& r, GmshData& data) {
   r.nextData("an element block header");
   const Tokens h = r.tokens(4, "(entityDim entityTag elementType numElements) in an element "
@@ -272,11 +285,13 @@ long long readElementBlock(LineReader& r, GmshData& data) {
   const long long entity = r.integer(h[1], "the entity tag");
   const long long type = r.integer(h[2], "the element type");
   const long long n = r.count(h[3], "the number of elements in the block");
-  const std::map<long long, std::pair<long long, std::size_t>> kAccepted = {
-      {1, {1, 2}}, {2, {2, 3}}, {15, {0, 1}}};  // type -> (dimension, nodes per element)
+  const auto& kAccepted = acceptedTypes(data.dimension);
   const auto accepted = kAccepted.find(type);
+  if (data.dimension == 2 && type == 4)
+    r.fail(elementTypeName(type) + ": the file holds a volume mesh; set dimension = 3 in the scene");
   if (accepted == kAccepted.end())
-    r.fail(elementTypeName(type) + " is not supported: the reader takes 3-node triangles, " +
+    r.fail(elementTypeName(type) + " is not supported: the reader takes " +
+           (data.dimension == 3 ? "4-node tetrahedra, 3-node triangles, " : "3-node triangles, ") +
            "2-node lines and points (set Mesh.ElementOrder = 1 and do not recombine)");
   const auto [expected_dim, per] = accepted->second;
   if (dim != expected_dim)
@@ -286,7 +301,7 @@ long long readElementBlock(LineReader& r, GmshData& data) {
     const Tokens t = r.tokens(1 + per, "(element tag, then " + std::to_string(per) +
                                            " node tag(s)) in a block of " + elementTypeName(type));
     const long long tag = r.integer(t[0], "an element tag");
-    std::array<int, 3> nodes{};
+    std::array<int, 4> nodes{};
     for (std::size_t a = 0; a < per; ++a) {
       const long long node = r.integer(t[1 + a], "a node tag");
       const auto it = data.node_index.find(node);
@@ -295,11 +310,7 @@ long long readElementBlock(LineReader& r, GmshData& data) {
                ", which $Nodes does not list");
       nodes[a] = it->second;
     }
-    if (type == 2) {
-      data.triangles.push_back(nodes);
-      data.triangle_origin.emplace_back(tag, r.lineNumber());
-    }
-    if (type == 1) data.curve_edges[entity].push_back({{nodes[0], nodes[1]}, tag, r.lineNumber()});
+    keepElement(data, type, entity, tag, r.lineNumber(), nodes);
   }
   return n;
 }
@@ -312,6 +323,50 @@ void skipSection(LineReader& r, const std::string& header) {
   r.failFile("truncated file (expected " + end + ")");
 }
 
+}  // namespace
+
+GmshData readSections(std::istream& in, const std::string& source_name, int dimension) {
+  LineReader r(in, source_name);
+  if (!r.next()) r.failFile("empty file (expected $MeshFormat)");
+  if (r.line() != "$MeshFormat")
+    r.fail("not a Gmsh mesh: expected $MeshFormat, found " + quote(r.line()));
+  readMeshFormat(r);
+  GmshData data;
+  data.dimension = dimension;
+  std::map<std::string, bool> seen;
+  while (r.next()) {
+    const std::string header = r.line();
+    if (header[0] != '$') r.fail("expected a section such as $Nodes, found " + quote(header));
+    if (header.rfind("$End", 0) == 0) r.fail("unexpected " + quote(header));
+    if (seen[header]) r.fail("second " + header + " section");
+    seen[header] = true;
+    r.enterSection(header);
+    if (header == "$PhysicalNames") readPhysicalNames(r, data);
+    else if (header == "$Entities") readEntities(r, data);
+    else if (header == "$Nodes") readBlocks(r, data, "node", readNodeBlock);
+    else if (header == "$Elements" && !seen["$Nodes"]) r.fail("$Elements before $Nodes");
+    else if (header == "$Elements") readBlocks(r, data, "element", readElementBlock);
+    else skipSection(r, header);
+  }
+  if (!seen["$Nodes"]) r.failFile("no $Nodes section (truncated file?)");
+  if (!seen["$Elements"]) r.failFile("no $Elements section (truncated file?)");
+  if (dimension == 2 && data.triangles.empty())
+    r.failFile("no triangles (with Mesh.SaveAll = 0, Gmsh saves only the elements of physical "
+               "groups: is there a Physical Surface?)");
+  if (dimension == 3 && data.tets.empty())
+    r.failFile("no tetrahedra (with Mesh.SaveAll = 0, Gmsh saves only the elements of physical "
+               "groups: is there a Physical Volume?)");
+  return data;
+}
+
+}  // namespace stc::detail
+
+namespace stc {
+namespace {
+
+using detail::GmshData;
+using detail::RawEdge;
+
 /// Keeps the nodes that triangles use (renumbered in file order) and orients the triangles.
 void buildNodesAndTriangles(const GmshData& data, std::vector<int>& index, Mesh& mesh) {
   index.assign(data.coords.size(), -1);
@@ -322,7 +377,7 @@ void buildNodesAndTriangles(const GmshData& data, std::vector<int>& index, Mesh&
     if (i == 0) i = used++;
   mesh.nodes.resize(2, used);
   for (std::size_t i = 0; i < index.size(); ++i)
-    if (index[i] >= 0) mesh.nodes.col(index[i]) = data.coords[i];
+    if (index[i] >= 0) mesh.nodes.col(index[i]) = data.coords[i].head<2>();
   mesh.triangles.resize(3, static_cast<Eigen::Index>(data.triangles.size()));
   for (std::size_t e = 0; e < data.triangles.size(); ++e)
     for (int a = 0; a < 3; ++a) mesh.triangles(a, e) = index[data.triangles[e][a]];
@@ -377,32 +432,7 @@ void buildGroups(const GmshData& data, const std::vector<int>& index, const std:
 }  // namespace
 
 Mesh parseGmsh(std::istream& in, const std::string& source_name) {
-  LineReader r(in, source_name);
-  if (!r.next()) r.failFile("empty file (expected $MeshFormat)");
-  if (r.line() != "$MeshFormat")
-    r.fail("not a Gmsh mesh: expected $MeshFormat, found " + quote(r.line()));
-  readMeshFormat(r);
-  GmshData data;
-  std::map<std::string, bool> seen;
-  while (r.next()) {
-    const std::string header = r.line();
-    if (header[0] != '$') r.fail("expected a section such as $Nodes, found " + quote(header));
-    if (header.rfind("$End", 0) == 0) r.fail("unexpected " + quote(header));
-    if (seen[header]) r.fail("second " + header + " section");
-    seen[header] = true;
-    r.enterSection(header);
-    if (header == "$PhysicalNames") readPhysicalNames(r, data);
-    else if (header == "$Entities") readEntities(r, data);
-    else if (header == "$Nodes") readBlocks(r, data, "node", readNodeBlock);
-    else if (header == "$Elements" && !seen["$Nodes"]) r.fail("$Elements before $Nodes");
-    else if (header == "$Elements") readBlocks(r, data, "element", readElementBlock);
-    else skipSection(r, header);
-  }
-  if (!seen["$Nodes"]) r.failFile("no $Nodes section (truncated file?)");
-  if (!seen["$Elements"]) r.failFile("no $Elements section (truncated file?)");
-  if (data.triangles.empty())
-    r.failFile("no triangles (with Mesh.SaveAll = 0, Gmsh saves only the elements of physical "
-               "groups: is there a Physical Surface?)");
+  const GmshData data = detail::readSections(in, source_name, 2);
   Mesh mesh;
   std::vector<int> index;
   buildNodesAndTriangles(data, index, mesh);

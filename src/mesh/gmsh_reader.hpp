@@ -1,5 +1,5 @@
 #pragma once
-// Reader for 2D meshes in Gmsh's MSH 4.1 ASCII format ("4.1 0 8"), the format written by
+// Reader for 2D and 3D meshes in Gmsh's MSH 4.1 ASCII format ("4.1 0 8"), the format written by
 // `Mesh.MshFileVersion = 4.1;` (Gmsh reference manual, §"MSH file format", version 4.1).
 //
 // What is read:
@@ -13,6 +13,14 @@
 //    that curve's group names; points (type 15) are ignored. Any other element type (quadrangles,
 //    second-order elements, 3D elements) is an InputError naming the type.
 //  Other sections ($Periodic, $NodeData, ...) are skipped. $Nodes must precede $Elements.
+//
+// 3D (readGmsh3d): nodes anywhere; 4-node tetrahedra (type 4) become TetMesh::tets, in file order,
+// two nodes swapped where the volume is negative (Gmsh does not promise an orientation; a flat
+// tetrahedron is an InputError naming its tag and line); 3-node triangles on a surface that carries
+// physical groups become triangles of a SurfaceGroup for each of its group names, oriented outward
+// (as the boundary face of the body they are; a triangle that is not a boundary face is an
+// InputError); lines and points are skipped; only the nodes tetrahedra use are kept. A 2D read of
+// a file with tetrahedra says to set dimension = 3.
 //
 // Nodes: only the nodes used by some triangle are kept (an unused node would add a zero row to
 // the stiffness), renumbered 0..N-1 in the order of the file. A boundary edge that uses a node
@@ -32,6 +40,7 @@
 #include <string>
 
 #include "src/mesh/mesh.hpp"
+#include "src/mesh/tet_mesh.hpp"
 
 namespace stc {
 
@@ -41,5 +50,9 @@ Mesh readGmsh(const std::filesystem::path& file);
 
 /// Parses MSH 4.1 ASCII text from `in`; `source_name` prefixes every error message.
 Mesh parseGmsh(std::istream& in, const std::string& source_name);
+
+/// The 3D reader (see the top of this header): finalised and validated.
+TetMesh readGmsh3d(const std::filesystem::path& file);
+TetMesh parseGmsh3d(std::istream& in, const std::string& source_name);
 
 }  // namespace stc

@@ -114,7 +114,7 @@ Mesh buildMesh(const MeshSpec& spec) {
 }
 
 TetMesh buildSolidMesh(const MeshSpec& spec) {
-  if (!spec.file.empty()) throw InputError("3D mesh files are not read yet: use generator = \"half_ball\"");
+  if (!spec.file.empty()) return readGmsh3d(spec.file);
   if (spec.generator == "half_ball") return makeHalfBall({spec.radius, spec.divisions, spec.grading});
   throw InputError("mesh generator '" + spec.generator + "' is unknown (known in 3D: half_ball)");
 }

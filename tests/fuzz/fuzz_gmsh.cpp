@@ -1,4 +1,5 @@
-// libFuzzer target: Gmsh MSH 4.1 text -> Mesh (src/mesh/gmsh_reader.hpp). InputError is the
+// libFuzzer target: Gmsh MSH 4.1 text -> Mesh and TetMesh (src/mesh/gmsh_reader.hpp), both readers
+// on every input. InputError is the
 // expected answer to bad input; any other exception, a crash, a sanitizer report, a leak, or a
 // returned mesh that breaks the reader's promises is a finding.
 #include <cstddef>
@@ -44,14 +45,39 @@ void checkMesh(const stc::Mesh& mesh) {
   }
 }
 
+/// The 3D reader's promises: tetrahedra of positive volume on nodes in range, every node used,
+/// group triangles on nodes in range.
+void checkSolid(const stc::TetMesh& mesh) {
+  require(mesh.numElements() > 0, "at least one tetrahedron");
+  std::vector<bool> used(static_cast<std::size_t>(mesh.numNodes()), false);
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    for (int a = 0; a < 4; ++a) {
+      const int id = mesh.tets(a, e);
+      require(id >= 0 && id < mesh.numNodes(), "tetrahedron node ids in range");
+      used[static_cast<std::size_t>(id)] = true;
+    }
+    require(mesh.sixSignedVolume(e) > 0.0, "tetrahedra of positive volume");
+  }
+  for (bool u : used) require(u, "every node is used by a tetrahedron");
+  for (const auto& [name, group] : mesh.groups)
+    for (const auto& t : group.triangles)
+      for (int id : t) require(id >= 0 && id < mesh.numNodes(), "group triangle node ids in range");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  const std::string text(reinterpret_cast<const char*>(data), size);
   try {
+    std::istringstream in(text);
     checkMesh(stc::parseGmsh(in, "fuzz.msh"));
   } catch (const stc::InputError&) {
     // The expected answer to bad input; anything else propagates and is reported as a crash.
+  }
+  try {
+    std::istringstream in(text);
+    checkSolid(stc::parseGmsh3d(in, "fuzz.msh"));
+  } catch (const stc::InputError&) {
   }
   return 0;
 }

@@ -174,7 +174,7 @@ TEST(GmshReader, RefusesOtherVersionsAndBinaryNamingTheVersion) {
 TEST(GmshReader, RefusesNodeOutsidePlaneAsNot2D) {
   const std::string message = errorOf(replaced(kSquare, "1 1 0\n0 1 0", "1 1 0.5\n0 1 0"));
   EXPECT_EQ(message, "square.msh: line 35: not a 2D mesh: node 3 has z = 0.5 (all nodes must lie "
-                     "in the plane z = 0)");
+                     "in the plane z = 0; a volume mesh needs dimension = 3 in the scene)");
 }
 
 TEST(GmshReader, NamesLineAndNodeOfShortCoordinateLine) {

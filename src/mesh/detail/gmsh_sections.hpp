@@ -1,0 +1,52 @@
+#pragma once
+// What the Gmsh MSH 4.1 reader (src/mesh/gmsh_reader.hpp) reads from a file before it builds a mesh:
+// shared by the 2D build (gmsh_reader.cpp) and the 3D one (gmsh_reader3d.cpp). Internal.
+#include <Eigen/Core>
+#include <array>
+#include <istream>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace stc::detail {
+
+/// A 2-node line element as read: node positions in file order, and where it was.
+struct RawEdge {
+  std::array<int, 2> nodes;
+  long long tag;
+  int line;
+};
+
+/// A 3-node triangle on a surface entity (3D meshes: a boundary face), as read.
+struct RawTriangle {
+  std::array<int, 3> nodes;
+  long long tag;
+  int line;
+};
+
+/// Everything read from the file, before unused nodes are dropped. `dimension` (2 or 3) is what
+/// the caller reads: it decides which elements are the body and which the named boundaries.
+struct GmshData {
+  int dimension = 2;
+  std::map<std::pair<long long, long long>, std::string> names;  ///< (dim, tag) -> name
+  std::map<long long, std::vector<long long>> curve_groups;      ///< curve -> physical tags
+  std::map<long long, std::vector<long long>> surface_groups;    ///< surface -> physical tags
+  std::unordered_map<long long, int> node_index;                 ///< node tag -> file order
+  std::vector<long long> node_tags;
+  std::vector<Eigen::Vector3d> coords;
+  std::vector<std::array<int, 3>> triangles;               ///< 2D: the body
+  std::vector<std::pair<long long, int>> triangle_origin;  ///< (element tag, line) per triangle
+  std::map<long long, std::vector<RawEdge>> curve_edges;  ///< curve -> its line elements (2D)
+  std::vector<std::array<int, 4>> tets;                    ///< 3D: the body
+  std::vector<std::pair<long long, int>> tet_origin;       ///< (element tag, line) per tetrahedron
+  std::map<long long, std::vector<RawTriangle>> surface_triangles;  ///< surface -> its triangles (3D)
+};
+
+/// Reads every section of an MSH 4.1 ASCII file for a reader of `dimension` (2 or 3): nodes (z must
+/// be 0 in 2D), the body's elements (triangles in 2D, tetrahedra in 3D) and the boundary elements
+/// (lines on curves in 2D, triangles on surfaces in 3D). Throws InputError naming file and line.
+GmshData readSections(std::istream& in, const std::string& source_name, int dimension);
+
+}  // namespace stc::detail

@@ -1,0 +1,109 @@
+// The 3D build of the Gmsh reader (src/mesh/gmsh_reader.hpp): tetrahedra and named boundary surfaces.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+
+#include "src/core/input_error.hpp"
+#include "src/mesh/detail/gmsh_sections.hpp"
+#include "src/mesh/gmsh_reader.hpp"
+
+namespace stc {
+namespace {
+
+using detail::GmshData;
+using detail::RawTriangle;
+
+std::string at(const std::string& source, int line) { return source + ": line " + std::to_string(line) + ": "; }
+
+// Keeps the nodes that tetrahedra use (renumbered in file order); `index` maps file order to them.
+void buildNodesAndTets(const GmshData& data, std::vector<int>& index, TetMesh& mesh) {
+  index.assign(data.coords.size(), -1);
+  for (const auto& tet : data.tets)
+    for (int node : tet) index[node] = 0;
+  int used = 0;
+  for (int& i : index)
+    if (i == 0) i = used++;
+  mesh.nodes.resize(3, used);
+  for (std::size_t i = 0; i < index.size(); ++i)
+    if (index[i] >= 0) mesh.nodes.col(index[i]) = data.coords[i];
+  mesh.tets.resize(4, static_cast<Eigen::Index>(data.tets.size()));
+  for (std::size_t e = 0; e < data.tets.size(); ++e)
+    for (int a = 0; a < 4; ++a) mesh.tets(a, static_cast<Eigen::Index>(e)) = index[data.tets[e][a]];
+}
+
+// Gmsh does not promise an orientation of tetrahedra: a negative one gets two nodes swapped; a
+// flat one (|volume| ≤ 1e-12 of the mean, as TetMesh::validate) is named by element tag and line.
+void orientTets(const GmshData& data, const std::string& source, TetMesh& mesh) {
+  double mean = 0.0;
+  for (int e = 0; e < mesh.numElements(); ++e) mean += std::abs(mesh.sixSignedVolume(e));
+  mean /= std::max(1, mesh.numElements());
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const double volume6 = mesh.sixSignedVolume(e);
+    if (!(std::abs(volume6) > 1e-12 * mean)) {
+      const auto [tag, line] = data.tet_origin[static_cast<std::size_t>(e)];
+      throw InputError(at(source, line) + "tetrahedron " + std::to_string(tag) + " is degenerate (zero volume)");
+    }
+    if (volume6 < 0.0) std::swap(mesh.tets(2, e), mesh.tets(3, e));
+  }
+}
+
+// Every triangle of a surface with physical groups joins each group, oriented as the boundary
+// face of the body it is (outward); a triangle that is not a boundary face is an InputError.
+void buildSurfaceGroups(const GmshData& data, const std::vector<int>& index, const std::string& source,
+                        TetMesh& mesh) {
+  std::map<std::array<int, 3>, std::array<int, 3>> outward;  // sorted node ids → oriented face
+  for (const auto& face : boundaryTriangles(mesh)) {
+    std::array<int, 3> key = face;
+    std::sort(key.begin(), key.end());
+    outward.emplace(key, face);
+  }
+  for (const auto& [surface, triangles] : data.surface_triangles) {
+    const auto groups = data.surface_groups.find(surface);
+    if (groups == data.surface_groups.end())
+      throw InputError(at(source, triangles.front().line) + "triangles on surface " + std::to_string(surface) +
+                       ", which $Entities does not list");
+    for (long long physical : groups->second) {
+      const auto named = data.names.find({2, physical});
+      const std::string name = named == data.names.end() ? std::to_string(physical) : named->second;
+      for (const RawTriangle& t : triangles) {
+        std::array<int, 3> key{};
+        for (int a = 0; a < 3; ++a) key[a] = index[t.nodes[a]];
+        std::sort(key.begin(), key.end());
+        const auto face = outward.find(key);
+        if (key[0] < 0 || face == outward.end())
+          throw InputError(at(source, t.line) + "triangle " + std::to_string(t.tag) + " of boundary '" + name +
+                           "' is not a boundary face of the tetrahedra");
+        mesh.groups[name].triangles.push_back(face->second);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+TetMesh parseGmsh3d(std::istream& in, const std::string& source_name) {
+  const GmshData data = detail::readSections(in, source_name, 3);
+  TetMesh mesh;
+  std::vector<int> index;
+  buildNodesAndTets(data, index, mesh);
+  orientTets(data, source_name, mesh);
+  buildSurfaceGroups(data, index, source_name, mesh);
+  mesh.finalizeGroups();
+  try {
+    mesh.validate();
+  } catch (const InputError& e) {
+    throw InputError(source_name + ": " + e.what());
+  }
+  return mesh;
+}
+
+TetMesh readGmsh3d(const std::filesystem::path& file) {
+  std::error_code ec;  // an ifstream "opens" a directory, then reads nothing
+  std::ifstream in(file);
+  if (!in || std::filesystem::is_directory(file, ec))
+    throw InputError("cannot open mesh file '" + file.string() + "'");
+  return parseGmsh3d(in, file.string());
+}
+
+}  // namespace stc
