@@ -1,0 +1,81 @@
+// Problem assembly of 3D scenes: a Gmsh volume mesh (tests/mesh/data/cube.msh) with Dirichlet
+// histories on a surface, face-area loads, and the interface on another surface, solved by the
+// incremental solver and by LATIN to the same answer.
+#include <gtest/gtest.h>
+
+#include "src/core/input_error.hpp"
+#include "src/problem/problem.hpp"
+#include "src/solver/incremental_solver.hpp"
+#include "src/strategies/solve_by_name.hpp"
+
+namespace {
+
+// The unit cube above the rigid plane z = −0.01, its top driven down by 0.02 in total (0.01 past
+// first contact), x and y of the top held; frictionless contact on the bottom face.
+stc::Scene cubeScene() {
+  stc::Scene scene;
+  scene.name = "cube";
+  scene.dimension = 3;
+  scene.mesh.file = std::string(STC_SOURCE_DIR) + "/tests/mesh/data/cube.msh";
+  scene.material = {3000.0, 0.3};
+  scene.obstacle.point = Eigen::Vector3d(0.0, 0.0, -0.01);
+  scene.obstacle.normal = Eigen::Vector3d(0.0, 0.0, 1.0);
+  scene.contact.boundary = "bottom";
+  scene.time.steps = 5;
+  scene.dirichlet.push_back({"top", stc::Component::X, {{0.0}, {0.0}}});
+  scene.dirichlet.push_back({"top", stc::Component::Y, {{0.0}, {0.0}}});
+  scene.dirichlet.push_back({"top", stc::Component::Z, {{0.0, 1.0}, {0.0, -0.02}}});
+  scene.output.vtu = false;
+  return scene;
+}
+
+}  // namespace
+
+TEST(Problem3d, CubeFromAGmshFileHasItsSizesAndInterface) {
+  const stc::Problem p = stc::buildProblem(cubeScene());
+  EXPECT_EQ(p.dimension, 3);
+  EXPECT_EQ(p.numNodes(), 8);
+  EXPECT_EQ(p.numDofs(), 24);
+  EXPECT_EQ(p.numFreeDofs(), 12);  // the bottom's four nodes
+  EXPECT_EQ(p.contact.size(), 4);
+  EXPECT_NEAR(p.contact.tributary.sum(), 1.0, 1e-15);  // the bottom face's area
+  EXPECT_NEAR(p.contact.initial_gap.minCoeff(), 0.01, 1e-15);
+  EXPECT_NEAR(p.length_scale, 1.0, 1e-15);  // a mesh file: the largest extent
+}
+
+// A total force on a face is shared by area: each triangle gives a third of its share to each node.
+TEST(Problem3d, FaceLoadIsSpreadByArea) {
+  stc::Scene scene = cubeScene();
+  scene.dirichlet.pop_back();
+  scene.dirichlet.push_back({"top", stc::Component::Z, {{0.0}, {0.0}}});
+  scene.contact.boundary = "top";  // keep the bottom free for the load (its contact is irrelevant here)
+  scene.obstacle.point = Eigen::Vector3d(0.0, 0.0, 2.0);
+  scene.obstacle.normal = Eigen::Vector3d(0.0, 0.0, -1.0);
+  scene.loads.push_back({"bottom", stc::Component::Z, {{0.0}, {-6.0}}});
+  EXPECT_THROW(stc::buildProblem(scene), stc::InputError);  // the top is fully driven: no contact node
+  scene.contact.boundary = "bottom";
+  scene.obstacle.point = Eigen::Vector3d(0.0, 0.0, -0.01);
+  scene.obstacle.normal = Eigen::Vector3d(0.0, 0.0, 1.0);
+  const stc::Problem p = stc::buildProblem(scene);
+  const Eigen::VectorXd f = p.load(0);
+  // Bottom triangles (1, 2, 4) and (1, 3, 4) of area 1/2: nodes 1 and 4 (ids 0, 3) get 2 × 1/6 of the
+  // total, nodes 2 and 3 (ids 1, 2) 1/6.
+  const double shares[4] = {2.0, 1.0, 1.0, 2.0};
+  for (int node = 0; node < 4; ++node) EXPECT_NEAR(f[p.free_index[3 * node + 2]], -6.0 * shares[node] / 6.0, 1e-14);
+}
+
+TEST(Problem3d, CubePressedOnThePlaneSolvesTheSameByIncrementalAndLatin) {
+  const stc::Scene scene = cubeScene();
+  const stc::Problem p = stc::buildProblem(scene);
+  const stc::SolveResult incremental = stc::solveIncremental(p);
+  ASSERT_TRUE(incremental.summary.converged()) << incremental.summary.message;
+  stc::SolverSpec spec = scene.solver;
+  spec.tolerance = 1e-9;
+  const stc::SolveResult latin = stc::solveByName("latin", p, spec, {});
+  ASSERT_TRUE(latin.summary.converged()) << latin.summary.message;
+  const Eigen::VectorXd a = incremental.interface.lambda.col(4), b = latin.interface.lambda.col(4);
+  double normal = 0.0;
+  for (int i = 0; i < 4; ++i) normal += a[3 * i];
+  EXPECT_GT(normal, 0.0);
+  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-6 * a.cwiseAbs().maxCoeff());
+}
