@@ -359,6 +359,14 @@ GmshData readSections(std::istream& in, const std::string& source_name, int dime
   return data;
 }
 
+std::ifstream openMeshFile(const std::filesystem::path& file) {
+  std::error_code ec;
+  std::ifstream in(file);
+  if (!in || std::filesystem::is_directory(file, ec))
+    throw InputError("cannot open mesh file '" + file.string() + "'");
+  return in;
+}
+
 }  // namespace stc::detail
 
 namespace stc {
@@ -438,20 +446,12 @@ Mesh parseGmsh(std::istream& in, const std::string& source_name) {
   buildNodesAndTriangles(data, index, mesh);
   checkTriangles(data, mesh, source_name);
   buildGroups(data, index, source_name, mesh);
-  mesh.finalizeGroups();
-  try {
-    mesh.validate();
-  } catch (const InputError& e) {
-    throw InputError(source_name + ": " + e.what());
-  }
+  detail::finishMesh(mesh, source_name);
   return mesh;
 }
 
 Mesh readGmsh(const std::filesystem::path& file) {
-  std::error_code ec;  // an ifstream "opens" a directory, then reads nothing
-  std::ifstream in(file);
-  if (!in || std::filesystem::is_directory(file, ec))
-    throw InputError("cannot open mesh file '" + file.string() + "'");
+  std::ifstream in = detail::openMeshFile(file);
   return parseGmsh(in, file.string());
 }
 

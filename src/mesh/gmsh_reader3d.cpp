@@ -89,20 +89,12 @@ TetMesh parseGmsh3d(std::istream& in, const std::string& source_name) {
   buildNodesAndTets(data, index, mesh);
   orientTets(data, source_name, mesh);
   buildSurfaceGroups(data, index, source_name, mesh);
-  mesh.finalizeGroups();
-  try {
-    mesh.validate();
-  } catch (const InputError& e) {
-    throw InputError(source_name + ": " + e.what());
-  }
+  detail::finishMesh(mesh, source_name);
   return mesh;
 }
 
 TetMesh readGmsh3d(const std::filesystem::path& file) {
-  std::error_code ec;  // an ifstream "opens" a directory, then reads nothing
-  std::ifstream in(file);
-  if (!in || std::filesystem::is_directory(file, ec))
-    throw InputError("cannot open mesh file '" + file.string() + "'");
+  std::ifstream in = detail::openMeshFile(file);
   return parseGmsh3d(in, file.string());
 }
 

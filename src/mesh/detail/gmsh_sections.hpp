@@ -3,12 +3,16 @@
 // shared by the 2D build (gmsh_reader.cpp) and the 3D one (gmsh_reader3d.cpp). Internal.
 #include <Eigen/Core>
 #include <array>
+#include <filesystem>
+#include <fstream>
 #include <istream>
 #include <map>
 #include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
+
+#include "src/core/input_error.hpp"
 
 namespace stc::detail {
 
@@ -48,5 +52,21 @@ struct GmshData {
 /// be 0 in 2D), the body's elements (triangles in 2D, tetrahedra in 3D) and the boundary elements
 /// (lines on curves in 2D, triangles on surfaces in 3D). Throws InputError naming file and line.
 GmshData readSections(std::istream& in, const std::string& source_name, int dimension);
+
+/// Finalises the groups of a built mesh (Mesh or TetMesh) and validates it, prefixing any
+/// InputError with the file name.
+template <class MeshT>
+void finishMesh(MeshT& mesh, const std::string& source_name) {
+  mesh.finalizeGroups();
+  try {
+    mesh.validate();
+  } catch (const InputError& e) {
+    throw InputError(source_name + ": " + e.what());
+  }
+}
+
+/// Opens `file` for reading; InputError "cannot open mesh file 'X'" if it cannot (a folder included:
+/// an ifstream "opens" a directory, then reads nothing).
+std::ifstream openMeshFile(const std::filesystem::path& file);
 
 }  // namespace stc::detail
