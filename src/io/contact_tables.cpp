@@ -6,33 +6,6 @@
 #include "src/contact/contact_state_table.hpp"
 
 namespace stc {
-namespace {
-
-
-// contact.csv of a 3D scene: the 2D columns with z and the second tangential components.
-void writeContactCsv3d(std::ostream& out, const Problem& problem, const SolveResult& result) {
-  const auto& c = problem.contact;
-  const auto& s = result.interface;
-  const auto& x = problem.solid.nodes;
-  const ContactStateTable states(problem.contact, result.admissible());
-  out.precision(12);
-  out << "step,node,x,y,z,normal_force,tangential_force,tangential_force_2,pressure,shear,shear_2,gap,slip,slip_2,"
-         "state\n";
-  for (int k = 0; k < problem.numSteps(); ++k)
-    for (int i = 0; i < c.size(); ++i) {
-      const int n = 3 * i, node = c.nodes[i];
-      const double area = c.tributary[i];
-      const Eigen::Vector2d lt = s.lambda.col(k).segment<2>(n + 1);
-      Eigen::Vector2d slip = s.v.col(k).segment<2>(n + 1);
-      if (k > 0) slip -= s.v.col(k - 1).segment<2>(n + 1);
-      out << k << ',' << node << ',' << x(0, node) << ',' << x(1, node) << ',' << x(2, node) << ','
-          << s.lambda(n, k) << ',' << lt[0] << ',' << lt[1] << ',' << s.lambda(n, k) / area << ',' << lt[0] / area
-          << ',' << lt[1] / area << ',' << c.initial_gap[i] + s.v(n, k) << ',' << slip[0] << ',' << slip[1] << ','
-          << toString(states.state(i, k)) << '\n';
-    }
-}
-
-}  // namespace
 
 ReactionTable reactionTable(const Problem& problem, const SolveResult& result) {
   const auto& c = problem.contact;
@@ -85,19 +58,30 @@ void writeReactionsCsv(std::ostream& out, const Problem& problem, const SolveRes
 }
 
 void writeContactCsv(std::ostream& out, const Problem& problem, const SolveResult& result) {
-  if (problem.dimension == 3) return writeContactCsv3d(out, problem, result);
   const auto& c = problem.contact;
   const auto& s = result.interface;
+  const int d = c.dimension;
+  const Eigen::MatrixXd x = problem.nodePositions();
   const ContactStateTable states(problem.contact, result.admissible());
   out.precision(12);
-  out << "step,node,x,y,normal_force,tangential_force,pressure,shear,gap,slip,state\n";
+  // Columns for d = 2; in 3D the position gains z and each tangential quantity its τ_2 component.
+  const bool three_d = d == 3;
+  out << "step,node,x,y," << (three_d ? "z," : "") << "normal_force,tangential_force,"
+      << (three_d ? "tangential_force_2," : "") << "pressure,shear," << (three_d ? "shear_2," : "") << "gap,slip,"
+      << (three_d ? "slip_2," : "") << "state\n";
   for (int k = 0; k < problem.numSteps(); ++k)
     for (int i = 0; i < c.size(); ++i) {
-      const double ln = s.lambda(2 * i, k), lt = s.lambda(2 * i + 1, k);
-      out << k << ',' << c.nodes[i] << ',' << problem.mesh.nodes(0, c.nodes[i]) << ','
-          << problem.mesh.nodes(1, c.nodes[i]) << ',' << ln << ',' << lt << ',' << ln / c.tributary[i] << ','
-          << lt / c.tributary[i] << ',' << c.initial_gap[i] + s.v(2 * i, k) << ','
-          << s.v(2 * i + 1, k) - (k > 0 ? s.v(2 * i + 1, k - 1) : 0.0) << ',' << toString(states.state(i, k)) << '\n';
+      const int n = c.normalRow(i), node = c.nodes[i];
+      const double ln = s.lambda(n, k);
+      out << k << ',' << node;
+      for (int a = 0; a < d; ++a) out << ',' << x(a, node);
+      out << ',' << ln;
+      for (int a = 1; a < d; ++a) out << ',' << s.lambda(n + a, k);
+      out << ',' << ln / c.tributary[i];
+      for (int a = 1; a < d; ++a) out << ',' << s.lambda(n + a, k) / c.tributary[i];
+      out << ',' << c.initial_gap[i] + s.v(n, k);
+      for (int a = 1; a < d; ++a) out << ',' << s.v(n + a, k) - (k > 0 ? s.v(n + a, k - 1) : 0.0);
+      out << ',' << toString(states.state(i, k)) << '\n';
     }
 }
 
