@@ -3,6 +3,8 @@
 #include <Eigen/LU>
 #include <algorithm>
 
+#include "src/solver/newton_instant.hpp"
+
 namespace stc {
 
 ConeLaw::ConeLaw(const Problem& problem, LazyDelassus& delassus)
@@ -120,7 +122,7 @@ bool ConeLaw::newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eig
 }
 
 double ConeLaw::forceScale(const Eigen::VectorXd& lambda) const {
-  return std::max(lambda.lpNorm<Eigen::Infinity>(), rho_max_ * v0_.lpNorm<Eigen::Infinity>());
+  return stc::forceScale(lambda, rho_max_, v0_);
 }
 
 }  // namespace stc

@@ -126,7 +126,7 @@ struct PlaneLaw {
   }
   // S_k = max(‖λ‖∞, max_i ρ_i ‖v_0(:, k)‖∞) (header).
   double forceScale(const Eigen::VectorXd& lambda) const {
-    return std::max(lambda.lpNorm<Eigen::Infinity>(), d.rho_max * d.v0.lpNorm<Eigen::Infinity>());
+    return stc::forceScale(lambda, d.rho_max, d.v0);
   }
 };
 

@@ -5,21 +5,24 @@
 namespace stc {
 
 LazyDelassus::LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free)
-    : problem_(problem), factor_(stiffness_free), d_(problem.contact.dimension), slot_(problem.contact.size(), -1) {}
+    : B_(problem.contact.B),
+      Bt_(problem.contact.B.transpose()),
+      factor_(stiffness_free),
+      d_(problem.contact.dimension),
+      slot_(problem.contact.size(), -1) {}
 
 void LazyDelassus::ensure(const std::vector<int>& nodes) {
   std::vector<int> missing;
   for (int j : nodes)
     if (slot_[j] < 0 && std::find(missing.begin(), missing.end(), j) == missing.end()) missing.push_back(j);
   if (missing.empty()) return;
-  const auto& B = problem_.contact.B;
+  const auto& B = B_;
   const int needed = (count_ + static_cast<int>(missing.size())) * d_;
   if (needed > columns_.cols())  // grow by doubling: amortised copies
     columns_.conservativeResize(B.rows(), std::max<Eigen::Index>(needed, 2 * columns_.cols()));
   Eigen::MatrixXd rhs(B.cols(), d_ * static_cast<Eigen::Index>(missing.size()));
-  const Eigen::SparseMatrix<double> Bt = B.transpose();
   for (std::size_t p = 0; p < missing.size(); ++p)
-    for (int a = 0; a < d_; ++a) rhs.col(static_cast<Eigen::Index>(p) * d_ + a) = Bt.col(d_ * missing[p] + a);
+    for (int a = 0; a < d_; ++a) rhs.col(static_cast<Eigen::Index>(p) * d_ + a) = Bt_.col(d_ * missing[p] + a);
   const Eigen::MatrixXd w = B * factor_.solve(rhs);
   for (std::size_t p = 0; p < missing.size(); ++p) {
     slot_[missing[p]] = count_;

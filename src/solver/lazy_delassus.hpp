@@ -31,7 +31,8 @@ class LazyDelassus {
   double bytes() const { return 8.0 * static_cast<double>(columns_.rows()) * d_ * count_; }
 
  private:
-  const Problem& problem_;
+  const Eigen::SparseMatrix<double>& B_;
+  const Eigen::SparseMatrix<double> Bt_;  // Bᵀ, its columns the right-hand sides of a node
   const SpdFactor& factor_;
   int d_;
   std::vector<int> slot_;    // per contact node: its block among the columns, −1 if not computed

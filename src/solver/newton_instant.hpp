@@ -9,6 +9,7 @@
 //   bool newtonStep(const Eigen::VectorXd& lambda, const Evaluation&, Eigen::VectorXd& step);
 //   double forceScale(const Eigen::VectorXd& lambda) const;  // S_k of incremental_solver.hpp
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -23,6 +24,12 @@ struct InstantOutcome {
   bool converged = false;
   std::string failure;
 };
+
+/// The force scale S_k = max(‖λ‖∞, ρ_max ‖v_0(:, k)‖∞) of incremental_solver.hpp: the largest
+/// contact force, or before any builds up, the force that would push a node back by the free motion.
+inline double forceScale(const Eigen::VectorXd& lambda, double rho_max, const Eigen::VectorXd& v0) {
+  return std::max(lambda.lpNorm<Eigen::Infinity>(), rho_max * v0.lpNorm<Eigen::Infinity>());
+}
 
 namespace newton {
 
