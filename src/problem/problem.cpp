@@ -115,7 +115,7 @@ Mesh buildMesh(const MeshSpec& spec) {
 
 TetMesh buildSolidMesh(const MeshSpec& spec) {
   if (!spec.file.empty()) return readGmsh3d(spec.file);
-  if (spec.generator == "half_ball") return makeHalfBall({spec.radius, spec.divisions, spec.grading});
+  if (spec.generator == "half_ball") return makeHalfBall({spec.radius, spec.divisions, spec.grading, spec.core});
   throw InputError("mesh generator '" + spec.generator + "' is unknown (known in 3D: half_ball)");
 }
 

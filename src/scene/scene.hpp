@@ -23,6 +23,8 @@ struct MeshSpec {
   double grading = 1.135;             ///< half_disc: growth of the element size per ring inward (1 = uniform);
                                       ///< half_ball: grading toward the pole, in [1, 2] (default 1.5)
   int divisions = 8;                  ///< half_ball: cells along the radius (>= 2; src/mesh/half_ball.hpp)
+  double core = 0.0;                  ///< half_ball: 0, or the half-width in (0, 1) of the uniformly meshed
+                                      ///< core around the pole, in units of R (divisions then counts its cells)
 };
 
 /// [material]: isotropic linear elasticity.

@@ -104,14 +104,19 @@ PlaneModel readModel(const TableView& root, int dimension) {
 // src/mesh/half_ball.hpp); the other generator's own key is refused by name.
 void readGenerator(const TableView& mesh, MeshSpec& spec, int dimension) {
   const bool ball = dimension == 3;
-  if (const char* foreign = ball ? "arc_nodes" : "divisions"; mesh.has(foreign))
-    mesh.errors().fail(mesh.keyPath(foreign), "key '" + mesh.keyPath(foreign) + "' applies to generator = \"" +
-                                                  (ball ? "half_disc" : "half_ball") + "\"");
+  const std::vector<const char*> foreign_keys = ball ? std::vector{"arc_nodes"} : std::vector{"divisions", "core"};
+  for (const char* foreign : foreign_keys)
+    if (mesh.has(foreign))
+      mesh.errors().fail(mesh.keyPath(foreign), "key '" + mesh.keyPath(foreign) + "' applies to generator = \"" +
+                                                    (ball ? "half_disc" : "half_ball") + "\"");
   spec.radius = mesh.optionalNumber("radius").value_or(spec.radius);
   requireRange(mesh, "radius", spec.radius, spec.radius > 0.0, "must be > 0");
   if (ball) {
     spec.divisions = mesh.optionalInt("divisions").value_or(spec.divisions);
     requireRange(mesh, "divisions", spec.divisions, spec.divisions >= 2, "must be >= 2");
+    spec.core = mesh.optionalNumber("core").value_or(spec.core);
+    requireRange(mesh, "core", spec.core, spec.core == 0.0 || (spec.core > 0.0 && spec.core < 1.0),
+                 "must be 0 (no core) or in (0, 1)");
   } else {
     spec.arc_nodes = mesh.optionalInt("arc_nodes").value_or(spec.arc_nodes);
     requireRange(mesh, "arc_nodes", spec.arc_nodes, spec.arc_nodes >= 3, "must be >= 3");
@@ -124,7 +129,7 @@ void readGenerator(const TableView& mesh, MeshSpec& spec, int dimension) {
 
 MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, int dimension) {
   const TableView mesh =
-      root.requiredTable("mesh", {"generator", "file", "radius", "arc_nodes", "grading", "divisions"});
+      root.requiredTable("mesh", {"generator", "file", "radius", "arc_nodes", "grading", "divisions", "core"});
   const ErrorReporter& errors = mesh.errors();
   const bool hasGenerator = mesh.has("generator");
   if (hasGenerator == mesh.has("file")) {
@@ -140,7 +145,7 @@ MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, in
     return spec;
   }
   const char* generator = dimension == 3 ? "half_ball" : "half_disc";
-  for (const std::string_view key : {"radius", "arc_nodes", "grading", "divisions"}) {
+  for (const std::string_view key : {"radius", "arc_nodes", "grading", "divisions", "core"}) {
     if (mesh.has(key)) {
       errors.fail(mesh.keyPath(key), "key '" + mesh.keyPath(key) + "' applies to generator = \"" + generator +
                                          "\", not to a mesh file");

@@ -34,10 +34,15 @@ TEST(SceneReader3d, HemisphereReadsEveryThreeDimensionalValue) {
   EXPECT_EQ(s.mesh.generator, "half_ball");
   EXPECT_EQ(s.mesh.divisions, 8);
   EXPECT_EQ(s.mesh.grading, 1.5);
+  EXPECT_EQ(s.mesh.core, 0.0);
   EXPECT_EQ(s.obstacle.point, Eigen::Vector3d(0.0, 0.0, -1.01));
   EXPECT_EQ(s.obstacle.normal, Eigen::Vector3d(0.0, 0.0, 1.0));
   ASSERT_EQ(s.dirichlet.size(), 3u);
   EXPECT_EQ(s.dirichlet[2].component, Component::Z);
+}
+
+TEST(SceneReader3d, CoreOfTheHalfBall) {
+  EXPECT_EQ(readScene(kHemisphere, {"mesh.core=0.07"}).mesh.core, 0.07);
 }
 
 TEST(SceneReader3d, DimensionIsTwoOrThree) {
@@ -49,6 +54,14 @@ TEST(SceneReader3d, GeneratorAndItsKeysFollowTheDimension) {
   EXPECT_THAT(errorOf({"mesh.arc_nodes=31"}), HasSubstr("key 'mesh.arc_nodes' applies to generator = \"half_disc\""));
   EXPECT_THAT(errorOf({"mesh.grading=2.5"}), HasSubstr("key 'mesh.grading' = 2.5 is out of range: must be in [1, 2]"));
   EXPECT_THAT(errorOf({"mesh.divisions=1"}), HasSubstr("key 'mesh.divisions' = 1 is out of range: must be >= 2"));
+  EXPECT_THAT(errorOf({"mesh.core=1.5"}),
+              HasSubstr("key 'mesh.core' = 1.5 is out of range: must be 0 (no core) or in (0, 1)"));
+  try {
+    readScene(std::filesystem::path(STC_SOURCE_DIR) / "examples/scenes/hemicylinder.toml", {"mesh.core=0.1"});
+    ADD_FAILURE() << "mesh.core accepted in a 2D scene";
+  } catch (const InputError& error) {
+    EXPECT_THAT(std::string(error.what()), HasSubstr("key 'mesh.core' applies to generator = \"half_ball\""));
+  }
   EXPECT_THAT(errorOf({"model.plane=strain"}), HasSubstr("applies to 2D scenes only"));
 }
 
