@@ -8,10 +8,10 @@
 // a/R ≈ 0.07: the finite body perturbs Hertz by O((a/R)²) (≈ 0.5 %, as in 2D, test_hertz.cpp).
 //
 // Measured (docs/validation_3d.md; `--gtest_also_run_disabled_tests --gtest_filter='Hertz3d.*'`):
-//   divisions      3      4      5      6      8
-//   a/h          3.1    4.1    5.2    6.2    8.2
-//   error a    −3.6 % −2.3 % −1.6 % −1.3 % −0.7 %
-//   error p0   +5.9 % +3.8 % +2.7 % +1.8 % +1.0 %
+//   divisions      3      4      6      8
+//   a/h          3.1    4.1    6.2    8.2
+//   error a    −3.6 % −2.3 % −1.3 % −0.7 %
+//   error p0   +5.9 % +3.8 % +1.8 % +1.0 %
 // i.e. first order in h/a: |error a| ≈ (0.05–0.11) h/a and |error p0| ≈ (0.08–0.18) h/a.
 #include <gtest/gtest.h>
 #include <gsl/gsl_fit.h>
