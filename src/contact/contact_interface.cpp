@@ -18,18 +18,30 @@ std::string describeNode(const Eigen::MatrixXd& positions, int node) {
   return out.str();
 }
 
-// Keeps the group's nodes that are free in every direction; rejects partly prescribed ones.
+// Exactly ±1 or 0 up to round-off of a unit normal's components.
+constexpr double kAxisTolerance = 1e-12;
+
+// The group's contact nodes: the rule of buildContactInterface (header).
 std::vector<int> contactNodes(const Eigen::MatrixXd& positions, const std::vector<int>& group_nodes,
-                              const std::string& boundary, const std::vector<int>& free_index) {
+                              const std::string& boundary, const Obstacle& obstacle, const DofStatus& dofs) {
   const int dim = static_cast<int>(positions.rows());
   std::vector<int> nodes;
   for (int node : group_nodes) {
-    int free = 0;
-    for (int d = 0; d < dim; ++d) free += free_index[dim * node + d] >= 0 ? 1 : 0;
-    if (free == dim) nodes.push_back(node);
-    else if (free > 0)
-      throw InputError("contact boundary '" + boundary + "': " + describeNode(positions, node) +
-                       " has a prescribed displacement component; a contact node must be free or fully prescribed");
+    const Eigen::VectorXd n = obstacleNormal(obstacle, positions.col(node));
+    const auto prescribed = [&](int a) { return dofs.free_index[dim * node + a] < 0; };
+    bool left_out = true, normal_prescribed = false;
+    for (int a = 0; a < dim; ++a) {
+      left_out = left_out && prescribed(a);
+      normal_prescribed = normal_prescribed || (prescribed(a) && std::abs(n[a]) >= 1.0 - kAxisTolerance);
+    }
+    if (left_out || normal_prescribed) continue;  // its motion normal to the obstacle is known
+    for (int a = 0; a < dim; ++a)
+      if (prescribed(a) && (std::abs(n[a]) > kAxisTolerance || !dofs.zero[dim * node + a]))
+        throw InputError("contact boundary '" + boundary + "': " + describeNode(positions, node) +
+                         " has a prescribed displacement component " + "xyz"[a] +
+                         "; a contact node may only have components prescribed along its normal, or held at 0 "
+                         "along an axis orthogonal to it");
+    nodes.push_back(node);
   }
   if (nodes.empty()) throw InputError("contact boundary '" + boundary + "' has no free node");
   return nodes;
@@ -48,6 +60,13 @@ Eigen::MatrixXd tangentFrame(const Eigen::VectorXd& n) {
   return t;
 }
 
+// τ lies along a prescribed axis of the node whose first dof is `first_dof`.
+bool heldTangent(const Eigen::VectorXd& tangent, const std::vector<int>& free_index, int first_dof) {
+  for (Eigen::Index a = 0; a < tangent.size(); ++a)
+    if (std::abs(tangent[a]) > kAxisTolerance && free_index[first_dof + a] >= 0) return false;
+  return true;
+}
+
 void checkGap(const ContactInterface& c, const Eigen::MatrixXd& positions, int i) {
   if (c.initial_gap[i] >= 0.0) return;
   std::ostringstream msg;
@@ -61,11 +80,12 @@ void checkGap(const ContactInterface& c, const Eigen::MatrixXd& positions, int i
 template <class Facet>
 ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>& group_nodes,
                        const std::vector<Facet>& facets, const std::string& boundary, const Obstacle& obstacle,
-                       const std::vector<int>& free_index, double friction) {
+                       const DofStatus& dofs, double friction) {
+  const std::vector<int>& free_index = dofs.free_index;
   const int dim = static_cast<int>(positions.rows());
   ContactInterface c;
   c.dimension = dim;
-  c.nodes = contactNodes(positions, group_nodes, boundary, free_index);
+  c.nodes = contactNodes(positions, group_nodes, boundary, obstacle, dofs);
   c.friction = friction;
   const int nc = c.size();
   c.normals.resize(dim, nc);
@@ -89,9 +109,13 @@ ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>&
     checkGap(c, positions, i);
     for (int d = 0; d < dim; ++d) {
       const int dof = free_index[dim * c.nodes[i] + d];
+      if (dof < 0) continue;  // held at 0 (contactNodes)
       triplets.emplace_back(c.normalRow(i), dof, c.normals(d, i));
       for (int a = 0; a < dim - 1; ++a) triplets.emplace_back(c.normalRow(i) + 1 + a, dof, c.tangents(d, (dim - 1) * i + a));
     }
+    for (int a = 0; a < dim - 1; ++a)  // a tangent along a held axis: no free dof moves the node that way
+      if (heldTangent(c.tangents.col((dim - 1) * i + a), free_index, dim * c.nodes[i]))
+        c.held_rows.push_back(c.normalRow(i) + 1 + a);
   }
   const int n_free = static_cast<int>(std::count_if(free_index.begin(), free_index.end(), [](int j) { return j >= 0; }));
   c.B.resize(c.rows(), n_free);
@@ -102,15 +126,15 @@ ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>&
 }  // namespace
 
 ContactInterface buildContactInterface(const Mesh& mesh, const std::string& boundary, const Obstacle& obstacle,
-                                       const std::vector<int>& free_index, double friction) {
+                                       const DofStatus& dofs, double friction) {
   const BoundaryGroup& group = mesh.group(boundary);
-  return build(mesh.nodes, group.nodes, group.edges, boundary, obstacle, free_index, friction);
+  return build(mesh.nodes, group.nodes, group.edges, boundary, obstacle, dofs, friction);
 }
 
 ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& boundary, const Obstacle& obstacle,
-                                       const std::vector<int>& free_index, double friction) {
+                                       const DofStatus& dofs, double friction) {
   const SurfaceGroup& group = mesh.group(boundary);
-  return build(mesh.nodes, group.nodes, group.triangles, boundary, obstacle, free_index, friction);
+  return build(mesh.nodes, group.nodes, group.triangles, boundary, obstacle, dofs, friction);
 }
 
 void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale) {

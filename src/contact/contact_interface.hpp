@@ -28,6 +28,10 @@ struct ContactInterface {
   /// v = B u_free: row d i is the normal n_i·u_i, rows d i + a (a = 1..d−1) the tangential τ_{i,a}·u_i;
   /// d n_C × n_free.
   Eigen::SparseMatrix<double> B;
+  /// Tangential rows whose direction is prescribed at zero (a symmetry plane, the faces of a slab):
+  /// their B row is empty, the node cannot slip that way and the support takes the force (see
+  /// buildContactInterface); sorted.
+  std::vector<int> held_rows;
   /// Search direction k (d n_C, diagonal): the same k_i = κ E ℓ_i / L on every row of node i
   /// (docs/method.md §2; ℓ_i an area in 3D, so k_i is a stiffness in both).
   Eigen::VectorXd search_direction;
@@ -39,15 +43,25 @@ struct ContactInterface {
   int normalRow(int i) const { return dimension * i; }
 };
 
-/// Builds the interface on boundary group `boundary` of the mesh. Nodes of the group whose dofs
-/// are all prescribed are left out (their motion is known; the half-disc's arc corners);
-/// `free_index[dof]` is the dof's index among the free dofs, −1 when prescribed. Throws InputError
-/// for a node with only some dofs prescribed, or a node that starts inside the obstacle (g0 < 0).
+/// How the dofs are held: `free_index[dof]` is the dof's index among the free dofs (−1 when
+/// prescribed), `zero[dof]` says that a prescribed dof is held at 0 at every instant.
+struct DofStatus {
+  const std::vector<int>& free_index;
+  const std::vector<char>& zero;
+};
+
+/// Builds the interface on boundary group `boundary` of the mesh. A node of the group whose normal
+/// motion is prescribed is left out (its motion is known and the support takes any force: the
+/// half-disc's arc corners): every dof prescribed, or a prescribed axis along the obstacle normal
+/// there (|n · e_a| = 1). A node may otherwise have prescribed components only along axes
+/// orthogonal to its normal and held at 0 at every instant: such an axis is one of the node's
+/// tangents (see `tangents`), whose row becomes a held row. Throws InputError for any other
+/// partly prescribed node, or a node that starts inside the obstacle (g0 < 0).
 ContactInterface buildContactInterface(const Mesh& mesh, const std::string& boundary, const Obstacle& obstacle,
-                                       const std::vector<int>& free_index, double friction);
+                                       const DofStatus& dofs, double friction);
 /// The same on a tetrahedron mesh's surface group (3 rows per node).
 ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& boundary, const Obstacle& obstacle,
-                                       const std::vector<int>& free_index, double friction);
+                                       const DofStatus& dofs, double friction);
 
 /// Sets k = κ E ℓ_i / L on every row of every node.
 void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale);

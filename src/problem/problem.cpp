@@ -10,6 +10,7 @@
 #include "src/mesh/facet_measure.hpp"
 #include "src/mesh/gmsh_reader.hpp"
 #include "src/mesh/half_ball.hpp"
+#include "src/mesh/half_disc_slab.hpp"
 #include "src/mesh/half_disc.hpp"
 
 namespace stc {
@@ -94,6 +95,18 @@ void addLoads(Problem& p, const Scene& scene, const std::vector<int>& owner) {
                        LoadHistory(spec.history).sample(p.times)});
 }
 
+// Per dof: prescribed by a [[dirichlet]] entry whose history is 0 at every instant (addLoads has
+// sampled the entries' histories, in order, as the first load terms).
+std::vector<char> heldAtZero(const Problem& p, const std::vector<int>& owner) {
+  std::vector<char> zero(p.numDofs(), 0);
+  for (int dof = 0; dof < p.numDofs(); ++dof) {
+    if (owner[dof] < 0) continue;
+    const std::vector<double>& values = p.loads[owner[dof]].values;
+    zero[dof] = std::all_of(values.begin(), values.end(), [](double v) { return v == 0.0; });
+  }
+  return zero;
+}
+
 // Runs `step`, prefixing any InputError with the scene file and the key it concerns.
 template <class Step>
 auto withContext(const Scene& scene, const std::string& key, Step&& step) {
@@ -116,7 +129,9 @@ Mesh buildMesh(const MeshSpec& spec) {
 TetMesh buildSolidMesh(const MeshSpec& spec) {
   if (!spec.file.empty()) return readGmsh3d(spec.file);
   if (spec.generator == "half_ball") return makeHalfBall({spec.radius, spec.divisions, spec.grading, spec.core});
-  throw InputError("mesh generator '" + spec.generator + "' is unknown (known in 3D: half_ball)");
+  if (spec.generator == "half_disc_slab")
+    return makeHalfDiscSlab({{spec.radius, spec.arc_nodes, spec.grading}, spec.thickness, spec.layers});
+  throw InputError("mesh generator '" + spec.generator + "' is unknown (known in 3D: half_ball, half_disc_slab)");
 }
 
 Problem buildProblem(const Scene& scene) {
@@ -166,9 +181,10 @@ Problem buildProblem(const Scene& scene) {
   withContext(scene, "contact.boundary", [&] { group(scene.contact.boundary); });
   p.contact = withContext(scene, "", [&] {
     const Obstacle obstacle = makeObstacle(scene.obstacle);
-    return p.dimension == 3
-               ? buildContactInterface(p.solid, scene.contact.boundary, obstacle, p.free_index, scene.contact.friction)
-               : buildContactInterface(p.mesh, scene.contact.boundary, obstacle, p.free_index, scene.contact.friction);
+    const std::vector<char> zero = heldAtZero(p, owner);
+    const DofStatus dofs{p.free_index, zero};
+    return p.dimension == 3 ? buildContactInterface(p.solid, scene.contact.boundary, obstacle, dofs, scene.contact.friction)
+                            : buildContactInterface(p.mesh, scene.contact.boundary, obstacle, dofs, scene.contact.friction);
   });
   p.length_scale = defaultLengthScale(scene, p);
   setSearchDirection(p.contact, scene.solver.search_scale, p.material.young, p.length_scale);

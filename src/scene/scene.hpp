@@ -16,13 +16,16 @@ enum class Component { X, Y, Z };  ///< Z only in a 3D scene
 
 /// [mesh]: either a built-in generator or a Gmsh 4.1 file.
 struct MeshSpec {
-  std::string generator;              ///< "half_disc" (2D), "half_ball" (3D), or empty when `file` is given
+  std::string generator;              ///< "half_disc" (2D), "half_ball" or "half_disc_slab" (3D), or empty
+                                      ///< when `file` is given
   std::filesystem::path file;         ///< resolved against the scene file's folder
   double radius = 1.0;                ///< half_disc, half_ball: radius R (> 0)
-  int arc_nodes = 101;                ///< half_disc: potential contact nodes on the arc (>= 3)
+  int arc_nodes = 101;                ///< half_disc, half_disc_slab: potential contact nodes on the arc (>= 3)
   double grading = 1.135;             ///< half_disc: growth of the element size per ring inward (1 = uniform);
                                       ///< half_ball: grading toward the pole, in [1, 2] (default 1.5)
   int divisions = 8;                  ///< half_ball: cells along the radius (>= 2; src/mesh/half_ball.hpp)
+  double thickness = 0.05;            ///< half_disc_slab: extent along z (> 0)
+  int layers = 2;                     ///< half_disc_slab: element layers along z (>= 1)
   double core = 0.0;                  ///< half_ball: 0, or the half-width in (0, 1) of the uniformly meshed
                                       ///< core around the pole, in units of R (divisions then counts its cells)
 };

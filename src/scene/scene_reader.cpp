@@ -100,36 +100,68 @@ PlaneModel readModel(const TableView& root, int dimension) {
                                                                         : PlaneModel::Stress;
 }
 
-// The keys of the built-in generator of the scene's dimension: half_disc (2D) or half_ball (3D,
-// src/mesh/half_ball.hpp); the other generator's own key is refused by name.
-void readGenerator(const TableView& mesh, MeshSpec& spec, int dimension) {
-  const bool ball = dimension == 3;
-  const std::vector<const char*> foreign_keys = ball ? std::vector{"arc_nodes"} : std::vector{"divisions", "core"};
-  for (const char* foreign : foreign_keys)
-    if (mesh.has(foreign))
-      mesh.errors().fail(mesh.keyPath(foreign), "key '" + mesh.keyPath(foreign) + "' applies to generator = \"" +
-                                                    (ball ? "half_disc" : "half_ball") + "\"");
+// The built-in generators and their keys besides `radius` (src/mesh/half_disc.hpp, half_ball.hpp,
+// half_disc_slab.hpp); a key of another generator is refused naming the generators that take it.
+struct GeneratorKeys {
+  std::string_view name;
+  int dimension;
+  std::vector<std::string_view> keys;
+};
+const GeneratorKeys kGenerators[] = {{"half_disc", 2, {"arc_nodes", "grading"}},
+                                     {"half_ball", 3, {"divisions", "grading", "core"}},
+                                     {"half_disc_slab", 3, {"arc_nodes", "grading", "thickness", "layers"}}};
+const std::string_view kGeneratorKeys[] = {"radius", "arc_nodes", "grading", "divisions", "core", "thickness", "layers"};
+
+bool takes(const GeneratorKeys& g, std::string_view key) {
+  return key == "radius" || std::find(g.keys.begin(), g.keys.end(), key) != g.keys.end();
+}
+
+// "\"half_disc\" or \"half_disc_slab\"": the generators that take `key`.
+std::string ownersOf(std::string_view key) {
+  std::string out;
+  for (const GeneratorKeys& g : kGenerators)
+    if (takes(g, key)) out += (out.empty() ? "\"" : " or \"") + std::string(g.name) + "\"";
+  return out;
+}
+
+void refuseForeignKey(const TableView& mesh, std::string_view key, const std::string& suffix) {
+  if (mesh.has(key))
+    mesh.errors().fail(mesh.keyPath(key), "key '" + mesh.keyPath(key) + "' applies to generator = " + ownersOf(key) + suffix);
+}
+
+void readGenerator(const TableView& mesh, MeshSpec& spec) {
+  const GeneratorKeys& g = *std::find_if(std::begin(kGenerators), std::end(kGenerators),
+                                         [&](const GeneratorKeys& k) { return k.name == spec.generator; });
+  for (std::string_view key : kGeneratorKeys)
+    if (!takes(g, key)) refuseForeignKey(mesh, key, "");
   spec.radius = mesh.optionalNumber("radius").value_or(spec.radius);
   requireRange(mesh, "radius", spec.radius, spec.radius > 0.0, "must be > 0");
-  if (ball) {
+  if (takes(g, "arc_nodes")) {
+    spec.arc_nodes = mesh.optionalInt("arc_nodes").value_or(spec.arc_nodes);
+    requireRange(mesh, "arc_nodes", spec.arc_nodes, spec.arc_nodes >= 3, "must be >= 3");
+  }
+  if (takes(g, "divisions")) {
     spec.divisions = mesh.optionalInt("divisions").value_or(spec.divisions);
     requireRange(mesh, "divisions", spec.divisions, spec.divisions >= 2, "must be >= 2");
     spec.core = mesh.optionalNumber("core").value_or(spec.core);
     requireRange(mesh, "core", spec.core, spec.core == 0.0 || (spec.core > 0.0 && spec.core < 1.0),
                  "must be 0 (no core) or in (0, 1)");
-  } else {
-    spec.arc_nodes = mesh.optionalInt("arc_nodes").value_or(spec.arc_nodes);
-    requireRange(mesh, "arc_nodes", spec.arc_nodes, spec.arc_nodes >= 3, "must be >= 3");
   }
-  const double max_grading = ball ? 2.0 : 4.0;
+  if (takes(g, "layers")) {
+    spec.thickness = mesh.optionalNumber("thickness").value_or(spec.thickness);
+    requireRange(mesh, "thickness", spec.thickness, spec.thickness > 0.0, "must be > 0");
+    spec.layers = mesh.optionalInt("layers").value_or(spec.layers);
+    requireRange(mesh, "layers", spec.layers, spec.layers >= 1, "must be >= 1");
+  }
+  const bool ball = g.name == "half_ball";
   spec.grading = mesh.optionalNumber("grading").value_or(ball ? 1.5 : spec.grading);
-  requireRange(mesh, "grading", spec.grading, spec.grading >= 1.0 && spec.grading <= max_grading,
+  requireRange(mesh, "grading", spec.grading, spec.grading >= 1.0 && spec.grading <= (ball ? 2.0 : 4.0),
                ball ? "must be in [1, 2] (1 = uniform)" : "must be in [1, 4] (1 = uniform)");
 }
 
 MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, int dimension) {
-  const TableView mesh =
-      root.requiredTable("mesh", {"generator", "file", "radius", "arc_nodes", "grading", "divisions", "core"});
+  const TableView mesh = root.requiredTable(
+      "mesh", {"generator", "file", "radius", "arc_nodes", "grading", "divisions", "core", "thickness", "layers"});
   const ErrorReporter& errors = mesh.errors();
   const bool hasGenerator = mesh.has("generator");
   if (hasGenerator == mesh.has("file")) {
@@ -139,18 +171,12 @@ MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, in
   }
   MeshSpec spec;
   if (hasGenerator) {
-    spec.generator = dimension == 3 ? readKeyword(mesh, "generator", {"half_ball"})
+    spec.generator = dimension == 3 ? readKeyword(mesh, "generator", {"half_ball", "half_disc_slab"})
                                     : readKeyword(mesh, "generator", {"half_disc"});
-    readGenerator(mesh, spec, dimension);
+    readGenerator(mesh, spec);
     return spec;
   }
-  const char* generator = dimension == 3 ? "half_ball" : "half_disc";
-  for (const std::string_view key : {"radius", "arc_nodes", "grading", "divisions", "core"}) {
-    if (mesh.has(key)) {
-      errors.fail(mesh.keyPath(key), "key '" + mesh.keyPath(key) + "' applies to generator = \"" + generator +
-                                         "\", not to a mesh file");
-    }
-  }
+  for (std::string_view key : kGeneratorKeys) refuseForeignKey(mesh, key, ", not to a mesh file");
   const std::filesystem::path file = requiredName(mesh, "file");
   spec.file = file.is_absolute() ? file : (source.parent_path() / file).lexically_normal();
   return spec;

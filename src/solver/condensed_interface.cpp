@@ -15,6 +15,11 @@ CondensedInterface CondensedInterface::build(const Problem& problem, const SpdFa
   return c;
 }
 
+void giveHeldRowsCompliance(const ContactInterface& contact, Eigen::MatrixXd& delassus) {
+  const int d = contact.dimension;
+  for (int r : contact.held_rows) delassus(r, r) = delassus(d * (r / d), d * (r / d));
+}
+
 Eigen::MatrixXd displacementsFromForces(const Problem& problem, const SpdFactor& stiffness_free,
                                         const Eigen::MatrixXd& lambda) {
   Eigen::MatrixXd rhs = problem.loadBlock(0, problem.numSteps());

@@ -18,6 +18,14 @@ struct CondensedInterface {
   static CondensedInterface build(const Problem& problem, const SpdFactor& stiffness_free);
 };
 
+/// A held row r of node i (ContactInterface::held_rows: no free dof moves the node along its
+/// tangent) has W(r, ·) = 0 and W(·, r) = 0, which leaves λ_r undetermined in a stick Newton system.
+/// The incremental solvers give it the compliance of the node's normal row, W(r, r) = W(d i, d i),
+/// which changes no motion (B's row r is empty) and makes the law decide λ_r = 0: sticking,
+/// Δv_r = W(r, r) Δλ_r = 0; slipping, λ_r = −μ λ_n Δv_r / |Δv_t| has the sign opposite to
+/// Δv_r = W(r, r) λ_r (from λ_r = 0 at t_0, by induction). The support takes the force.
+void giveHeldRowsCompliance(const ContactInterface& contact, Eigen::MatrixXd& delassus);
+
 /// Free displacements u(t_k) = K⁻¹ (f(t_k) + Bᵀ λ(t_k)) for every instant (n_free × m).
 Eigen::MatrixXd displacementsFromForces(const Problem& problem, const SpdFactor& stiffness_free,
                                         const Eigen::MatrixXd& lambda);

@@ -217,7 +217,8 @@ SolveResult march(const Problem& problem, const IterationCallback& callback, Clo
 // The plane law with the dense Delassus operator (the header's method).
 SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
                        Clock::time_point start, const SpdFactor& factor) {
-  const CondensedInterface condensed = CondensedInterface::build(problem, factor);
+  CondensedInterface condensed = CondensedInterface::build(problem, factor);
+  giveHeldRowsCompliance(problem.contact, condensed.delassus);
   const int nc = problem.contact.size();
   const Eigen::VectorXd rho = condensed.delassus.diagonal().cwiseInverse();  // ρ = 1 / diag(W)
   Instant d{condensed.delassus, Eigen::VectorXd(), problem.contact.initial_gap, Eigen::VectorXd::Zero(nc), rho,

@@ -9,6 +9,7 @@ LazyDelassus::LazyDelassus(const Problem& problem, const SpdFactor& stiffness_fr
       Bt_(problem.contact.B.transpose()),
       factor_(stiffness_free),
       d_(problem.contact.dimension),
+      held_rows_(problem.contact.held_rows),
       slot_(problem.contact.size(), -1) {}
 
 void LazyDelassus::ensure(const std::vector<int>& nodes) {
@@ -29,6 +30,10 @@ void LazyDelassus::ensure(const std::vector<int>& nodes) {
     columns_.middleCols(static_cast<Eigen::Index>(count_) * d_, d_) = w.middleCols(static_cast<Eigen::Index>(p) * d_, d_);
     ++count_;
   }
+  // Held rows: the compliance of giveHeldRowsCompliance (condensed_interface.hpp).
+  for (int r : held_rows_)
+    if (const int j = r / d_; std::find(missing.begin(), missing.end(), j) != missing.end())
+      columns_(r, static_cast<Eigen::Index>(slot_[j]) * d_ + r % d_) = entry(d_ * j, j, 0);
 }
 
 Eigen::MatrixXd freeInterfaceResponse(const Problem& problem, const SpdFactor& stiffness_free) {

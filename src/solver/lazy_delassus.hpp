@@ -18,7 +18,8 @@ class LazyDelassus {
   LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free);
 
   /// Computes the columns of the nodes of `nodes` that do not have them yet (one multi-right-hand-
-  /// side solve for all of them).
+  /// side solve for all of them); a held row gets the compliance of giveHeldRowsCompliance
+  /// (condensed_interface.hpp).
   void ensure(const std::vector<int>& nodes);
   bool has(int node) const { return slot_[node] >= 0; }
   /// W(:, d node + a), a = 0 … d − 1 (the node's columns must exist).
@@ -35,6 +36,7 @@ class LazyDelassus {
   const Eigen::SparseMatrix<double> Bt_;  // Bᵀ, its columns the right-hand sides of a node
   const SpdFactor& factor_;
   int d_;
+  std::vector<int> held_rows_;  // ContactInterface::held_rows, given a compliance when their node's columns come
   std::vector<int> slot_;    // per contact node: its block among the columns, −1 if not computed
   Eigen::MatrixXd columns_;  // d n_C × d capacity
   int count_ = 0;

@@ -5,6 +5,8 @@
 #include "src/mesh/facet_measure.hpp"
 #include "src/problem/problem.hpp"
 #include "solver/hemisphere_scene.hpp"
+#include "solver/slab_scene.hpp"
+#include "src/core/input_error.hpp"
 
 namespace {
 
@@ -73,4 +75,34 @@ TEST(ContactInterface3d, BTakesTheNormalAndTangentialComponentsAndKIsTheSameOnTh
   EXPECT_DOUBLE_EQ(v.cwiseAbs().sum(), 1.2);
   for (int r = 0; r < 3; ++r)
     EXPECT_DOUBLE_EQ(p.contact.search_direction[3 * i + r], 4.0 * 3000.0 * p.contact.tributary[i] / 1.0);
+}
+
+// The slab (tests/solver/slab_scene.hpp): u_z = 0 on its faces. A contact node there keeps its
+// three rows; its τ_2 = −e_z row is held (empty B row); the arc's corners, whose normal motion u_y
+// is driven with the top, are left out as in 2D.
+TEST(ContactInterface3d, NodesHeldAtZeroAlongATangentGetAHeldRow) {
+  const stc::Problem p = stc::buildProblem(stc::test::slabScene(7, 3, 0.05, 2));
+  const auto& c = p.contact;
+  EXPECT_EQ(c.size(), 3 * 7);  // the arc's 7 inner nodes on each of the 3 node layers
+  std::vector<int> expected;
+  for (int i = 0; i < c.size(); ++i) {
+    const double z = p.solid.nodes(2, c.nodes[i]);
+    if (z == 0.0 || z == 0.05) expected.push_back(3 * i + 2);
+    EXPECT_NEAR(c.tangents(2, 2 * i + 1), -1.0, 1e-15) << "τ_2 = n × e_x = −e_z";
+  }
+  EXPECT_EQ(c.held_rows, expected);
+  for (int row : c.held_rows) EXPECT_EQ(Eigen::SparseMatrix<double>(c.B.row(row)).norm(), 0.0) << row;
+}
+
+TEST(ContactInterface3d, APrescribedTangentialMotionOtherThanZeroIsRefused) {
+  stc::Scene scene = stc::test::slabScene(7, 3, 0.05, 2);
+  scene.dirichlet[3].history = {{0.0, 1.0}, {0.0, 0.001}};  // the front face moves along z
+  try {
+    stc::buildProblem(scene);
+    FAIL() << "a contact node with a nonzero prescribed tangential motion was accepted";
+  } catch (const stc::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("has a prescribed displacement component z; a contact node may only"),
+              std::string::npos)
+        << e.what();
+  }
 }

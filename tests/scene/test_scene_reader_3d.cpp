@@ -45,6 +45,30 @@ TEST(SceneReader3d, CoreOfTheHalfBall) {
   EXPECT_EQ(readScene(kHemisphere, {"mesh.core=0.07"}).mesh.core, 0.07);
 }
 
+TEST(SceneReader3d, SlabReadsItsGeneratorKeys) {
+  const auto slab = std::filesystem::path(STC_SOURCE_DIR) / "examples/scenes/slab.toml";
+  const Scene s = readScene(slab);
+  EXPECT_EQ(s.mesh.generator, "half_disc_slab");
+  EXPECT_EQ(s.mesh.arc_nodes, 101);
+  EXPECT_EQ(s.mesh.thickness, 0.05);
+  EXPECT_EQ(s.mesh.layers, 2);
+  const auto errorIn = [&](const std::string& override) {
+    try {
+      readScene(slab, {override});
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("no InputError");
+  };
+  EXPECT_THAT(errorIn("mesh.thickness=0"), HasSubstr("key 'mesh.thickness' = 0 is out of range: must be > 0"));
+  EXPECT_THAT(errorIn("mesh.layers=0"), HasSubstr("key 'mesh.layers' = 0 is out of range: must be >= 1"));
+  EXPECT_THAT(errorIn("mesh.divisions=4"), HasSubstr("key 'mesh.divisions' applies to generator = \"half_ball\""));
+  EXPECT_THAT(errorOf({"mesh.layers=2"}),
+              HasSubstr("key 'mesh.layers' applies to generator = \"half_disc_slab\""));
+  EXPECT_THAT(errorOf({"mesh.arc_nodes=31"}),
+              HasSubstr("applies to generator = \"half_disc\" or \"half_disc_slab\""));
+}
+
 TEST(SceneReader3d, DimensionIsTwoOrThree) {
   EXPECT_THAT(errorOf({"dimension=4"}), HasSubstr("key 'dimension' = 4 is out of range: must be 2 or 3"));
 }

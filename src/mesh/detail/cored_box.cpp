@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "src/mesh/detail/box_grid.hpp"
+#include "src/mesh/detail/prism_split.hpp"
 
 namespace stc::detail {
 namespace {
@@ -43,18 +44,6 @@ CoreSurface outerSurface(const BoxGrid& grid, const TetMesh& core) {
     surface.triangles.push_back(q);
   }
   return surface;
-}
-
-// Prism (a, b, c) × (layer l, layer l + 1), surface numbers a < b < c, into 3 tetrahedra whose
-// side-quad diagonals leave the quad's lowest vertex (a of ab, b of bc, a of ac, at layer l): the
-// prism that shares a side quad draws the same diagonal, so the mesh is conforming. `lower` and
-// `upper` give the node ids of a, b, c on the two layers.
-void splitPrism(const std::array<int, 3>& lower, const std::array<int, 3>& upper, Tets& tets) {
-  const auto [a, b, c] = lower;
-  const auto [a1, b1, c1] = upper;
-  tets.push_back({a, b, c, c1});
-  tets.push_back({a, b, b1, c1});
-  tets.push_back({a, a1, b1, c1});
 }
 
 // The layout of the cored box: core grid (m cells along s0), L shell layers, the outer grid of
