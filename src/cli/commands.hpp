@@ -41,8 +41,8 @@ struct SvdArgs {
 Scene loadScene(const std::string& file, const std::vector<std::string>& overrides);
 
 /// `stcontact solve` computes no incremental reference (no true error) beyond this many contact
-/// nodes: the dense Delassus operator of the reference (32 n_C² bytes) and its per-iteration error
-/// evaluation become a noticeable cost. The Python module's solve follows the same rule.
+/// nodes: the reference solve and its per-iteration error evaluation become a noticeable cost.
+/// The Python module's solve follows the same rule.
 inline constexpr int kMaxReferenceContactNodes = 1000;
 
 /// The true-error reference of `solve`: the incremental solution and the error measure on it; nullptr,

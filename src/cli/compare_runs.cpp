@@ -8,7 +8,6 @@
 #include "src/cli/progress.hpp"
 #include "src/report/number_format.hpp"
 #include "src/report/peak_memory.hpp"
-#include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
 #include "src/strategies/solve_by_name.hpp"
 
@@ -134,10 +133,9 @@ ReferenceSolution computeReference(const Problem& problem, bool quiet) {
   progress.done();
   if (!ref.summary.converged())
     throw std::runtime_error("the incremental reference did not converge: " + ref.summary.message);
-  const SpdFactor factor(problem.stiffness_free, "K_ff");
-  const CondensedInterface condensed = CondensedInterface::build(problem, factor);
-  out.reference = std::make_unique<ErrorReference>(problem, factor, condensed.delassus, ref.interface.lambda);
-  out.factor_nonzeros = factor.factorNonZeros();
+  auto factor = std::make_shared<const SpdFactor>(problem.stiffness_free, "K_ff");
+  out.factor_nonzeros = factor->factorNonZeros();
+  out.reference = std::make_unique<ErrorReference>(problem, std::move(factor), std::move(ref.interface.lambda));
   out.total_s = secondsSince(start);
   return out;
 }

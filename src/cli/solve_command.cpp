@@ -11,7 +11,6 @@
 #include "src/io/atomic_file.hpp"
 #include "src/io/run_writer.hpp"
 #include "src/scene/scene_reader.hpp"
-#include "src/solver/condensed_interface.hpp"
 #include "src/solver/incremental_solver.hpp"
 #include "src/strategies/solve_by_name.hpp"
 
@@ -50,9 +49,8 @@ std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const Ite
     warning = "no true error: the incremental reference did not converge (" + ref.summary.message + ")";
     return nullptr;
   }
-  const SpdFactor factor(problem.stiffness_free, "K_ff");
-  const CondensedInterface condensed = CondensedInterface::build(problem, factor);
-  return std::make_unique<ErrorReference>(problem, factor, condensed.delassus, ref.interface.lambda);
+  auto factor = std::make_shared<const SpdFactor>(problem.stiffness_free, "K_ff");
+  return std::make_unique<ErrorReference>(problem, std::move(factor), std::move(ref.interface.lambda));
 }
 
 std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, const std::optional<std::string>& solver,
