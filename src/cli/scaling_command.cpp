@@ -28,8 +28,16 @@ using Clock = std::chrono::steady_clock;
 
 /// One size to run: its overrides, and the series it belongs to.
 struct PlannedSize {
-  int arc_nodes = 0, steps = 0;
+  int mesh_size = 0, steps = 0;
   bool in_mesh = false, in_time = false;
+};
+
+/// The mesh series' generator key and its sizes: arc_nodes (half_disc, half_disc_slab) or divisions
+/// (half_ball); the option of the other kind must not be given.
+struct MeshSeries {
+  std::string parameter;
+  std::vector<int> sizes;
+  int base = 0;  // the scene's own value
 };
 
 /// The items of "101,201" (split by the option's delimiter) as sizes, each >= `minimum`; "none" (or
@@ -55,23 +63,43 @@ std::vector<int> sizeList(const std::vector<std::string>& items, const std::stri
   return sizes;
 }
 
+MeshSeries meshSeries(const ScalingArgs& a, const Scene& base) {
+  const bool ball = base.mesh.generator == "half_ball";
+  const bool disc = base.mesh.generator == "half_disc" || base.mesh.generator == "half_disc_slab";
+  const std::vector<std::string>& own = ball ? a.divisions : a.arc_nodes;
+  const std::vector<std::string>& other = ball ? a.arc_nodes : a.divisions;
+  if (!other.empty() && other != std::vector<std::string>{"none"})
+    throw InputError(std::string(ball ? "--arc-nodes" : "--divisions") + " does not apply to a scene with the " +
+                     (base.mesh.generator.empty() ? "mesh file" : base.mesh.generator + " generator") +
+                     (ball ? " (give --divisions)" : disc ? " (give --arc-nodes)" : ""));
+  MeshSeries s;
+  s.parameter = ball ? "divisions" : "arc_nodes";
+  s.base = ball ? base.mesh.divisions : disc ? base.mesh.arc_nodes : 0;
+  if (!ball && !disc) {  // a mesh file: the time series only, said explicitly
+    if (own != std::vector<std::string>{"none"})
+      throw InputError("--arc-nodes needs a scene with the half_disc, half_disc_slab or half_ball mesh generator "
+                       "(give --arc-nodes none otherwise)");
+    return s;
+  }
+  const std::vector<std::string> defaults =
+      ball ? std::vector<std::string>{"6", "8", "12"} : std::vector<std::string>{"101", "201", "401", "801"};
+  s.sizes = sizeList(own.empty() ? defaults : own, ball ? "--divisions" : "--arc-nodes", ball ? 2 : 3);
+  return s;
+}
+
 /// The mesh series at the base instants, then the time series at the base mesh; a size in both runs once.
-std::vector<PlannedSize> planSizes(const ScalingArgs& a, const Scene& base) {
+std::vector<PlannedSize> planSizes(const MeshSeries& mesh, const ScalingArgs& a, const Scene& base) {
   std::vector<PlannedSize> plan;
-  const std::vector<int> arcs = sizeList(a.arc_nodes, "--arc-nodes", 3);
   const std::vector<int> steps = sizeList(a.steps, "--steps", 2);
-  if (arcs.empty() && steps.empty()) throw InputError("--arc-nodes and --steps are both empty: nothing to run");
-  if (!arcs.empty() && base.mesh.generator != "half_disc")
-    throw InputError("--arc-nodes needs a scene with the half_disc mesh generator (give --arc-nodes none otherwise)");
-  for (int n : arcs) plan.push_back({n, base.time.steps, true, false});
+  if (mesh.sizes.empty() && steps.empty()) throw InputError("the mesh and time series are both empty: nothing to run");
+  for (int n : mesh.sizes) plan.push_back({n, base.time.steps, true, false});
   for (int m : steps) {
-    auto same = std::find_if(plan.begin(), plan.end(), [&](const PlannedSize& p) {
-      return p.arc_nodes == base.mesh.arc_nodes && p.steps == m;
-    });
+    auto same = std::find_if(plan.begin(), plan.end(),
+                             [&](const PlannedSize& p) { return p.mesh_size == mesh.base && p.steps == m; });
     if (same != plan.end())
       same->in_time = true;
     else
-      plan.push_back({base.mesh.arc_nodes, m, false, true});
+      plan.push_back({mesh.base, m, false, true});
   }
   return plan;
 }
@@ -85,8 +113,10 @@ std::string commaList(const std::vector<std::string>& items) {
 std::string commandLine(const ScalingArgs& a, const std::vector<std::string>& solvers,
                         const std::filesystem::path& out) {
   std::string line = "stcontact scaling " + a.scene + " --solvers " + commaList(solvers) + " --out " + out.string() +
-                     " --repeats " + std::to_string(a.repeats) + " --arc-nodes '" + commaList(a.arc_nodes) +
-                     "' --steps '" + commaList(a.steps) + "' --target-error " + targetLabel(a.target_error) + " --tol " +
+                     " --repeats " + std::to_string(a.repeats) +
+                     (a.divisions.empty() ? "" : " --divisions '" + commaList(a.divisions) + "'") +
+                     (a.arc_nodes.empty() ? "" : " --arc-nodes '" + commaList(a.arc_nodes) + "'") + " --steps '" +
+                     commaList(a.steps) + "' --target-error " + targetLabel(a.target_error) + " --tol " +
                      shortNumber(a.tolerance, 6);
   if (a.max_iterations) line += " --max-iterations " + std::to_string(*a.max_iterations);
   if (a.time_cap_s) line += " --time-cap " + shortNumber(*a.time_cap_s, 6);
@@ -94,9 +124,9 @@ std::string commandLine(const ScalingArgs& a, const std::vector<std::string>& so
   return line;
 }
 
-Scene sceneAt(const ScalingArgs& a, const PlannedSize& size) {
+Scene sceneAt(const ScalingArgs& a, const MeshSeries& mesh, const PlannedSize& size) {
   std::vector<std::string> overrides = a.overrides;
-  if (size.in_mesh) overrides.push_back("mesh.arc_nodes=" + std::to_string(size.arc_nodes));
+  if (size.in_mesh) overrides.push_back("mesh." + mesh.parameter + "=" + std::to_string(size.mesh_size));
   overrides.push_back("time.steps=" + std::to_string(size.steps));
   Scene scene = loadScene(a.scene, overrides);
   scene.solver.tolerance = a.tolerance;
@@ -116,12 +146,13 @@ void printStrategy(const ScalingStudy& study, const ScalingPoint& p, const Strat
 }
 
 /// Builds the size's problem and reference, then measures every strategy on it.
-ScalingPoint measureSize(const ScalingArgs& a, const ScalingStudy& study, const PlannedSize& size,
-                         const std::string& command) {
-  const Scene scene = sceneAt(a, size);
+ScalingPoint measureSize(const ScalingArgs& a, const ScalingStudy& study, const MeshSeries& mesh,
+                         const PlannedSize& size, const std::string& command) {
+  const Scene scene = sceneAt(a, mesh, size);
   const Problem problem = buildProblem(scene);
   ScalingPoint p;
-  p.arc_nodes = scene.mesh.arc_nodes;
+  p.mesh_size = size.mesh_size;
+  p.dimension = problem.contact.dimension;
   p.free_dofs = problem.numFreeDofs();
   p.in_mesh_series = size.in_mesh;
   p.in_time_series = size.in_time;
@@ -161,9 +192,14 @@ CLI::App* addScalingCommand(CLI::App& app, ScalingArgs& a) {
   cmd->add_option("--solvers", a.solvers, "comma-separated strategies (default: every available one)");
   cmd->add_option("--out", a.out, "report folder (default results/<scene name>/scaling)");
   cmd->add_option("--repeats", a.repeats, "timed runs per strategy and size, medians over them")->capture_default_str();
-  cmd->add_option("--arc-nodes", a.arc_nodes, "mesh series: arc nodes, at the scene's instants ('none': no series)")
-      ->delimiter(',')
-      ->capture_default_str();
+  cmd->add_option("--arc-nodes", a.arc_nodes,
+                  "mesh series of a half_disc or half_disc_slab scene: arc nodes, at the scene's instants (default "
+                  "101,201,401,801; 'none': no series)")
+      ->delimiter(',');
+  cmd->add_option("--divisions", a.divisions,
+                  "mesh series of a half_ball scene: divisions, at the scene's instants (default 6,8,12; 'none': no "
+                  "series)")
+      ->delimiter(',');
   cmd->add_option("--steps", a.steps, "time series: instants m, at the scene's mesh ('none': no series)")
       ->delimiter(',')
       ->capture_default_str();
@@ -180,7 +216,8 @@ int runScaling(const ScalingArgs& a) {
   const auto start = Clock::now();
   validate(a);
   const Scene base = loadScene(a.scene, a.overrides);
-  const std::vector<PlannedSize> plan = planSizes(a, base);
+  const MeshSeries mesh = meshSeries(a, base);
+  const std::vector<PlannedSize> plan = planSizes(mesh, a, base);
   ScalingStudy study;
   study.solvers = solverList(a.solvers);
   const std::filesystem::path out =
@@ -188,6 +225,7 @@ int runScaling(const ScalingArgs& a) {
   ensureWritableDirectory(out);  // fail before the runs, not after
   study.scene_name = base.name;
   study.scene_file = a.scene;
+  study.mesh_parameter = mesh.parameter;
   study.command = commandLine(a, study.solvers, out);
   study.target_error = a.target_error;
   study.tolerance = a.tolerance;
@@ -196,9 +234,9 @@ int runScaling(const ScalingArgs& a) {
   study.environment = describeRunEnvironment(STC_BUILD_TYPE, STC_GIT_COMMIT);
   for (std::size_t i = 0; i < plan.size(); ++i) {
     if (!a.quiet)
-      std::cout << "[" << i + 1 << "/" << plan.size() << "] arc_nodes " << plan[i].arc_nodes << ", steps "
-                << plan[i].steps << std::endl;
-    study.points.push_back(measureSize(a, study, plan[i], study.command));
+      std::cout << "[" << i + 1 << "/" << plan.size() << "] " << mesh.parameter << " " << plan[i].mesh_size
+                << ", steps " << plan[i].steps << std::endl;
+    study.points.push_back(measureSize(a, study, mesh, plan[i], study.command));
   }
   study.memory_method = study.points.front().comparison.memory_method;
   study.load_after = loadAverage();

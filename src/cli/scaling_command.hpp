@@ -16,8 +16,11 @@ struct ScalingArgs {
   std::string solvers;                        ///< comma-separated; empty: every available strategy
   std::optional<std::string> out;             ///< default results/<scene name>/scaling
   int repeats = 3;                            ///< timed runs per strategy and size (medians over them)
-  /// Mesh series, at the scene's instants (--arc-nodes 101,201,...; "none": no series).
-  std::vector<std::string> arc_nodes = {"101", "201", "401", "801"};
+  /// Mesh series, at the scene's instants: --arc-nodes 101,201,... for half_disc and half_disc_slab
+  /// scenes (default 101,201,401,801), --divisions 8,12,... for half_ball ones (default 6,8,12);
+  /// "none": no series. The option of the other generator is refused.
+  std::vector<std::string> arc_nodes;
+  std::vector<std::string> divisions;
   /// Time series, at the scene's mesh (--steps 201,801,...; "none": no series).
   std::vector<std::string> steps = {"201", "801", "2001"};
   double target_error = 1e-4;                 ///< true error whose time is measured

@@ -52,17 +52,28 @@ std::string workCell(const ScalingStudy& s, const ScalingPoint& p, const std::st
   return shortNumber(r.relaxations, 8) + " / " + shortNumber(r.sparse_solves, 10);
 }
 
+// "arc nodes" / "divisions": the mesh series' column.
+std::string meshColumn(const ScalingStudy& s) {
+  return s.mesh_parameter == "arc_nodes" ? "arc nodes" : s.mesh_parameter;
+}
+
+// "101 arc nodes" / "divisions 8".
+std::string meshSizeLabel(const ScalingStudy& s, const ScalingPoint& p) {
+  return s.mesh_parameter == "arc_nodes" ? std::to_string(p.mesh_size) + " arc nodes"
+                                         : s.mesh_parameter + " " + std::to_string(p.mesh_size);
+}
+
 void seriesTables(std::ostream& out, const ScalingStudy& s, Series series) {
   const auto points = seriesPoints(s, series);
   if (points.empty()) return;
   const ScalingPoint& first = *points.front();
   out << "## " << (series == Series::Mesh ? "Mesh series (m = " + std::to_string(first.comparison.n_steps) + ")"
-                                          : "Time series (" + std::to_string(first.arc_nodes) + " arc nodes, " +
+                                          : "Time series (" + meshSizeLabel(s, first) + ", " +
                                                 std::to_string(first.comparison.n_dofs) + " dofs)")
       << "\n\nTime to first reach " << targetLabel(s.target_error) << ":\n\n"
-      << "| arc nodes | dofs | n_C | m |" << solverColumns(s) << "\n" << separator(4 + s.solvers.size());
+      << "| " << meshColumn(s) << " | dofs | n_C | m |" << solverColumns(s) << "\n" << separator(4 + s.solvers.size());
   for (const ScalingPoint* p : points) {
-    out << "| " << p->arc_nodes << " | " << p->comparison.n_dofs << " | " << p->comparison.n_contact_nodes << " | "
+    out << "| " << p->mesh_size << " | " << p->comparison.n_dofs << " | " << p->comparison.n_contact_nodes << " | "
         << p->comparison.n_steps << " |";
     for (const auto& solver : s.solvers) out << " " << reachCell(s, *p, solver) << " |";
     out << "\n";
@@ -133,10 +144,10 @@ void crossoverSection(std::ostream& out, const ScalingStudy& s) {
 }
 
 void memoryTable(std::ostream& out, const ScalingStudy& s) {
-  out << "| arc nodes | m | baseline |" << solverColumns(s) << "\n" << separator(3 + s.solvers.size());
+  out << "| " << meshColumn(s) << " | m | baseline |" << solverColumns(s) << "\n" << separator(3 + s.solvers.size());
   for (const ScalingPoint& p : s.points) {
     const StrategyMeasurement* any = p.comparison.strategies.empty() ? nullptr : &p.comparison.strategies.front();
-    out << "| " << p.arc_nodes << " | " << p.comparison.n_steps << " | "
+    out << "| " << p.mesh_size << " | " << p.comparison.n_steps << " | "
         << (any ? shortNumber(any->memory.baseline_mb, 4) : "—") << " |";
     for (const auto& solver : s.solvers) {
       const StrategyMeasurement* m = p.strategy(solver);
@@ -149,16 +160,17 @@ void memoryTable(std::ostream& out, const ScalingStudy& s) {
 
 void estimateTable(std::ostream& out, const ScalingStudy& s) {
   out << "\nWhat the sizes predict, in MB of 8-byte doubles: the Cholesky factor of K_ff (K + BᵀkB has the same "
-         "pattern), one interface history (2n_C × m: the LATIN iterates s, ŝ are a few of them), one "
-         "displacement history (n_free × m), the dense Delassus matrix W = B K⁻¹ Bᵀ (2n_C)² that the "
-         "incremental solver and the error measure hold, the dense Bᵀ and K⁻¹ Bᵀ (n_free × 2n_C each) it is "
+         "pattern), one interface history (d n_C × m, d rows per contact node: the LATIN iterates s, ŝ are a few "
+         "of them), one displacement history (n_free × m), the dense Delassus matrix W = B K⁻¹ Bᵀ (d n_C)² that "
+         "the 2D incremental solver holds (in 3D it keeps the columns of the nodes that close, and the error "
+         "measure those of the nodes an iterate loads), the dense Bᵀ and K⁻¹ Bᵀ (n_free × d n_C each) it is "
          "formed from, one dense m × m matrix.\n\n"
-      << "| arc nodes | m | n_free | n_C | factor | interface history | displacement history | Delassus | "
+      << "| " << meshColumn(s) << " | m | n_free | n_C | factor | interface history | displacement history | Delassus | "
          "Bᵀ and K⁻¹Bᵀ | m × m |\n"
       << separator(10);
   for (const ScalingPoint& p : s.points) {
     const MemoryEstimate e = estimateMemory(p);
-    out << "| " << p.arc_nodes << " | " << p.comparison.n_steps << " | " << p.free_dofs << " | "
+    out << "| " << p.mesh_size << " | " << p.comparison.n_steps << " | " << p.free_dofs << " | "
         << p.comparison.n_contact_nodes << " | " << shortNumber(e.factor_mb, 3) << " | "
         << shortNumber(e.interface_history_mb, 3) << " | " << shortNumber(e.displacement_history_mb, 3) << " | "
         << shortNumber(e.delassus_mb, 3) << " | " << shortNumber(e.condensation_mb, 3) << " | "
@@ -168,7 +180,7 @@ void estimateTable(std::ostream& out, const ScalingStudy& s) {
 
 void slopeTable(std::ostream& out, const ScalingStudy& s) {
   out << "\nGrowth per instant along the time series: (growth at m₁ − growth at m₀) / (m₁ − m₀), in kB, and "
-         "the same in interface-history columns (2n_C doubles) and in displacement fields (n_free doubles). "
+         "the same in interface-history columns (d n_C doubles) and in displacement fields (n_free doubles). "
          "A claim that only interface histories and low-rank factors grow with m means a few interface "
          "columns per instant, far below one displacement field; a rate that rises with m means m × m storage."
          "\n\n| strategy | m₀ → m₁: kB per instant = interface columns = displacement fields |\n"
@@ -198,7 +210,7 @@ void notReachedNotes(std::ostream& out, const ScalingStudy& s) {
   for (const ScalingPoint& p : s.points)
     for (const StrategyMeasurement& m : p.comparison.strategies)
       if (!reachAt(s, p, m.solver).wall_s)
-        notes << "- " << m.solver << " at " << p.arc_nodes << " arc nodes, m = " << p.comparison.n_steps << ": "
+        notes << "- " << m.solver << " at " << meshSizeLabel(s, p) << ", m = " << p.comparison.n_steps << ": "
               << m.message << " (" << m.iterations << " iterations, " << m.relaxations << " relaxations, error run "
               << shortNumber(m.error_run_s, 3) << " s; final true error " << shortNumber(m.final_error, 2)
               << ", best " << shortNumber(m.best_error, 2) << ").\n";

@@ -108,7 +108,8 @@ std::vector<MemorySlope> memorySlopes(const ScalingStudy& study, const std::stri
     s.m_to = m1;
     // Growth over the baseline, so that the reference (which also grows with m) is left out.
     s.bytes_per_instant = (b->memory.growthMb() - a->memory.growthMb()) * kMb / (m1 - m0);
-    s.interface_arrays = s.bytes_per_instant / (kDouble * 2.0 * points[i]->comparison.n_contact_nodes);
+    const double interface_rows = static_cast<double>(points[i]->dimension) * points[i]->comparison.n_contact_nodes;
+    s.interface_arrays = s.bytes_per_instant / (kDouble * interface_rows);
     s.free_dof_fields = s.bytes_per_instant / (kDouble * points[i]->free_dofs);
     slopes.push_back(s);
   }
@@ -117,7 +118,7 @@ std::vector<MemorySlope> memorySlopes(const ScalingStudy& study, const std::stri
 
 MemoryEstimate estimateMemory(const ScalingPoint& point) {
   const Comparison& c = point.comparison;
-  const double interface = 2.0 * c.n_contact_nodes;
+  const double interface = static_cast<double>(point.dimension) * c.n_contact_nodes;
   MemoryEstimate e;
   e.factor_mb = point.factor_nonzeros * kDouble / kMb;
   e.interface_history_mb = interface * c.n_steps * kDouble / kMb;

@@ -20,7 +20,8 @@ const char* toString(Series series);
 
 /// One size of the study: the comparison run at it (compare's measurements and report).
 struct ScalingPoint {
-  int arc_nodes = 0;
+  int mesh_size = 0;  ///< the generator's size parameter (ScalingStudy::mesh_parameter)
+  int dimension = 2;  ///< d: interface rows per contact node
   int free_dofs = 0;
   double factor_nonzeros = 0.0;  ///< entries of the Cholesky factor of K_ff
   bool in_mesh_series = false;
@@ -35,6 +36,9 @@ struct ScalingPoint {
 
 struct ScalingStudy {
   std::string scene_name, scene_file, command;
+  /// The generator key the mesh series varies: "arc_nodes" (half_disc, half_disc_slab) or
+  /// "divisions" (half_ball).
+  std::string mesh_parameter = "arc_nodes";
   double target_error = 1e-4;
   double tolerance = 0.0;  ///< on the error estimate
   int repeats = 1;
@@ -98,11 +102,11 @@ std::vector<MemorySlope> memorySlopes(const ScalingStudy& study, const std::stri
 /// Memory that the model predicts at one size, in MB (8-byte doubles).
 struct MemoryEstimate {
   double factor_mb = 0.0;              ///< Cholesky factor of K_ff (or K + BᵀkB, same pattern)
-  double interface_history_mb = 0.0;   ///< one 2 n_C × m history
+  double interface_history_mb = 0.0;   ///< one d n_C × m history
   double displacement_history_mb = 0.0;  ///< one n_free × m history
-  double delassus_mb = 0.0;            ///< dense (2 n_C)² Delassus matrix (incremental, error measure)
-  /// The dense Bᵀ and K_ff⁻¹ Bᵀ (n_free × 2 n_C each) that the Delassus matrix W = B K_ff⁻¹ Bᵀ is
-  /// formed from (CondensedInterface::build, incremental solver and error measure).
+  double delassus_mb = 0.0;            ///< dense (d n_C)² Delassus matrix (the 2D incremental solver)
+  /// The dense Bᵀ and K_ff⁻¹ Bᵀ (n_free × d n_C each) that the dense Delassus matrix W = B K_ff⁻¹ Bᵀ
+  /// is formed from (CondensedInterface::build, the 2D incremental solver).
   double condensation_mb = 0.0;
   double time_matrix_mb = 0.0;         ///< one dense m × m matrix
 };

@@ -12,8 +12,8 @@ namespace {
 
 std::string ratioCell(double ratio) { return std::isfinite(ratio) ? shortNumber(ratio, 4) : ""; }
 
-void csvHeader(std::ostream& out) {
-  out << "series,arc_nodes,dofs,free_dofs,contact_nodes,steps,solver,status,time_to_target_s,"
+void csvHeader(std::ostream& out, const ScalingStudy& study) {
+  out << "series," << study.mesh_parameter << ",dofs,free_dofs,contact_nodes,steps,solver,status,time_to_target_s,"
          "relaxations_to_target,sparse_solves_to_target,repeats_reaching,time_ratio_to_incremental,"
          "error_at_stop,best_error,iterations,peak_rss_mb,rss_growth_mb,baseline_mb,reference_s,error_run_s,"
          "factor_mb,interface_history_mb,displacement_history_mb,delassus_mb,condensation_mb\n";
@@ -26,7 +26,7 @@ void csvRow(std::ostream& out, const ScalingStudy& study, Series series, const S
   const Reach ref = reachAt(study, p, "incremental");
   const double ratio = r.wall_s && ref.wall_s ? *r.wall_s / *ref.wall_s : NAN;
   const MemoryEstimate e = estimateMemory(p);
-  out << toString(series) << ',' << p.arc_nodes << ',' << c.n_dofs << ',' << p.free_dofs << ','
+  out << toString(series) << ',' << p.mesh_size << ',' << c.n_dofs << ',' << p.free_dofs << ','
       << c.n_contact_nodes << ',' << c.n_steps << ',' << m.solver << ',' << reachStatus(study, p, m.solver) << ','
       << shortNumber(r.wall_s, 6) << ',' << shortNumber(r.relaxations, 8) << ',' << shortNumber(r.sparse_solves, 12)
       << ',' << r.repeats_reached << ',' << ratioCell(ratio) << ',' << shortNumber(m.final_error, 4) << ','
@@ -39,13 +39,14 @@ void csvRow(std::ostream& out, const ScalingStudy& study, Series series, const S
 
 }  // namespace
 
-std::string sizeFolderName(const ScalingPoint& point) {
-  return "arc_nodes_" + std::to_string(point.arc_nodes) + "_steps_" + std::to_string(point.comparison.n_steps);
+std::string sizeFolderName(const ScalingStudy& study, const ScalingPoint& point) {
+  return study.mesh_parameter + "_" + std::to_string(point.mesh_size) + "_steps_" +
+         std::to_string(point.comparison.n_steps);
 }
 
 std::string scalingCsv(const ScalingStudy& study) {
   std::ostringstream out;
-  csvHeader(out);
+  csvHeader(out, study);
   // By series, strategy, then size: each strategy's rows of a series are consecutive (one line per plot).
   for (Series series : {Series::Mesh, Series::Time})
     for (const std::string& solver : study.solvers)
@@ -56,7 +57,7 @@ std::string scalingCsv(const ScalingStudy& study) {
 
 void writeScaling(const std::filesystem::path& dir, const ScalingStudy& study) {
   for (const ScalingPoint& p : study.points) {
-    const std::filesystem::path folder = dir / "sizes" / sizeFolderName(p);
+    const std::filesystem::path folder = dir / "sizes" / sizeFolderName(study, p);
     std::filesystem::create_directories(folder);
     writeComparison(folder, p.comparison);
   }

@@ -13,8 +13,9 @@ namespace stc {
 std::string scalingCsv(const ScalingStudy& study);
 std::string scalingMarkdown(const ScalingStudy& study);
 
-/// "arc_nodes_101_steps_201": the folder of one size's comparison report, below sizes/.
-std::string sizeFolderName(const ScalingPoint& point);
+/// "arc_nodes_101_steps_201" (or "divisions_8_steps_201"): the folder of one size's comparison report,
+/// below sizes/.
+std::string sizeFolderName(const ScalingStudy& study, const ScalingPoint& point);
 
 /// Writes scaling.csv, summary.md and sizes/<size>/ into `dir` (which must exist), each file atomically.
 void writeScaling(const std::filesystem::path& dir, const ScalingStudy& study);

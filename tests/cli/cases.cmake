@@ -42,6 +42,15 @@ add_test(NAME cli.solve_hemisphere_writes_3d_tables
          COMMAND bash -c "head -1 ${out}/hemisphere/reactions.csv | grep -qx 'step,t,normal_force,tangential_force,tangential_force_2,contact_xmin,contact_xmax,n_contact,n_slip' && head -1 ${out}/hemisphere/contact.csv | grep -qx 'step,node,x,y,z,normal_force,tangential_force,tangential_force_2,pressure,shear,shear_2,gap,slip,slip_2,state' && grep -q 'NumberOfComponents=\"6\"' ${out}/hemisphere/vtu/step_00010.vtu && grep -q '10 10 10' ${out}/hemisphere/vtu/step_00010.vtu")
 set_tests_properties(cli.solve_hemisphere_writes_3d_tables PROPERTIES DEPENDS cli.solve_hemisphere_small LABELS cli)
 stc_cli_test(svd_hemisphere_small 0 "99.9" svd ${hemisphere} ${small3d} --out ${out}/svd3d)
+# The scaling study on the 3D scene: its mesh series varies mesh.divisions (the folder and the CSV
+# column say so); --arc-nodes does not apply to it.
+stc_cli_test(scaling_hemisphere_small 0 "divisions 3, steps 11" scaling ${hemisphere} --divisions 2,3 --steps none
+             --set time.steps=11 --solvers latin-pgd,incremental --repeats 1 --out ${out}/scaling3d)
+add_test(NAME cli.scaling_hemisphere_names_the_divisions
+         COMMAND bash -c "head -1 ${out}/scaling3d/scaling.csv | grep -q '^series,divisions,dofs,' && test -s ${out}/scaling3d/sizes/divisions_3_steps_11/summary.md && grep -q '| divisions | dofs |' ${out}/scaling3d/summary.md")
+set_tests_properties(cli.scaling_hemisphere_names_the_divisions PROPERTIES DEPENDS cli.scaling_hemisphere_small LABELS cli)
+stc_cli_test(bad_scaling_arc_nodes_on_half_ball 1 "--arc-nodes does not apply to a scene with the half_ball generator"
+             scaling ${hemisphere} --arc-nodes 21 --steps none --out ${out}/scaling3d_bad)
 
 # A posteriori space-time SVD (docs/method.md §3): prints the modes for 99%, 99.9%, 99.99% of the energy.
 stc_cli_test(svd_small 0 "99.9" svd ${seed} ${small} --out ${out}/svd)

@@ -29,7 +29,7 @@ ScalingStudy timeSeries(const std::string& solver) {
   study.solvers = {solver, "incremental"};
   for (int m : {1600, 100, 400}) {  // out of order: the series sorts them
     ScalingPoint p;
-    p.arc_nodes = 101;
+    p.mesh_size = 101;
     p.free_dofs = 1000;
     p.in_time_series = true;
     p.comparison.n_dofs = 1142;
