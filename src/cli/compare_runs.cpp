@@ -159,6 +159,9 @@ StrategyMeasurement measureStrategy(const std::string& solver, const CompareCont
     timed_stop = timedRunStop(c.stop, m.iterations);
   }
   const bool nothing_to_time = measured && c.stop.target_error && !firstReaching(measured->points, *c.stop.target_error);
+  // The peak is the timed runs' when there are any: they are the strategy alone, without the error
+  // measure of the error run (whose Delassus columns may be computed during it).
+  if (measured && !nothing_to_time && c.repeats > 0) probe.reset();
   for (int r = 1; r <= c.repeats && !nothing_to_time; ++r) {
     RunOutcome timed = runOnce(solver, c, false, repeatLabel(solver, r, c.repeats), timed_stop);
     TimedRun run{r, {}, timed.total_s};

@@ -5,6 +5,7 @@
 // limit, stagnation, NaN/Inf (numerical issue) or the user's callback.
 #include <Eigen/Core>
 #include <chrono>
+#include <optional>
 #include <string>
 
 #include "src/core/solver_settings.hpp"
@@ -43,10 +44,12 @@ class IterationMonitor {
 
   /// Final summary (termination, message, totals); call once at the end.
   SolveSummary finish();
+  /// Seconds since construction, the true-error measure's time excluded.
   double elapsed() const;
 
  private:
   bool stop(Termination termination, std::string message);
+  std::optional<double> measureError(const Eigen::MatrixXd& lambda);  // and adds its time to measure_s_
 
 
   SolveSummary summary_;
@@ -56,6 +59,7 @@ class IterationMonitor {
   const ErrorReference* reference_;
   IterationCallback callback_;
   std::chrono::steady_clock::time_point start_;
+  double measure_s_ = 0.0;  // seconds spent in the true-error measure
   double best_indicator_ = 0.0;
   int best_iteration_ = 0;
 

@@ -4,11 +4,12 @@
 
 namespace stc {
 
-LazyDelassus::LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free)
+LazyDelassus::LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free, double chunk_bytes)
     : B_(problem.contact.B),
       Bt_(problem.contact.B.transpose()),
       factor_(stiffness_free),
       d_(problem.contact.dimension),
+      chunk_bytes_(chunk_bytes),
       held_rows_(problem.contact.held_rows),
       slot_(problem.contact.size(), -1) {}
 
@@ -17,22 +18,42 @@ void LazyDelassus::ensure(const std::vector<int>& nodes) {
   for (int j : nodes)
     if (slot_[j] < 0 && std::find(missing.begin(), missing.end(), j) == missing.end()) missing.push_back(j);
   if (missing.empty()) return;
-  const auto& B = B_;
-  const int needed = (count_ + static_cast<int>(missing.size())) * d_;
-  if (needed > columns_.cols())  // grow by doubling: amortised copies
-    columns_.conservativeResize(B.rows(), std::max<Eigen::Index>(needed, 2 * columns_.cols()));
-  Eigen::MatrixXd rhs(B.cols(), d_ * static_cast<Eigen::Index>(missing.size()));
-  for (std::size_t p = 0; p < missing.size(); ++p)
-    for (int a = 0; a < d_; ++a) rhs.col(static_cast<Eigen::Index>(p) * d_ + a) = Bt_.col(d_ * missing[p] + a);
-  const Eigen::MatrixXd w = B * factor_.solve(rhs);
-  for (std::size_t p = 0; p < missing.size(); ++p) {
-    slot_[missing[p]] = count_;
+  reserve(count_ + static_cast<int>(missing.size()));
+  const auto chunk = static_cast<std::size_t>(chunkNodes());
+  for (std::size_t first = 0; first < missing.size(); first += chunk)
+    solveColumns({missing.begin() + static_cast<std::ptrdiff_t>(first),
+                  missing.begin() + static_cast<std::ptrdiff_t>(std::min(missing.size(), first + chunk))});
+}
+
+// Capacity for `nodes` nodes: doubling (amortised copies), never beyond the d n_C columns of W.
+void LazyDelassus::reserve(int nodes) {
+  const Eigen::Index needed = static_cast<Eigen::Index>(nodes) * d_;
+  if (needed <= columns_.cols()) return;
+  const Eigen::Index whole = static_cast<Eigen::Index>(slot_.size()) * d_;
+  columns_.conservativeResize(B_.rows(), std::min(whole, std::max(needed, 2 * columns_.cols())));
+}
+
+// Nodes per multi-right-hand-side solve: the dense right-hand side (n_free × d per node) stays below
+// chunk_bytes_, whatever the number of nodes asked for at once.
+int LazyDelassus::chunkNodes() const {
+  const double bytes_per_node = 8.0 * static_cast<double>(Bt_.rows()) * d_;
+  return std::max(1, static_cast<int>(chunk_bytes_ / bytes_per_node));
+}
+
+// W(:, columns of `nodes`) = B K⁻¹ Bᵀ(:, columns of `nodes`), stored in the next free slots.
+void LazyDelassus::solveColumns(const std::vector<int>& nodes) {
+  Eigen::MatrixXd rhs(Bt_.rows(), d_ * static_cast<Eigen::Index>(nodes.size()));
+  for (std::size_t p = 0; p < nodes.size(); ++p)
+    for (int a = 0; a < d_; ++a) rhs.col(static_cast<Eigen::Index>(p) * d_ + a) = Bt_.col(d_ * nodes[p] + a);
+  const Eigen::MatrixXd w = B_ * factor_.solve(rhs);
+  for (std::size_t p = 0; p < nodes.size(); ++p) {
+    slot_[nodes[p]] = count_;
     columns_.middleCols(static_cast<Eigen::Index>(count_) * d_, d_) = w.middleCols(static_cast<Eigen::Index>(p) * d_, d_);
     ++count_;
   }
   // Held rows: the compliance of giveHeldRowsCompliance (condensed_interface.hpp).
   for (int r : held_rows_)
-    if (const int j = r / d_; std::find(missing.begin(), missing.end(), j) != missing.end())
+    if (const int j = r / d_; std::find(nodes.begin(), nodes.end(), j) != nodes.end())
       columns_(r, static_cast<Eigen::Index>(slot_[j]) * d_ + r % d_) = entry(d_ * j, j, 0);
 }
 

@@ -15,11 +15,18 @@ namespace stc {
 
 class LazyDelassus {
  public:
-  LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free);
+  /// Bound on the dense blocks of one solve (right-hand side and solution, n_free × d per node):
+  /// 128 MiB. Asking for every node of a large 3D interface at once (the error measure does, when a
+  /// LATIN iterate loads them all; half_ball divisions 16: 2 × 4 GB in one block) then costs the
+  /// columns alone.
+  static constexpr double kChunkBytes = 128.0 * 1024 * 1024;
+
+  LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free, double chunk_bytes = kChunkBytes);
 
   /// Computes the columns of the nodes of `nodes` that do not have them yet (one multi-right-hand-
   /// side solve for all of them); a held row gets the compliance of giveHeldRowsCompliance
   /// (condensed_interface.hpp).
+  /// The solves go by chunks of nodes, so that their dense blocks stay small (chunkNodes()).
   void ensure(const std::vector<int>& nodes);
   bool has(int node) const { return slot_[node] >= 0; }
   /// W(:, d node + a), a = 0 … d − 1 (the node's columns must exist).
@@ -32,10 +39,15 @@ class LazyDelassus {
   double bytes() const { return 8.0 * static_cast<double>(columns_.rows()) * d_ * count_; }
 
  private:
+  void reserve(int nodes);
+  int chunkNodes() const;
+  void solveColumns(const std::vector<int>& nodes);
+
   const Eigen::SparseMatrix<double>& B_;
   const Eigen::SparseMatrix<double> Bt_;  // Bᵀ, its columns the right-hand sides of a node
   const SpdFactor& factor_;
   int d_;
+  double chunk_bytes_;
   std::vector<int> held_rows_;  // ContactInterface::held_rows, given a compliance when their node's columns come
   std::vector<int> slot_;    // per contact node: its block among the columns, −1 if not computed
   Eigen::MatrixXd columns_;  // d n_C × d capacity
