@@ -206,7 +206,9 @@ CLI::App* addScalingCommand(CLI::App& app, ScalingArgs& a) {
   cmd->add_option("--target-error", a.target_error, "true error whose time is measured")->capture_default_str();
   cmd->add_option("--tol", a.tolerance, "tolerance on the error estimate")->capture_default_str();
   cmd->add_option("--max-iterations", a.max_iterations, "iteration limit (default: the scene's)");
-  cmd->add_option("--time-cap", a.time_cap_s, "seconds after which an error run stops: \"not reached\"");
+  cmd->add_option("--time-cap", a.time_cap_s,
+                  "seconds on the solver's clock (the true-error measure left out) after which an error run "
+                  "stops: \"not reached\"");
   cmd->add_option("--set", a.overrides, "override a scene value for every size: section.key=value")->take_all();
   cmd->add_flag("--quiet", a.quiet, "no progress, no final report");
   return cmd;
