@@ -9,7 +9,9 @@ include(FindPackageHandleStandardArgs)
 find_package_handle_standard_args(OpenBLAS REQUIRED_VARS OpenBLAS_LIBRARY)
 if(OpenBLAS_FOUND AND NOT TARGET OpenBLAS::OpenBLAS)
   add_library(OpenBLAS::OpenBLAS UNKNOWN IMPORTED)
-  set_target_properties(OpenBLAS::OpenBLAS PROPERTIES IMPORTED_LOCATION "${OpenBLAS_LIBRARY}"
-                        INTERFACE_COMPILE_DEFINITIONS EIGEN_USE_BLAS)
+  set_target_properties(OpenBLAS::OpenBLAS PROPERTIES IMPORTED_LOCATION "${OpenBLAS_LIBRARY}")
+  if(NOT DEFINED STC_EIGEN_USE_BLAS OR STC_EIGEN_USE_BLAS)  # option of CMakeLists.txt, ON by default
+    set_target_properties(OpenBLAS::OpenBLAS PROPERTIES INTERFACE_COMPILE_DEFINITIONS EIGEN_USE_BLAS)
+  endif()
 endif()
 mark_as_advanced(OpenBLAS_LIBRARY)

@@ -6,6 +6,13 @@
 #   Left out, by ctest label:
 #     consumer  the find_package test builds an outside project against the installed libraries
 #               without the sanitizer flags, so it cannot link them; the Release run covers it.
+#   Eigen's own dense kernels (-DSTC_EIGEN_USE_BLAS=OFF): OpenBLAS is not instrumented, so ASan cannot
+#   check it, and its SSE2 symmetric matrix-vector kernel (dsymv_L_PRESCOTT, chosen at run time on
+#   some virtual machines; Debian 12 ships OpenBLAS 0.3.21) reads past the end of an operand, the
+#   kind of over-read OpenBLAS fixed in its complex kernel (pull request 3567). Under glibc's
+#   allocator that read stays inside the heap; under ASan's it can cross into an unmapped page:
+#   Eigen's SelfAdjointEigenSolver (the energy SVD of fas-apriori) then crashed in 4 of the hard
+#   cases and sweep tests. CHOLMOD and ARPACK still call OpenBLAS.
 #   Not built: the Python module (-DSTC_BUILD_PYTHON=OFF): a sanitized extension cannot be loaded
 #   into an interpreter that is not; the Release run tests it.
 # Sample run:
@@ -24,7 +31,7 @@ flags+=" -D_GLIBCXX_ASSERTIONS"
 # Debug keeps NDEBUG undefined (Eigen's index assertions stay on); -O1 keeps the tests fast.
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DSTC_BUILD_TESTS=ON -DSTC_BUILD_PYTHON=OFF >/dev/null
+  -DSTC_BUILD_TESTS=ON -DSTC_BUILD_PYTHON=OFF -DSTC_EIGEN_USE_BLAS=OFF >/dev/null
 cmake --build "$build" -j "$jobs"
 
 # exitcode=86: a sanitizer report must not pass for one of the command line's own exit codes
