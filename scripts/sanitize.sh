@@ -11,8 +11,8 @@
 #   some virtual machines; Debian 12 ships OpenBLAS 0.3.21) reads past the end of an operand, the
 #   kind of over-read OpenBLAS fixed in its complex kernel (pull request 3567). Under glibc's
 #   allocator that read stays inside the heap; under ASan's it can cross into an unmapped page:
-#   Eigen's SelfAdjointEigenSolver (the energy SVD of fas-apriori) then crashed in 4 of the hard
-#   cases and sweep tests. CHOLMOD and ARPACK still call OpenBLAS.
+#   Eigen's SelfAdjointEigenSolver (the energy SVD of fas-apriori) then crashed six tests (hard
+#   cases, the sweep command). CHOLMOD and ARPACK still call OpenBLAS.
 #   Not built: the Python module (-DSTC_BUILD_PYTHON=OFF): a sanitized extension cannot be loaded
 #   into an interpreter that is not; the Release run tests it.
 # Sample run:
