@@ -15,18 +15,17 @@ namespace stc {
 
 class LazyDelassus {
  public:
-  /// Bound on the dense blocks of one solve (right-hand side and solution, n_free × d per node):
-  /// 128 MiB. Asking for every node of a large 3D interface at once (the error measure does, when a
-  /// LATIN iterate loads them all; half_ball divisions 16: 2 × 4 GB in one block) then costs the
-  /// columns alone.
+  /// Bound on each dense block of one solve (its right-hand side, and its solution of the same
+  /// size: n_free × d per node): 128 MiB. Asking for every node of a large 3D interface at once (the
+  /// error measure does, when a LATIN iterate loads them all; half_ball divisions 16: 2 × 3.8 GB as
+  /// one block) then costs the columns alone.
   static constexpr double kChunkBytes = 128.0 * 1024 * 1024;
 
   LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free, double chunk_bytes = kChunkBytes);
 
   /// Computes the columns of the nodes of `nodes` that do not have them yet (one multi-right-hand-
-  /// side solve for all of them); a held row gets the compliance of giveHeldRowsCompliance
-  /// (condensed_interface.hpp).
-  /// The solves go by chunks of nodes, so that their dense blocks stay small (chunkNodes()).
+  /// side solve per chunk of them, chunkNodes()); a held row gets the compliance of
+  /// giveHeldRowsCompliance (condensed_interface.hpp).
   void ensure(const std::vector<int>& nodes);
   bool has(int node) const { return slot_[node] >= 0; }
   /// W(:, d node + a), a = 0 … d − 1 (the node's columns must exist).
