@@ -15,7 +15,9 @@
 //   --set KEY=VALUE (repeatable, passed to readScene), --small (mesh.arc_nodes=21, time.steps=21,
 //   four runs: the ctest case examples.fas_aposteriori_study_small), --max-relaxations N (cap per
 //   run, default 600), --safeguard (FAS with the coarse-step safeguard of FasOptions, the library
-//   default; without it the seed's plain cycle, which its figures show).
+//   default, with i_C adapted to its verdicts; without it the seed's plain cycle, which its figures
+//   show), --fixed-ic (with --safeguard: i_C fixed, FasOptions::adapt_coarse_iterations off, as in
+//   version 0.2.0).
 // Steps: 1 scene · 2 reference, true-error measure, SVD modes · 3 runs (one CSV each) ·
 //   4 coarse-step cost · 5 figures (gnuplot) · 6 summary.md · 7 check: FAS (10 SVD + 15 RES,
 //   ν = 2) reaches true error 1e-4 in fewer relaxations than LATIN.
@@ -64,6 +66,7 @@ struct Options {
   bool small = false;
   bool help = false;
   bool safeguard = false;  ///< --safeguard: FAS with the coarse-step safeguard (library default)
+  bool fixed_ic = false;   ///< --fixed-ic: with the safeguard, i_C fixed (adapted by default)
   int max_relaxations = 600;
   int repeats = 31;  ///< timing repeats of step 4 (median)
 };
@@ -84,6 +87,8 @@ Options parseArgs(int argc, char** argv) {
       o.small = true;
     else if (a == "--safeguard")
       o.safeguard = true;
+    else if (a == "--fixed-ic")
+      o.fixed_ic = true;
     else if (a == "--max-relaxations") {
       const std::string v = value(i);
       try {
@@ -99,6 +104,7 @@ Options parseArgs(int argc, char** argv) {
       o.scene = a;
   }
   if (o.max_relaxations < 10) throw stc::InputError("--max-relaxations must be >= 10");
+  if (o.fixed_ic && !o.safeguard) throw stc::InputError("--fixed-ic needs --safeguard (the plain cycle's i_C is fixed)");
   if (o.small) o.overrides.insert(o.overrides.begin(), {"mesh.arc_nodes=21", "time.steps=21"});
   return o;
 }
@@ -150,6 +156,7 @@ struct Study {
   Eigen::MatrixXd modes;  ///< n_free × (≤ kMaxModes) energy-SVD modes of the converged solution
   double incremental_s = 0.0, svd_s = 0.0;
   bool safeguard = false;  ///< FasOptions::safeguard (off: the seed's plain cycle, as in its figures)
+  bool adapt = true;       ///< FasOptions::adapt_coarse_iterations (with the safeguard only)
 };
 
 stc::SolveResult runOne(const Study& st, const RunSpec& r, stc::latin::GlobalStage& global, int cap) {
@@ -173,6 +180,7 @@ stc::SolveResult runOne(const Study& st, const RunSpec& r, stc::latin::GlobalSta
   o.start = r.start;
   o.stagnation_window = 150;
   o.safeguard = st.safeguard;
+  o.adapt_coarse_iterations = st.adapt;
   const int m = std::min<int>(r.modes, static_cast<int>(st.modes.cols()));
   global.keepDisplacements(true);
   stc::fas::FixedBasisProvider provider(st.modes.leftCols(m), r.res, global, st.problem.contact.B);
@@ -344,7 +352,10 @@ void writeSummary(const fs::path& file, const Options& opt, const Study& st, con
      << st.problem.numSteps() << " instants, kappa = " << st.scene.solver.search_scale << ". Relaxation cap "
      << opt.max_relaxations << ", runs stop at true error <= 1e-8 or indicator <= 1e-9, "
      << "stagnation window 150; i_C = 15; FAS cycle "
-     << (opt.safeguard ? "with the coarse-step safeguard" : "plain (the seed's, no safeguard)") << ".\n\n"
+     << (!opt.safeguard   ? "plain (the seed's, no safeguard)"
+         : opt.fixed_ic ? "with the coarse-step safeguard, i_C fixed"
+                        : "with the coarse-step safeguard, i_C adapted to it (at most 15)")
+     << ".\n\n"
      << "Incremental reference: " << sci(st.incremental_s, 3)
      << " s. Energy SVD modes (a posteriori cost): " << sci(st.svd_s, 3) << " s. Whole study: " << sci(total_s, 3)
      << " s.\n\n"
@@ -460,6 +471,7 @@ void drawFigures(const fs::path& out, const std::vector<Figure>& figs, const std
 Study prepare(const Options& opt) {
   Study st;
   st.safeguard = opt.safeguard;
+  st.adapt = !opt.fixed_ic;
   st.scene = stc::readScene(opt.scene, opt.overrides);
   st.problem = stc::buildProblem(st.scene);
   std::cout << "1. Scene " << opt.scene.string() << ": " << st.problem.numDofs() << " dofs, "
@@ -512,7 +524,8 @@ bool check(const std::vector<Outcome>& all) {
 int run(const Options& opt) {
   const auto t0 = Clock::now();
   std::cout << "Options: scene " << opt.scene.string() << ", --out " << opt.out.string()
-            << (opt.small ? ", --small" : "") << (opt.safeguard ? ", --safeguard" : "") << ", --max-relaxations " << opt.max_relaxations;
+            << (opt.small ? ", --small" : "") << (opt.safeguard ? ", --safeguard" : "")
+            << (opt.fixed_ic ? ", --fixed-ic" : "") << ", --max-relaxations " << opt.max_relaxations;
   for (const auto& s : opt.overrides) std::cout << ", --set " << s;
   std::cout << "\n";
   fs::create_directories(opt.out);
@@ -542,7 +555,7 @@ int main(int argc, char** argv) {
     const Options options = parseArgs(argc, argv);
     if (options.help) {
       std::cout << "usage: fas_aposteriori_study [SCENE] [--out DIR] [--set KEY=VALUE]... [--small] "
-                   "[--max-relaxations N] [--safeguard]\n";
+                   "[--max-relaxations N] [--safeguard [--fixed-ic]]\n";
       return 0;
     }
     return run(options);

@@ -26,6 +26,13 @@ struct FasOptions {
   /// a 2-cycle at true error 0.1-0.2 (docs/compare_bases.md). Off: the seed's plain cycle.
   bool safeguard = true;
   int max_skip = 8;               ///< >= 1, longest run of skipped coarse steps
+  /// With the safeguard, i_C follows its verdicts (additive increase, multiplicative decrease): a
+  /// rejected correction halves the coarse iterations of the next coarse steps (at least 1), each
+  /// accepted one adds one back, up to coarse_iterations. Where the later coarse iterations
+  /// overshoot (the 3D hemisphere: 6 of 27 corrections of 15 iterations rejected, none of 4), this
+  /// keeps the part that helps; where none is rejected (the plane seed scene) nothing changes.
+  /// docs/method.md §4. Off: i_C fixed.
+  bool adapt_coarse_iterations = true;
   int stagnation_window = defaults::stagnation_window;  ///< relaxations without a 1% decrease of η (0: never)
 
   void validate() const;  ///< throws InputError naming the field

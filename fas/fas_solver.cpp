@@ -58,9 +58,19 @@ class FineLevel {
 // FasOptions::safeguard: the first relaxation after a coarse step judges it. A correction that
 // raised the indicator is undone (the pre-coarse local stage comes back; the relaxation spent on
 // the test stays counted) and the coarse step is skipped for a while, doubling while it fails.
+// FasOptions::adapt_coarse_iterations: the verdicts also set i_C, halved on a rejection, one more
+// on an acceptance, within [1, coarse_iterations].
 class CoarseGuard {
  public:
-  explicit CoarseGuard(const FasOptions& options) : enabled_(options.safeguard), max_skip_(options.max_skip) {}
+  explicit CoarseGuard(const FasOptions& options)
+      : enabled_(options.safeguard),
+        adapt_(options.safeguard && options.adapt_coarse_iterations),
+        max_skip_(options.max_skip),
+        max_iterations_(options.coarse_iterations),
+        iterations_(options.coarse_iterations) {}
+
+  /// i_C of the next coarse step.
+  int coarseIterations() const { return iterations_; }
 
   bool skipThisCycle() {
     if (skip_ == 0) return false;
@@ -78,10 +88,12 @@ class CoarseGuard {
     pending_ = false;
     if (fine.eta <= eta_before_) {
       backoff_ = 1;
+      if (adapt_) iterations_ = std::min(iterations_ + 1, max_iterations_);
       return;
     }
     fine.hat = std::move(saved_);
     ++rejected;
+    if (adapt_) iterations_ = std::max(iterations_ / 2, 1);
     skip_ = backoff_;
     backoff_ = std::min(2 * backoff_, max_skip_);
   }
@@ -89,8 +101,8 @@ class CoarseGuard {
   int rejected = 0;
 
  private:
-  bool enabled_;
-  int max_skip_;
+  bool enabled_, adapt_;
+  int max_skip_, max_iterations_, iterations_;
   bool pending_ = false;
   InterfaceHistory saved_;
   double eta_before_ = 0.0;
@@ -141,7 +153,9 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
       rank = space.rank();
       if (rank > 0) {
         guard.arm(fine);
-        coarseStep(problem.contact, space, options, fine.s, fine.hat);
+        FasOptions step = options;
+        step.coarse_iterations = guard.coarseIterations();
+        coarseStep(problem.contact, space, step, fine.s, fine.hat);
         coarse = true;
       }
     }
@@ -154,7 +168,11 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
   InterfaceHistory admissible;
   latin::localStage(problem.contact, fine.s, admissible);
   SolveSummary summary = monitor.finish();
-  if (guard.rejected > 0) summary.message += "; " + std::to_string(guard.rejected) + " coarse corrections rejected";
+  if (guard.rejected > 0) {
+    summary.message += "; " + std::to_string(guard.rejected) + " coarse corrections rejected";
+    if (guard.coarseIterations() < options.coarse_iterations)
+      summary.message += ", i_C ended at " + std::to_string(guard.coarseIterations());
+  }
   return {std::move(fine.s), std::move(summary), std::move(admissible), {}, {}};
 }
 

@@ -96,6 +96,7 @@ struct FasSpec {
   int pgd_increment_modes = defaults::pgd_increment_modes;
   double pgd_gap_share = defaults::pgd_gap_share;  ///< latin-pgd, fas-apriori: γ in (0, 1)
   CoarseStart coarse_start = defaults::coarse_start;        ///< "zero" (docs/method.md §4 option a) or "mismatch" (b)
+  bool adapt_coarse_iterations = true;  ///< i_C halved on a rejected correction, +1 on an accepted one
 };
 
 /// [solver]: choice and common options (each solver validates its own further options).
@@ -105,7 +106,7 @@ struct SolverSpec {
   int max_iterations = defaults::max_iterations;  ///< >= 1
   double search_scale = 4.0;         ///< kappa of docs/method.md §2, > 0; 4 from docs/search_direction.md
   double relaxation = 1.0;           ///< omega in (0, 1]
-  FasSpec fas;                       ///< keys pre_relaxations … coarse_start of [solver]
+  FasSpec fas;                       ///< keys pre_relaxations … adapt_coarse_iterations of [solver]
 };
 
 /// [output]: what to write beside the CSV/JSON files.

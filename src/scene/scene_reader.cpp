@@ -312,6 +312,8 @@ FasSpec readFas(const TableView& solver) {
   fas.pgd_gap_share = solver.optionalNumber("pgd_gap_share").value_or(fas.pgd_gap_share);
   requireRange(solver, "pgd_gap_share", fas.pgd_gap_share, fas.pgd_gap_share > 0.0 && fas.pgd_gap_share < 1.0,
                "must be in (0, 1)");
+  fas.adapt_coarse_iterations =
+      solver.optionalBool("adapt_coarse_iterations").value_or(fas.adapt_coarse_iterations);
   if (solver.has("coarse_start"))
     fas.coarse_start = readKeyword(solver, "coarse_start", {"zero", "mismatch"}) == "mismatch"
                            ? CoarseStart::InterfaceMismatch
@@ -323,9 +325,9 @@ SolverSpec readSolver(const TableView& root, std::vector<std::string>& warnings)
   SolverSpec spec;
   const auto solver = root.optionalTable(
       "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
-                 "post_relaxations", "coarse_iterations", "residual_vectors", "svd_modes", "coarse_start",
-                 "pgd_max_modes", "pgd_increment_modes", "pgd_gap_share", "pgd_modes_per_cycle",
-                 "pgd_seed_share"});
+                 "post_relaxations", "coarse_iterations", "adapt_coarse_iterations", "residual_vectors",
+                 "svd_modes", "coarse_start", "pgd_max_modes", "pgd_increment_modes", "pgd_gap_share",
+                 "pgd_modes_per_cycle", "pgd_seed_share"});
   if (!solver) return spec;
   if (solver->has("name")) {
     spec.name = readKeyword(*solver, "name", kSolverNames);

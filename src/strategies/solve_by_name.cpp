@@ -21,6 +21,7 @@ fas::FasOptions fasOptions(const SolverSpec& spec) {
   o.post_relaxations = spec.fas.post_relaxations;
   o.coarse_iterations = spec.fas.coarse_iterations;
   o.start = spec.fas.coarse_start;
+  o.adapt_coarse_iterations = spec.fas.adapt_coarse_iterations;
   return o;
 }
 
