@@ -93,7 +93,7 @@ void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory&
   r_scaled.noalias() -= scaled * c_;
   error_ = r_scaled.norm();
   // Before any gap is known (the first solve, or a warm start) the bound is a share of w itself; it
-  // is never below the share of the tolerance (ControlledStageOptions::floor_share).
+  // is never below the floor, if one is set (ControlledStageOptions::floor_share).
   const double scale = w_scaled.norm();
   const double target = std::max(target_ >= 0.0 ? target_ : options_.gap_share * scale,
                                  options_.gap_share * options_.floor_share * options_.tolerance * scale);
