@@ -46,7 +46,7 @@ TEST(ThreeD, FasAprioriNeedsFewerRelaxationsThanLatin) {
 // On the 3D hemisphere the coarse corrections of 15 restricted LATIN iterations overshoot and the
 // safeguard rejects them; with i_C following its verdicts (halved on a rejection, one more on an
 // acceptance) fewer are rejected and fewer relaxations are needed (measured at divisions 7, m = 101:
-// 34 relaxations and 2 rejections against 40 and 3; docs/method.md §4). Both reach the solution.
+// 35 relaxations and 2 rejections against 40 and 3; docs/method.md §4). Both reach the solution.
 TEST(ThreeD, AdaptedCoarseIterationsSaveRelaxationsWhereCorrectionsOvershoot) {
   stc::Scene scene = stc::test::hemisphereScene(7, 101);
   const stc::test::StrategyFixture adapted(scene);
