@@ -22,17 +22,17 @@ AprioriBasisProvider::AprioriBasisProvider(const pgd::ControlledGlobalStage& sta
 
 CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& /*s*/) {
   const pgd::ResponseBasis& basis = stage_.basis();
+  const pgd::EnergyFactor& factor = basis.energyFactor();
   const Eigen::MatrixXd& c = stage_.coordinates();
   // In whitened coordinates the A-product is the Euclidean one: modes are unit vectors there.
-  const pgd::Whitening w = pgd::whitening(basis);
   const Eigen::Index q = basis.loadHistories().rows();
   Eigen::MatrixXd theta = pgd::historyFactor(basis, c);
-  Eigen::MatrixXd U = pgd::leadingSingularVectors(w.to_coordinates * theta, options_.modes);
+  Eigen::MatrixXd U = pgd::leadingSingularVectors(factor.whiten(theta), options_.modes);
   if (options_.increment_modes > 0 && previous_.size() > 0) {
     // ũ − ũ_previous: the loads' part cancels, the coordinates of directions added since are new.
     theta.topRows(q).setZero();
     theta.middleRows(q, previous_.rows()) -= previous_;
-    Eigen::MatrixXd d = w.to_coordinates * theta;
+    Eigen::MatrixXd d = factor.whiten(theta);
     d -= U * (U.transpose() * d);
     const Eigen::MatrixXd V = pgd::leadingSingularVectors(d, options_.increment_modes, 1e-10);
     Eigen::MatrixXd all(U.rows(), U.cols() + V.cols());
@@ -41,7 +41,7 @@ CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& /*s*/) {
     U = qr.householderQ() * Eigen::MatrixXd::Identity(all.rows(), all.cols());
   }
   previous_ = c;
-  return CoarseSpace::fromTraces(pgd::modeTraces(basis, w.to_modes * U));
+  return CoarseSpace::fromTraces(pgd::modeTraces(basis, factor.combination(U)));
 }
 
 }  // namespace stc::fas

@@ -5,52 +5,75 @@
 namespace stc::pgd {
 
 ResponseBasis::ResponseBasis(const Problem& problem, const SpdFactor& factor)
-    : problem_(problem), factor_(factor) {
+    : problem_(problem),
+      factor_(factor),
+      Z_(problem.contact.rows()),
+      Zs_(problem.contact.rows()),
+      X_(problem.numFreeDofs()),
+      T_(problem.contact.rows()) {
   const Eigen::VectorXd& k = problem.contact.search_direction;
   sqrt_k_ = k.cwiseSqrt();
   inv_sqrt_k_ = sqrt_k_.cwiseInverse();
-  const int rows = static_cast<int>(k.size());
-  Z_.resize(rows, 0);
-  Zs_.resize(rows, 0);
-  T_.resize(rows, 0);
-  X_.resize(problem.numFreeDofs(), 0);
   const SeparatedLoads loads = separatedLoads(problem);
   G_ = loads.G;
   UF_ = loads.F.cols() > 0 ? factor.solve(loads.F) : Eigen::MatrixXd(problem.numFreeDofs(), 0);
   sparse_solves_ += UF_.cols();
   VF_ = problem.contact.B * UF_;
-  UFtF_ = UF_.transpose() * loads.F;
   v0_ = VF_ * G_;
+  // U_Fᵀ A U_F = U_Fᵀ F, symmetrised.
+  const Eigen::MatrixXd load_energy = UF_.transpose() * loads.F;
+  for (Eigen::Index j = 0; j < UF_.cols(); ++j)
+    energy_.append(0.5 * (load_energy.col(j).head(j + 1) + load_energy.row(j).head(j + 1).transpose()));
+}
+
+Eigen::MatrixXd ResponseBasis::orthonormalised(const Eigen::MatrixXd& candidates, double drop) const {
+  Eigen::MatrixXd Y = inv_sqrt_k_.asDiagonal() * candidates;
+  const Eigen::VectorXd original = Y.colwise().norm();
+  const View Zs = Zs_.view();
+  for (int pass = 0; pass < 2 && Zs.cols() > 0; ++pass) Y -= Zs * (Zs.transpose() * Y);
+  Eigen::Index kept = 0;
+  const Eigen::Index room = Z_.rows() - Z_.cols();
+  for (Eigen::Index j = 0; j < Y.cols() && kept < room; ++j) {
+    if (!(original[j] > 0.0)) continue;
+    Eigen::VectorXd y = Y.col(j);
+    for (int pass = 0; pass < 2 && kept > 0; ++pass) y -= Y.leftCols(kept) * (Y.leftCols(kept).transpose() * y);
+    const double norm = y.norm();
+    if (!(norm > drop * original[j])) continue;
+    Y.col(kept++) = y / norm;
+  }
+  return Y.leftCols(kept);
+}
+
+void ResponseBasis::extendEnergyFactor(Eigen::Index added) {
+  // For a new direction z_j: φ_jᵀ A φ_i = (B φ_i)ᵀ z_j, the direction block symmetrised.
+  const Eigen::Index p = Z_.cols() - added;
+  const View Z = Z_.view(), T = T_.view();
+  const Eigen::MatrixXd load_part = VF_.transpose() * Z.rightCols(added);   // q × added
+  const Eigen::MatrixXd TZ = T.transpose() * Z.rightCols(added);            // (p + added) × added
+  const Eigen::MatrixXd ZT = Z.transpose() * T.rightCols(added);            // (p + added) × added
+  const Eigen::Index q = VF_.cols();
+  for (Eigen::Index a = 0; a < added; ++a) {
+    Eigen::VectorXd products(q + p + a + 1);
+    products.head(q) = load_part.col(a);
+    products.tail(p + a + 1) = 0.5 * (TZ.col(a).head(p + a + 1) + ZT.col(a).head(p + a + 1));
+    energy_.append(products);
+  }
 }
 
 int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {
   // Work with scaled directions ẑ = k^{-1/2} z, orthonormal in the Euclidean product.
-  Eigen::MatrixXd scaled = Zs_;
-  Eigen::MatrixXd kept(Z_.rows(), 0);
-  for (Eigen::Index j = 0; j < candidates.cols() && scaled.cols() < Z_.rows(); ++j) {
-    Eigen::VectorXd y = inv_sqrt_k_.asDiagonal() * candidates.col(j);
-    const double original = y.norm();
-    if (!(original > 0.0)) continue;
-    for (int pass = 0; pass < 2 && scaled.cols() > 0; ++pass) y -= scaled * (scaled.transpose() * y);
-    const double norm = y.norm();
-    if (!(norm > drop * original)) continue;
-    scaled.conservativeResize(Eigen::NoChange, scaled.cols() + 1);
-    scaled.col(scaled.cols() - 1) = y / norm;
-    kept.conservativeResize(Eigen::NoChange, kept.cols() + 1);
-    kept.col(kept.cols() - 1) = sqrt_k_.asDiagonal() * (y / norm);
-  }
-  const Eigen::Index added = kept.cols(), p = Z_.cols();
+  const Eigen::MatrixXd scaled = orthonormalised(candidates, drop);
+  const Eigen::Index added = scaled.cols();
   if (added == 0) return 0;
+  const Eigen::MatrixXd kept = sqrt_k_.asDiagonal() * scaled;
   const auto& B = problem_.contact.B;
   const Eigen::MatrixXd X = factor_.solve(Eigen::MatrixXd(B.transpose() * kept));
   sparse_solves_ += added;
-  Z_.conservativeResize(Eigen::NoChange, p + added);
-  Z_.rightCols(added) = kept;
-  Zs_ = std::move(scaled);
-  X_.conservativeResize(Eigen::NoChange, p + added);
-  X_.rightCols(added) = X;
-  T_.conservativeResize(Eigen::NoChange, p + added);
-  T_.rightCols(added) = B * X;
+  Z_.append(kept);
+  Zs_.append(scaled);
+  X_.append(X);
+  T_.append(B * X);
+  extendEnergyFactor(added);
   return static_cast<int>(added);
 }
 

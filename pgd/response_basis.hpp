@@ -5,10 +5,15 @@
 // so its solutions are u_k = U_F g_k + A⁻¹ Bᵀ w_k with the load responses U_F = A⁻¹ F (q solves,
 // once). For the interface part the basis keeps directions Z = [z_1 … z_p] (2n_C × p, orthonormal
 // in the k⁻¹ product: Zᵀ k⁻¹ Z = I), their responses X = A⁻¹ Bᵀ Z (n_free × p: the spatial modes
-// of the separated displacement u_k ≈ U_F g_k + X c_k) and their traces T = B X (2n_C × p).
-// Nothing here is n_free × m: memory O((q + p) n_free + (q + p + m) n_C).
+// of the separated displacement u_k ≈ U_F g_k + X c_k) and their traces T = B X (2n_C × p), and the
+// Cholesky factor of the energy Gram matrix of Φ = [U_F X] (pgd/energy_factor.hpp), from traces:
+//   U_Fᵀ A U_F = U_Fᵀ F,   U_Fᵀ A X = U_Fᵀ Bᵀ Z = V_Fᵀ Z,   Xᵀ A X = Xᵀ Bᵀ Z = Tᵀ Z.
+// Nothing here is n_free × m: memory O((q + p) n_free + (q + p + m) n_C). Columns are appended to
+// storage with spare capacity (pgd/column_store.hpp): the accessors are views.
 #include <Eigen/Core>
 
+#include "pgd/column_store.hpp"
+#include "pgd/energy_factor.hpp"
 #include "src/linalg/spd_factor.hpp"
 #include "src/problem/problem.hpp"
 
@@ -16,36 +21,45 @@ namespace stc::pgd {
 
 class ResponseBasis {
  public:
+  using View = ColumnStore::View;
   /// `factor` factorises A = K_ff + Bᵀ k B, k = problem.contact.search_direction.
   ResponseBasis(const Problem& problem, const SpdFactor& factor);
 
   int size() const { return static_cast<int>(Z_.cols()); }       ///< p
   int maxSize() const { return static_cast<int>(Z_.rows()); }    ///< 2n_C: Z then spans every w
-  const Eigen::MatrixXd& directions() const { return Z_; }       ///< Z, 2n_C × p
-  const Eigen::MatrixXd& scaledDirections() const { return Zs_; } ///< k^{-1/2} Z: orthonormal columns
-  const Eigen::MatrixXd& responses() const { return X_; }        ///< X = A⁻¹ Bᵀ Z, n_free × p
-  const Eigen::MatrixXd& traces() const { return T_; }           ///< T = B X, 2n_C × p
+  View directions() const { return Z_.view(); }                  ///< Z, 2n_C × p
+  View scaledDirections() const { return Zs_.view(); }           ///< k^{-1/2} Z: orthonormal columns
+  View responses() const { return X_.view(); }                   ///< X = A⁻¹ Bᵀ Z, n_free × p
+  View traces() const { return T_.view(); }                      ///< T = B X, 2n_C × p
   const Eigen::MatrixXd& loadResponses() const { return UF_; }   ///< U_F = A⁻¹ F, n_free × q
   const Eigen::MatrixXd& loadTraces() const { return VF_; }      ///< V_F = B U_F, 2n_C × q
-  const Eigen::MatrixXd& loadEnergy() const { return UFtF_; }    ///< U_Fᵀ F = U_Fᵀ A U_F, q × q
   const Eigen::MatrixXd& loadHistories() const { return G_; }    ///< G, q × m
   const Eigen::MatrixXd& freeResponse() const { return v0_; }    ///< V_F G: v of w = 0, 2n_C × m
+  /// The Cholesky factor of ΦᵀAΦ, Φ = [U_F X] (q + p columns).
+  const EnergyFactor& energyFactor() const { return energy_; }
   /// √k and 1/√k per interface row: the k⁻¹ product is the Euclidean one of k^{-1/2} w.
   const Eigen::VectorXd& sqrtK() const { return sqrt_k_; }
   const Eigen::VectorXd& invSqrtK() const { return inv_sqrt_k_; }
 
-  /// Appends the columns of `candidates` (2n_C × b), k⁻¹-orthogonalised against the directions and
-  /// each other (Gram–Schmidt, twice), dropping those left with less than `drop` of their norm, and
-  /// solves for their responses (one multi-right-hand-side solve). Returns the number appended.
+  /// Appends the columns of `candidates` (2n_C × b), k⁻¹-orthogonalised against the directions
+  /// (block classical Gram–Schmidt, twice) and each other (in order), dropping those left with less
+  /// than `drop` of their norm, and solves for their responses (one multi-right-hand-side solve).
+  /// Returns the number appended.
   int append(const Eigen::MatrixXd& candidates, double drop = 1e-8);
   /// Right-hand sides solved so far (loads included).
   long sparseSolves() const { return sparse_solves_; }
 
  private:
+  /// k^{-1/2}-scaled candidates made orthonormal to Zs and each other; dependent ones dropped.
+  Eigen::MatrixXd orthonormalised(const Eigen::MatrixXd& candidates, double drop) const;
+  void extendEnergyFactor(Eigen::Index added);  ///< the energy factor's columns for the new directions
+
   const Problem& problem_;
   const SpdFactor& factor_;
   Eigen::VectorXd sqrt_k_, inv_sqrt_k_;
-  Eigen::MatrixXd Z_, Zs_, X_, T_, UF_, VF_, UFtF_, G_, v0_;
+  ColumnStore Z_, Zs_, X_, T_;
+  Eigen::MatrixXd UF_, VF_, G_, v0_;
+  EnergyFactor energy_;
   long sparse_solves_ = 0;
 };
 

@@ -1,19 +1,31 @@
 #include "pgd/separated_history.hpp"
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+#include <Eigen/QR>
+#include <algorithm>
+#include <random>
 
 namespace stc::pgd {
 namespace {
 
-// ΦᵀAΦ for Φ = [U_F X], from traces (header).
-Eigen::MatrixXd gram(const ResponseBasis& basis) {
-  const Eigen::Index q = basis.loadResponses().cols(), p = basis.size();
-  Eigen::MatrixXd M(q + p, q + p);
-  M.topLeftCorner(q, q) = basis.loadEnergy();
-  M.topRightCorner(q, p) = basis.loadTraces().transpose() * basis.directions();
-  M.bottomLeftCorner(p, q) = M.topRightCorner(q, p).transpose();
-  M.bottomRightCorner(p, p) = basis.traces().transpose() * basis.directions();
-  return 0.5 * (M + M.transpose());
+constexpr int kOversampling = 10;
+constexpr int kSubspaceIterations = 2;
+
+Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y) {
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(Y.rows(), Y.cols());
+}
+
+// An orthonormal basis of (approximately) the leading `samples`-dimensional range of C.
+Eigen::MatrixXd rangeFinder(const Eigen::MatrixXd& C, Eigen::Index samples) {
+  if (samples == C.rows()) return Eigen::MatrixXd::Identity(C.rows(), C.rows());
+  std::mt19937 rng(20160101u);
+  std::normal_distribution<double> normal;
+  Eigen::MatrixXd omega(C.cols(), samples);
+  for (Eigen::Index j = 0; j < omega.size(); ++j) omega(j) = normal(rng);
+  Eigen::MatrixXd Q = orthonormalColumns(C * omega);
+  for (int it = 0; it < kSubspaceIterations; ++it) Q = orthonormalColumns(C * (C.transpose() * Q));
+  return Q;
 }
 
 }  // namespace
@@ -26,33 +38,25 @@ Eigen::MatrixXd historyFactor(const ResponseBasis& basis, const Eigen::MatrixXd&
   return theta;
 }
 
-Whitening whitening(const ResponseBasis& basis) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram(basis));
-  const Eigen::VectorXd& d = eig.eigenvalues();  // ascending
-  const double largest = d.size() > 0 ? d.maxCoeff() : 0.0;
-  int keep = 0;
-  for (Eigen::Index j = 0; j < d.size(); ++j) keep += d[j] > 1e-14 * largest;
-  const Eigen::MatrixXd V = eig.eigenvectors().rightCols(keep);
-  const Eigen::VectorXd sqrt_d = d.tail(keep).cwiseSqrt();
-  return {V * sqrt_d.cwiseInverse().asDiagonal(), sqrt_d.asDiagonal() * V.transpose()};
-}
-
 Eigen::MatrixXd leadingSingularVectors(const Eigen::MatrixXd& coordinates, int count, double drop) {
-  // Left singular vectors from the eigenvectors of Θ̂ Θ̂ᵀ (s' × s', s' ≪ m).
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(coordinates * coordinates.transpose());
-  const Eigen::VectorXd& d = eig.eigenvalues();  // ascending: σ²
-  const Eigen::Index size = d.size();
+  const Eigen::Index samples = std::min<Eigen::Index>({count + kOversampling, coordinates.rows(), coordinates.cols()});
+  if (count <= 0 || samples == 0) return Eigen::MatrixXd(coordinates.rows(), 0);
+  const Eigen::MatrixXd Q = rangeFinder(coordinates, samples);
+  // The SVD of the small projected matrix itself (not of its Gram matrix, whose eigenvalues would
+  // resolve σ only down to √ε σ_1): singular values to ε σ_1, so `drop` means what it says.
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Q.transpose() * coordinates, Eigen::ComputeThinU);
+  const Eigen::VectorXd& sigma = svd.singularValues();  // decreasing
   int keep = 0;
-  while (keep < count && keep < size && d[size - 1 - keep] > drop * drop * d[size - 1]) ++keep;
-  return eig.eigenvectors().rightCols(keep).rowwise().reverse();
+  while (keep < count && keep < sigma.size() && sigma[keep] > drop * sigma[0]) ++keep;
+  return Q * svd.matrixU().leftCols(keep);
 }
 
 EnergySvd energySvd(const ResponseBasis& basis, const Eigen::MatrixXd& c, int count, double drop) {
-  const Whitening w = whitening(basis);
-  const Eigen::MatrixXd coordinates = w.to_coordinates * historyFactor(basis, c);
+  const EnergyFactor& factor = basis.energyFactor();
+  const Eigen::MatrixXd coordinates = factor.whiten(historyFactor(basis, c));
   const Eigen::MatrixXd U = leadingSingularVectors(coordinates, count, drop);
   EnergySvd svd;
-  svd.combination = w.to_modes * U;
+  svd.combination = factor.combination(U);
   svd.time_functions = U.transpose() * coordinates;
   svd.singular_values = svd.time_functions.rowwise().norm();
   return svd;

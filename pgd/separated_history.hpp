@@ -3,33 +3,28 @@
 //   u_k = U_F g_k + X c_k = Φ θ_k,   Φ = [U_F X] (n_free × s),  θ_k = [g_k; c_k],  s = q + p,
 // and its singular value decomposition in the energy product of A = K_ff + Bᵀ k B, without an
 // n_free × m array (docs/method.md §5, "Recompression"; the idea of Giacoma, Dureisseix, Gravouil,
-// AMSES 2016: the SVD of a separated expansion from its small factors). The Gram matrix of Φ is
-// known from interface traces alone:
-//   U_Fᵀ A U_F = U_Fᵀ F,   U_Fᵀ A X = U_Fᵀ Bᵀ Z = V_Fᵀ Z,   Xᵀ A X = Xᵀ Bᵀ Z = Tᵀ Z,
-// so with ΦᵀAΦ = V Λ Vᵀ the whitened factor Φ̂ = Φ V Λ^{-1/2} is A-orthonormal and u = Φ̂ Θ̂ with
-// Θ̂ = Λ^{1/2} Vᵀ Θ (s × m). The SVD Θ̂ = U Σ Wᵀ gives the A-orthonormal modes Y = Φ̂ U, their
-// energies σ_i², time functions Σ Wᵀ and traces B Y = [V_F T] V Λ^{-1/2} U: it is the energy SVD
-// of u itself, converged as soon as the expansion is, at O(s² m + s² n_C) cost.
+// AMSES 2016: the SVD of a separated expansion from its small factors). With the Cholesky factor
+// ΦᵀAΦ = RᵀR kept by the response basis (pgd/energy_factor.hpp), Φ̂ = Φ R⁻¹ is A-orthonormal and
+// u = Φ̂ Θ̂ with Θ̂ = R Θ (s' × m). The SVD Θ̂ = U Σ Wᵀ gives the A-orthonormal modes Y = Φ̂ U, their
+// energies σ_i², time functions Σ Wᵀ and traces B Y = [V_F T] R⁻¹ U: it is the energy SVD of u
+// itself, converged as soon as the expansion is. The leading singular vectors come from a
+// randomized range finder with subspace iterations (leadingSingularVectors), at O(s' m r) cost.
 #include <Eigen/Core>
 
 #include "pgd/response_basis.hpp"
 
 namespace stc::pgd {
 
-/// The A-orthonormal whitened factor Φ̂ = Φ · to_modes and the map of factor coordinates Θ to its
-/// coordinates Θ̂ = to_coordinates · Θ (in which the A-product is the Euclidean one).
-struct Whitening {
-  Eigen::MatrixXd to_modes;        ///< V Λ^{-1/2}, s × s' (s' ≤ s: directions of zero energy dropped)
-  Eigen::MatrixXd to_coordinates;  ///< Λ^{1/2} Vᵀ, s' × s
-};
-Whitening whitening(const ResponseBasis& basis);
-
 /// Θ = [G; c] of the history with interface coordinates `c` (p × m, p ≤ basis.size(); missing rows
 /// are zero), s × m.
 Eigen::MatrixXd historyFactor(const ResponseBasis& basis, const Eigen::MatrixXd& c);
 
 /// The leading `count` left singular vectors of `coordinates` (s' × m), fewer if its rank is
-/// smaller (singular values below `drop` times the largest are left out).
+/// smaller (singular values below `drop` times the largest are left out). Halko, Martinsson &
+/// Tropp, SIAM Review 53 (2011), alg. 4.4 (range finder with q = 2 subspace iterations, 10 extra
+/// samples, a fixed seed: deterministic) and alg. 5.1 (the SVD of the small projected matrix, by
+/// Eigen's JacobiSVD). When count + 10 reaches s' or m the range is the whole row or column space
+/// and the result is the exact SVD's.
 Eigen::MatrixXd leadingSingularVectors(const Eigen::MatrixXd& coordinates, int count, double drop = 1e-12);
 
 struct EnergySvd {

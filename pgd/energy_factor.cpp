@@ -1,0 +1,53 @@
+#include "pgd/energy_factor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace stc::pgd {
+namespace {
+
+// Grows a square storage to hold at least n × n (capacity doubling; entries kept).
+void reserve(Eigen::MatrixXd& storage, Eigen::Index n) {
+  if (n <= storage.cols()) return;
+  const Eigen::Index capacity = std::max<Eigen::Index>(n, 2 * storage.cols());
+  storage.conservativeResize(capacity, capacity);
+}
+
+}  // namespace
+
+void EnergyFactor::append(const Eigen::VectorXd& products) {
+  const int j = size_, r = rank();
+  if (products.size() != j + 1) throw std::invalid_argument("EnergyFactor::append: needs size() + 1 products");
+  reserve(R_, j + 1);
+  reserve(RK_, r + 1);
+  // Coefficients of φ_j on Φ̂: R_Kᵀ y = M(K, j) (a triangular solve).
+  Eigen::VectorXd y(r);
+  for (int i = 0; i < r; ++i) y[i] = products[kept_[static_cast<size_t>(i)]];
+  RK_.topLeftCorner(r, r).triangularView<Eigen::Upper>().transpose().solveInPlace(y);
+  const double energy = products[j], rest = energy - y.squaredNorm();
+  R_.col(j).head(r) = y;
+  ++size_;
+  if (!(energy > 0.0 && rest > drop_ * energy)) return;  // dependent: no row of its own
+  const double pivot = std::sqrt(rest);
+  R_.row(r).head(j).setZero();
+  R_(r, j) = pivot;
+  RK_.col(r).head(r) = y;
+  RK_.row(r).head(r).setZero();
+  RK_(r, r) = pivot;
+  kept_.push_back(j);
+}
+
+Eigen::MatrixXd EnergyFactor::whiten(const Eigen::MatrixXd& theta) const {
+  return coordinatesOfColumns().leftCols(theta.rows()) * theta;
+}
+
+Eigen::MatrixXd EnergyFactor::combination(const Eigen::MatrixXd& U) const {
+  const int r = rank();
+  const Eigen::MatrixXd CK = RK_.topLeftCorner(r, r).triangularView<Eigen::Upper>().solve(U);
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(size_, U.cols());
+  for (int i = 0; i < r; ++i) C.row(kept_[static_cast<size_t>(i)]) = CK.row(i);
+  return C;
+}
+
+}  // namespace stc::pgd
