@@ -1,37 +1,48 @@
 #include "fas/coarse_step.hpp"
 
+#include <optional>
+
 #include "latin/local_stage.hpp"
 #include "src/core/threads.hpp"
+#include "src/linalg/anderson.hpp"
 
 namespace stc::fas {
 
 void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const FasOptions& options,
                 const InterfaceHistory& s, InterfaceHistory& hat) {
-  const Eigen::ArrayXd k = contact.search_direction.array();
+  const Eigen::VectorXd& k = contact.search_direction;
   const Eigen::MatrixXd& BY = space.interface();
   const Eigen::Index rows = s.v.rows(), cols = s.v.cols();
-  const Eigen::MatrixXd W_s = s.lambda + k.matrix().asDiagonal() * s.v;  // the fine stage's w
-  if (options.start == CoarseStart::ZeroCorrection) hat.v = s.v;       // start (a): ŝ = (Bũ, λ̃)
-  Eigen::MatrixXd z(rows, cols), xi;
+  if (options.start == CoarseStart::ZeroCorrection) hat.v = s.v;  // start (a): ŝ = (Bũ, λ̃)
+  // w = W(ŝ) = λ̂ + k v̂, the state of the restricted LATIN; W_s = λ + k Bũ, the fine stage's.
+  Eigen::MatrixXd w = hat.lambda, image(rows, cols), z(rows, cols), xi;
+  w.noalias() += k.asDiagonal() * hat.v;
+  const Eigen::MatrixXd W_s = s.lambda + k.asDiagonal() * s.v;
   InterfaceHistory trial{Eigen::MatrixXd(rows, cols), Eigen::MatrixXd(rows, cols)};
+  std::optional<AndersonMixing> mixing;
+  if (options.coarse_anderson > 0) mixing.emplace(options.coarse_anderson, k.cwiseSqrt().cwiseInverse());
   // One thread: each coarse iteration is dense products of r × 2n_C by 2n_C × m on this thread
   // around a short local stage (~50 µs on the seed). On 2 threads every one of those local stages
   // had to wake the pool's worker, asleep during the products, and hand over: that cost more than
   // the split saves (bench_stages CoarseStep, seed: 8.3 ms on 1 thread, 13.2 ms on 2; a worker
   // kept awake longer, 8.9 ms; serial here: 7.9 ms; docs/threads.md).
   const ThreadCountScope serial(1);
-  for (int it = 0; it < options.coarse_iterations; ++it) {
-    for (Eigen::Index c = 0; c < cols; ++c)
-      for (Eigen::Index r = 0; r < rows; ++r) z(r, c) = hat.lambda(r, c) + k[r] * hat.v(r, c) - W_s(r, c);
-    xi.noalias() = BY.transpose() * z;   // seed eq. (8) with R A P = I
-    trial.v.noalias() = BY * xi;         // B Δu, seed eq. (7)
+  for (int it = 0;; ++it) {
+    z = w - W_s;
+    xi.noalias() = BY.transpose() * z;  // seed eq. (8) with R A P = I
+    trial.v.noalias() = BY * xi;        // B Δu, seed eq. (7)
     for (Eigen::Index c = 0; c < cols; ++c)
       for (Eigen::Index r = 0; r < rows; ++r) {
         const double v = s.v(r, c) + trial.v(r, c);
         trial.v(r, c) = v;
-        trial.lambda(r, c) = z(r, c) + W_s(r, c) - k[r] * v;  // λ = W(ŝ) − k v, seed eq. (5)
+        trial.lambda(r, c) = w(r, c) - k[r] * v;  // λ = W(ŝ) − k v, seed eq. (5)
       }
     latin::localStage(contact, trial, hat);
+    if (it + 1 >= options.coarse_iterations) break;
+    image = hat.lambda;
+    image.noalias() += k.asDiagonal() * hat.v;
+    if (mixing) mixing->next(w, image);
+    else w.swap(image);
   }
 }
 

@@ -12,16 +12,11 @@
 namespace stc::fas {
 namespace {
 
-// The error estimate of FAS (src/solver/error_estimate.hpp): one sequence per relaxation of the
-// cycle, extrapolated at order 1; the largest ratio of extrapolated error to newest difference over
-// the last 3 cycles, times 2; the error assumed to shrink by at most 100 times per cycle. A cycle
-// changes its own map (the coarse space follows the iterate), so that ratio fluctuates from cycle
-// to cycle, which the window covers; a cycle can remove 99% of the error, hence the small floor.
-// docs/method.md §2 gives the measured ratios of estimate to true error and where they miss.
-constexpr int kFasEstimateOrder = 1;
-constexpr double kFasEstimateSafety = 2.0;
-constexpr int kFasEstimateWindow = 3;
-constexpr double kFasMinRate = 0.01;
+// The error estimate of FAS: the indicator calibrated on earlier iterates
+// (src/solver/calibrated_estimate.hpp), s = 2.5. A cycle changes its own map (the coarse space
+// follows the iterate), which breaks the extrapolation LATIN stops on; docs/method.md §2 gives the
+// measured ratios of estimate to true error.
+constexpr double kFasCalibrationSafety = 2.5;
 
 // The fine level: relaxations from the current local-stage iterate `hat`.
 class FineLevel {
@@ -56,7 +51,7 @@ class FineLevel {
 };
 
 // FasOptions::safeguard: the first relaxation after a coarse step judges it. A correction that
-// raised the indicator is undone (the pre-coarse local stage comes back; the relaxation spent on
+// raised the indicator more than safeguard_growth times is undone (the pre-coarse local stage comes back; the relaxation spent on
 // the test stays counted) and the coarse step is skipped for a while, doubling while it fails.
 // FasOptions::adapt_coarse_iterations: the verdicts also set i_C, halved on a rejection, one more
 // on an acceptance, within [1, coarse_iterations].
@@ -67,7 +62,8 @@ class CoarseGuard {
         adapt_(options.safeguard && options.adapt_coarse_iterations),
         max_skip_(options.max_skip),
         max_iterations_(options.coarse_iterations),
-        iterations_(options.coarse_iterations) {}
+        iterations_(options.coarse_iterations),
+        growth_(options.safeguard_growth) {}
 
   /// i_C of the next coarse step.
   int coarseIterations() const { return iterations_; }
@@ -86,7 +82,7 @@ class CoarseGuard {
   void judge(FineLevel& fine) {
     if (!pending_) return;
     pending_ = false;
-    if (fine.eta <= eta_before_) {
+    if (fine.eta <= growth_ * eta_before_) {
       backoff_ = 1;
       if (adapt_) iterations_ = std::min(iterations_ + 1, max_iterations_);
       return;
@@ -107,6 +103,7 @@ class CoarseGuard {
   InterfaceHistory saved_;
   double eta_before_ = 0.0;
   int skip_ = 0, backoff_ = 1;
+  double growth_;
 };
 
 }  // namespace
@@ -124,30 +121,24 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
   options.validate();
   requireFits(start, problem);
   const EquilibriumEnergy energy(problem, global.factor());
-  IterationMonitor monitor(solver_name,
-                           {options.tolerance, options.max_relaxations, options.stagnation_window,
-                            options.pre_relaxations + options.post_relaxations, kFasEstimateOrder,
-                            kFasEstimateSafety, kFasEstimateWindow, kFasMinRate},
-                           &energy, reference, callback);
+  StoppingRule rule;
+  rule.tolerance = options.tolerance;
+  rule.max_iterations = options.max_relaxations;
+  rule.stagnation_window = options.stagnation_window;
+  rule.estimate_kind = EstimateKind::CalibratedIndicator;
+  rule.calibration_safety = kFasCalibrationSafety;
+  IterationMonitor monitor(solver_name, rule, &energy, reference, callback);
   FineLevel fine(problem, global, start, monitor);
   CoarseGuard guard(options);
   int rank = 0;
   const auto relax = [&] {
     const bool stop = fine.relax(rank);
-    if (!stop) {
-      const int rejected = guard.rejected;
-      guard.judge(fine);
-      // The error estimate measures the rate of one map, cycle after cycle: a rejected correction
-      // is a jump, not an iteration of it (src/solver/error_estimate.hpp).
-      if (guard.rejected > rejected) monitor.restartEstimate();
-    }
+    if (!stop) guard.judge(fine);
     return stop;
   };
-  bool coarse_before = true;
   for (bool stop = false; !stop;) {
     for (int j = 0; j < options.pre_relaxations && !stop; ++j) stop = relax();
     if (stop) break;
-    bool coarse = false;
     if (!guard.skipThisCycle()) {
       const CoarseSpace space = provider.coarseSpace(fine.s);
       rank = space.rank();
@@ -156,12 +147,8 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
         FasOptions step = options;
         step.coarse_iterations = guard.coarseIterations();
         coarseStep(problem.contact, space, step, fine.s, fine.hat);
-        coarse = true;
       }
     }
-    // A cycle without a coarse step is another map than one with it.
-    if (coarse != coarse_before) monitor.restartEstimate();
-    coarse_before = coarse;
     for (int j = 0; j < options.post_relaxations && !stop; ++j) stop = relax();
   }
   // The equilibrated iterate is the last global stage; its local stage is in Γ.

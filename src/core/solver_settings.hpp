@@ -33,10 +33,17 @@ inline constexpr int stagnation_window = 500;  ///< iterations without a 1% decr
 inline constexpr int block_size = 32;
 
 // FAS (seed paper §4.2: ν1 = ν2 = 1, i_C = 15, N_res = 15; ν = 1 beat ν = 2 for both bases on the
-// seed scene: docs/fas_aposteriori.md, docs/compare_bases.md).
+// seed scene: docs/fas_aposteriori.md, docs/compare_bases.md). i_C = 8 with Anderson depth 2 instead
+// of the seed's 15 plain coarse iterations: the same or fewer relaxations on the seed scene and every
+// hard case, at about half the coarse work (docs/method.md §4, docs/floor.md).
 inline constexpr int pre_relaxations = 1;      ///< ν1
 inline constexpr int post_relaxations = 1;     ///< ν2
-inline constexpr int coarse_iterations = 15;   ///< i_C
+inline constexpr int coarse_iterations = 8;    ///< i_C
+/// Anderson depth of the coarse step's restricted LATIN (0: plain iterations; fas/coarse_step.hpp).
+inline constexpr int coarse_anderson = 2;
+/// θ of the FAS safeguard: a correction is rejected when the next indicator exceeds θ times the one
+/// before the coarse step (fas/fas_options.hpp).
+inline constexpr double safeguard_growth = 1.5;
 inline constexpr int residual_vectors = 15;    ///< N_res of fas-aposteriori (seed §4.3)
 inline constexpr CoarseStart coarse_start = CoarseStart::ZeroCorrection;
 inline constexpr int svd_modes = 10;           ///< fas-aposteriori: leading energy-SVD modes

@@ -87,6 +87,7 @@ struct FasSpec {
   int pre_relaxations = defaults::pre_relaxations;          ///< ν1 >= 1
   int post_relaxations = defaults::post_relaxations;        ///< ν2 >= 0
   int coarse_iterations = defaults::coarse_iterations;      ///< i_C >= 1
+  int coarse_anderson = defaults::coarse_anderson;          ///< Anderson depth of the coarse step, >= 0 (0: off)
   int residual_vectors = defaults::residual_vectors;        ///< N_res >= 0
   int svd_modes = defaults::svd_modes;                      ///< fas-aposteriori: leading energy-SVD modes (>= 0)
   /// fas-apriori: leading energy modes of the a priori expansion in the coarse space (>= 0; 0:
@@ -97,6 +98,7 @@ struct FasSpec {
   double pgd_gap_share = defaults::pgd_gap_share;  ///< latin-pgd, fas-apriori: γ in (0, 1)
   CoarseStart coarse_start = defaults::coarse_start;        ///< "zero" (docs/method.md §4 option a) or "mismatch" (b)
   bool adapt_coarse_iterations = true;  ///< i_C halved on a rejected correction, +1 on an accepted one
+  double safeguard_growth = defaults::safeguard_growth;  ///< θ >= 1 of the FAS safeguard
 };
 
 /// [solver]: choice and common options (each solver validates its own further options).

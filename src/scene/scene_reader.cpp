@@ -305,6 +305,7 @@ FasSpec readFas(const TableView& solver) {
   readCount(solver, "pre_relaxations", 1, fas.pre_relaxations);
   readCount(solver, "post_relaxations", 0, fas.post_relaxations);
   readCount(solver, "coarse_iterations", 1, fas.coarse_iterations);
+  readCount(solver, "coarse_anderson", 0, fas.coarse_anderson);
   readCount(solver, "residual_vectors", 0, fas.residual_vectors);
   readCount(solver, "svd_modes", 0, fas.svd_modes);
   readCount(solver, "pgd_max_modes", 0, fas.pgd_max_modes);
@@ -312,6 +313,9 @@ FasSpec readFas(const TableView& solver) {
   fas.pgd_gap_share = solver.optionalNumber("pgd_gap_share").value_or(fas.pgd_gap_share);
   requireRange(solver, "pgd_gap_share", fas.pgd_gap_share, fas.pgd_gap_share > 0.0 && fas.pgd_gap_share < 1.0,
                "must be in (0, 1)");
+  fas.safeguard_growth = solver.optionalNumber("safeguard_growth").value_or(fas.safeguard_growth);
+  requireRange(solver, "safeguard_growth", fas.safeguard_growth,
+               fas.safeguard_growth >= 1.0 && std::isfinite(fas.safeguard_growth), "must be >= 1");
   fas.adapt_coarse_iterations =
       solver.optionalBool("adapt_coarse_iterations").value_or(fas.adapt_coarse_iterations);
   if (solver.has("coarse_start"))
@@ -325,7 +329,7 @@ SolverSpec readSolver(const TableView& root, std::vector<std::string>& warnings)
   SolverSpec spec;
   const auto solver = root.optionalTable(
       "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
-                 "post_relaxations", "coarse_iterations", "adapt_coarse_iterations", "residual_vectors",
+                 "post_relaxations", "coarse_iterations", "coarse_anderson", "adapt_coarse_iterations", "safeguard_growth", "residual_vectors",
                  "svd_modes", "coarse_start", "pgd_max_modes", "pgd_increment_modes", "pgd_gap_share",
                  "pgd_modes_per_cycle", "pgd_seed_share"});
   if (!solver) return spec;

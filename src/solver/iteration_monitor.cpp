@@ -11,6 +11,7 @@ IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const 
       energy_(energy),
       estimator_(rule.estimate_period, rule.estimate_order, rule.estimate_safety, rule.estimate_window,
                  rule.estimate_min_rate),
+      calibrated_(rule.calibration_safety),
       reference_(reference),
       callback_(std::move(callback)),
       start_(std::chrono::steady_clock::now()) {
@@ -39,7 +40,7 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
   r.iteration = static_cast<int>(summary_.history.size()) + 1;
   r.relaxations = relaxations;
   r.indicator = indicator;
-  r.error_estimate = energy_ ? estimator_.record(s, (*energy_)(s)) : indicator;
+  r.error_estimate = energy_ ? estimate(s, indicator) : indicator;
   r.error = measureError(lambda);
   r.rank = rank;
   r.sparse_solves = static_cast<int>(sparse_solves);
@@ -69,6 +70,12 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
     return stop(Termination::MaxIterations, msg.str());
   }
   return false;
+}
+
+double IterationMonitor::estimate(const InterfaceHistory& s, double indicator) {
+  const double energy = (*energy_)(s);
+  return rule_.estimate_kind == EstimateKind::CalibratedIndicator ? calibrated_.record(s, indicator, energy)
+                                                                  : estimator_.record(s, energy);
 }
 
 bool IterationMonitor::stop(Termination termination, std::string message) {

@@ -9,12 +9,19 @@
 #include <string>
 
 #include "src/core/solver_settings.hpp"
+#include "src/solver/calibrated_estimate.hpp"
 #include "src/solver/equilibrium_energy.hpp"
 #include "src/solver/error_estimate.hpp"
 #include "src/solver/error_reference.hpp"
 #include "src/solver/solve_summary.hpp"
 
 namespace stc {
+
+/// Which estimate of the true error a solver stops on (docs/method.md §2).
+enum class EstimateKind {
+  Extrapolation,        ///< ErrorEstimator: MPE of the iterates one period apart (LATIN)
+  CalibratedIndicator,  ///< CalibratedIndicatorEstimator: the indicator scaled by earlier iterates (FAS)
+};
 
 struct StoppingRule {
   double tolerance = defaults::tolerance;  ///< on the error estimate (the true error it estimates, docs/method.md §2)
@@ -25,6 +32,8 @@ struct StoppingRule {
   double estimate_safety = 2.0; ///< its safety factor (ErrorEstimator)
   int estimate_window = 1;      ///< periods of its largest ratio (ErrorEstimator)
   double estimate_min_rate = 0.1;  ///< the smallest contraction per period it assumes
+  EstimateKind estimate_kind = EstimateKind::Extrapolation;
+  double calibration_safety = 2.5;  ///< s of CalibratedIndicatorEstimator
 
 };
 
@@ -38,8 +47,9 @@ class IterationMonitor {
   /// Records one iteration whose equilibrated iterate is `s`; returns true when the solve must stop
   /// (the summary says why).
   bool record(int relaxations, double indicator, const InterfaceHistory& s, int rank, long sparse_solves);
-  /// Starts the error estimate's history afresh: the next iterates follow another map (e.g. after a
-  /// rejected FAS correction), so the rates measured so far do not describe them.
+  /// Starts the extrapolation's history afresh: the next iterates follow another map (e.g. after a
+  /// rejected FAS correction), so the rates measured so far do not describe them (the calibrated
+  /// estimate keeps its checkpoints: it assumes no map).
   void restartEstimate() { estimator_.reset(); }
 
   /// Final summary (termination, message, totals); call once at the end.
@@ -49,6 +59,7 @@ class IterationMonitor {
 
  private:
   bool stop(Termination termination, std::string message);
+  double estimate(const InterfaceHistory& s, double indicator);  ///< by rule_.estimate_kind
   std::optional<double> measureError(const Eigen::MatrixXd& lambda);  // and adds its time to measure_s_
 
 
@@ -56,6 +67,7 @@ class IterationMonitor {
   StoppingRule rule_;
   const EquilibriumEnergy* energy_;
   ErrorEstimator estimator_;
+  CalibratedIndicatorEstimator calibrated_;
   const ErrorReference* reference_;
   IterationCallback callback_;
   std::chrono::steady_clock::time_point start_;

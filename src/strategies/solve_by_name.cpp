@@ -20,8 +20,10 @@ fas::FasOptions fasOptions(const SolverSpec& spec) {
   o.pre_relaxations = spec.fas.pre_relaxations;
   o.post_relaxations = spec.fas.post_relaxations;
   o.coarse_iterations = spec.fas.coarse_iterations;
+  o.coarse_anderson = spec.fas.coarse_anderson;
   o.start = spec.fas.coarse_start;
   o.adapt_coarse_iterations = spec.fas.adapt_coarse_iterations;
+  o.safeguard_growth = spec.fas.safeguard_growth;
   return o;
 }
 

@@ -1,0 +1,54 @@
+#include "src/linalg/anderson.hpp"
+
+#include <Eigen/Cholesky>
+#include <stdexcept>
+#include <utility>
+
+namespace stc {
+
+AndersonMixing::AndersonMixing(int depth, Eigen::VectorXd row_weights)
+    : depth_(depth), w_(std::move(row_weights)), df_(depth > 0 ? depth : 0), dg_(depth > 0 ? depth : 0) {
+  if (depth < 1) throw std::invalid_argument("AndersonMixing: depth must be >= 1");
+  gram_ = Eigen::MatrixXd::Zero(depth, depth);
+}
+
+void AndersonMixing::next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image) {
+  const Eigen::Index rows = x.rows(), cols = x.cols();
+  if (w_.size() != rows || image.rows() != rows || image.cols() != cols)
+    throw std::invalid_argument("AndersonMixing: iterate, image and weights differ in size");
+  if (last_f_.size() == 0) {  // first call: a plain step
+    last_f_ = w_.asDiagonal() * (image - x);
+    last_image_ = image;
+    x = image;
+    return;
+  }
+  newest_ = (newest_ + 1) % depth_;
+  count_ = std::min(count_ + 1, depth_);
+  Eigen::MatrixXd& df = df_[static_cast<size_t>(newest_)];
+  Eigen::MatrixXd& dg = dg_[static_cast<size_t>(newest_)];
+  df.resize(rows, cols);  // no reallocation once the ring is full
+  dg.resize(rows, cols);
+  // One pass: f_j (weighted) replaces f_{j−1}, F(x_j) replaces F(x_{j−1}), their differences stored.
+  for (Eigen::Index c = 0; c < cols; ++c)
+    for (Eigen::Index r = 0; r < rows; ++r) {
+      const double f = w_[r] * (image(r, c) - x(r, c)), g = image(r, c);
+      df(r, c) = f - last_f_(r, c);
+      dg(r, c) = g - last_image_(r, c);
+      last_f_(r, c) = f;
+      last_image_(r, c) = g;
+    }
+  for (int a = 0; a < count_; ++a) {
+    gram_(newest_, a) = df.cwiseProduct(df_[static_cast<size_t>(a)]).sum();
+    gram_(a, newest_) = gram_(newest_, a);
+  }
+  // Normal equations over the slots held: (ΔFᵀΔF + δ I) γ = ΔFᵀ f_j.
+  const Eigen::MatrixXd G = gram_.topLeftCorner(count_, count_);
+  Eigen::VectorXd rhs(count_);
+  for (int a = 0; a < count_; ++a) rhs[a] = df_[static_cast<size_t>(a)].cwiseProduct(last_f_).sum();
+  const double shift = 1e-12 * G.diagonal().maxCoeff();
+  const Eigen::VectorXd gamma = (G + shift * Eigen::MatrixXd::Identity(count_, count_)).ldlt().solve(rhs);
+  x = image;
+  for (int a = 0; a < count_; ++a) x.noalias() -= gamma[a] * dg_[static_cast<size_t>(a)];
+}
+
+}  // namespace stc

@@ -1,0 +1,34 @@
+#include "src/solver/calibrated_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "src/solver/error_estimate.hpp"
+
+namespace stc {
+
+CalibratedIndicatorEstimator::CalibratedIndicatorEstimator(double safety, int count, double spacing)
+    : safety_(safety), spacing_(spacing), count_(count) {
+  if (!(safety >= 1.0) || count < 1 || !(spacing > 1.0))
+    throw std::invalid_argument("CalibratedIndicatorEstimator: needs safety >= 1, count >= 1, spacing > 1");
+}
+
+double CalibratedIndicatorEstimator::record(const InterfaceHistory& s, double indicator, double energy) {
+  double bound = -1.0;
+  for (const Checkpoint& c : checkpoints_) {
+    if (!(c.indicator >= 2.0 * safety_ * indicator)) continue;
+    const InterfaceHistory d{c.s.v - s.v, c.s.lambda - s.lambda};
+    const double distance = std::sqrt(std::max(0.0, energyProduct(d, d)));
+    bound = std::max(bound, safety_ * indicator * distance / (c.indicator - safety_ * indicator));
+  }
+  if (indicator < 1.0 && (checkpoints_.empty() || indicator * spacing_ <= checkpoints_.back().indicator)) {
+    checkpoints_.push_back({s, indicator});
+    if (static_cast<int>(checkpoints_.size()) > count_) checkpoints_.pop_front();
+  }
+  if (bound < 0.0 || !(energy > 0.0)) return std::numeric_limits<double>::infinity();
+  return bound / std::sqrt(energy);
+}
+
+}  // namespace stc

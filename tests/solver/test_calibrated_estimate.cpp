@@ -1,0 +1,79 @@
+// The calibrated indicator estimate of FAS (src/solver/calibrated_estimate.hpp) on synthetic
+// sequences s_n = s* + ε_n d whose true error ε_n ‖d‖_K is known: it bounds the error from above
+// while the ratio of error to indicator grows by at most the safety factor s, and by at most
+// 2 s times the error when that ratio is constant.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "src/solver/calibrated_estimate.hpp"
+#include "src/solver/error_estimate.hpp"
+
+namespace {
+
+// A limit s* and a direction d with ‖d‖²_K = Σ δv·δλ = 3 (λ = 3 v on one row, one instant).
+struct Sequence {
+  stc::InterfaceHistory limit{Eigen::MatrixXd::Constant(2, 3, 0.5), Eigen::MatrixXd::Constant(2, 3, -1.0)};
+  stc::InterfaceHistory direction{Eigen::MatrixXd::Zero(2, 3), Eigen::MatrixXd::Zero(2, 3)};
+  Sequence() {
+    direction.v(0, 0) = 1.0;
+    direction.lambda(0, 0) = 3.0;
+  }
+  stc::InterfaceHistory at(double error) const {
+    return {limit.v + error * direction.v, limit.lambda + error * direction.lambda};
+  }
+  double norm() const { return std::sqrt(stc::energyProduct(direction, direction)); }
+};
+
+}  // namespace
+
+TEST(CalibratedIndicatorEstimator, BoundsTheErrorWithinTwiceTheSafetyWhenTheRatioIsConstant) {
+  const Sequence q;
+  const double safety = 2.5, ratio = 7.0;  // error = ratio · indicator, throughout
+  stc::CalibratedIndicatorEstimator estimator(safety);
+  int finite = 0;
+  for (int n = 1; n <= 30; ++n) {
+    const double error = std::pow(0.6, n), indicator = error / ratio;
+    const double estimate = estimator.record(q.at(error), indicator, 1.0);
+    if (!std::isfinite(estimate)) continue;
+    ++finite;
+    EXPECT_GE(estimate, error * q.norm() * (1 - 1e-12)) << n;
+    EXPECT_LE(estimate, 2 * safety * error * q.norm()) << n;
+  }
+  EXPECT_GE(finite, 20);
+}
+
+TEST(CalibratedIndicatorEstimator, StillBoundsTheErrorWhenTheRatioGrowsWithinTheSafety) {
+  // The ratio error/indicator doubles along the run (s = 2.5 covers it): the bound holds.
+  const Sequence q;
+  stc::CalibratedIndicatorEstimator estimator(2.5);
+  int finite = 0;
+  for (int n = 1; n <= 30; ++n) {
+    const double error = std::pow(0.5, n), ratio = 4.0 * (1.0 + n / 30.0);
+    const double estimate = estimator.record(q.at(error), error / ratio, 1.0);
+    if (!std::isfinite(estimate)) continue;
+    ++finite;
+    EXPECT_GE(estimate, error * q.norm()) << n;
+  }
+  EXPECT_GE(finite, 20);
+}
+
+TEST(CalibratedIndicatorEstimator, IsInfiniteUntilAnEarlierIndicatorIsTwiceTheSafetyLarger) {
+  const Sequence q;
+  stc::CalibratedIndicatorEstimator estimator(2.0);  // needs a checkpoint with η_j ≥ 4 η_n
+  EXPECT_TRUE(std::isinf(estimator.record(q.at(1.0), 2.0, 1.0)));   // η ≥ 1: never a checkpoint
+  EXPECT_TRUE(std::isinf(estimator.record(q.at(0.5), 0.5, 1.0)));   // the first checkpoint
+  EXPECT_TRUE(std::isinf(estimator.record(q.at(0.2), 0.2, 1.0)));   // 0.5 < 4 · 0.2
+  EXPECT_TRUE(std::isfinite(estimator.record(q.at(0.1), 0.1, 1.0)));  // 0.5 ≥ 4 · 0.1
+  // The relative error: the bound over √E.
+  stc::CalibratedIndicatorEstimator other(2.0);
+  other.record(q.at(0.5), 0.5, 1.0);
+  const double absolute = other.record(q.at(0.1), 0.1, 1.0);
+  stc::CalibratedIndicatorEstimator scaled(2.0);
+  scaled.record(q.at(0.5), 0.5, 4.0);
+  EXPECT_DOUBLE_EQ(scaled.record(q.at(0.1), 0.1, 4.0), absolute / 2.0);
+  EXPECT_THROW(stc::CalibratedIndicatorEstimator(0.5), std::invalid_argument);
+}
