@@ -43,9 +43,11 @@ TEST(Tolerance, BoundsTheTrueErrorOfEveryIterativeStrategy) {
 }
 
 // The goal of docs/method.md §2: at the default tolerance the estimate is within 10 times the true
-// error. LATIN's order-2 extrapolation meets it (ratios 1.5 to 2 here and on every hard case).
-TEST(Tolerance, LatinEstimateIsWithinTenTimesTheTrueError) {
-  for (const std::string name : {"latin", "latin-pgd"}) {
+// error. LATIN's order-2 extrapolation meets it (ratios 1.5 to 2 here and on every hard case), and
+// so does the calibrated indicator of FAS (measured here: 4.0 for fas-aposteriori, 3.2 for
+// fas-apriori; 2 to 8 on the hard cases, docs/hard_cases.md).
+TEST(Tolerance, EstimateIsWithinTenTimesTheTrueErrorAtTheDefaultTolerance) {
+  for (const std::string name : {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori"}) {
     const auto r = solve(name, 1e-6);
     ASSERT_TRUE(r.summary.error.has_value()) << name;
     EXPECT_LE(r.summary.error_estimate, 10 * *r.summary.error) << name;
