@@ -1,6 +1,9 @@
 #include "pgd/response_basis.hpp"
 
+#include <algorithm>
+
 #include "pgd/separated_loads.hpp"
+#include "src/core/threads.hpp"
 
 namespace stc::pgd {
 
@@ -60,6 +63,18 @@ void ResponseBasis::extendEnergyFactor(Eigen::Index added) {
   }
 }
 
+Eigen::MatrixXd ResponseBasis::solveColumns(const Eigen::MatrixXd& rhs) {
+  const int columns = static_cast<int>(rhs.cols());
+  const int threads = std::max(1, std::min(threadCount(), columns));
+  while (static_cast<int>(workspaces_.size()) < threads) workspaces_.emplace_back();
+  Eigen::MatrixXd X(rhs.rows(), columns);
+  parallelFor(threads, threads, [&](int part, int thread) {
+    const int begin = columns * part / threads, end = columns * (part + 1) / threads;
+    X.middleCols(begin, end - begin) = factor_.solve(rhs.middleCols(begin, end - begin), workspaces_[thread]);
+  });
+  return X;
+}
+
 int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {
   // Work with scaled directions ẑ = k^{-1/2} z, orthonormal in the Euclidean product.
   const Eigen::MatrixXd scaled = orthonormalised(candidates, drop);
@@ -67,7 +82,7 @@ int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {
   if (added == 0) return 0;
   const Eigen::MatrixXd kept = sqrt_k_.asDiagonal() * scaled;
   const auto& B = problem_.contact.B;
-  const Eigen::MatrixXd X = factor_.solve(Eigen::MatrixXd(B.transpose() * kept));
+  const Eigen::MatrixXd X = solveColumns(B.transpose() * kept);
   sparse_solves_ += added;
   Z_.append(kept);
   Zs_.append(scaled);

@@ -11,6 +11,7 @@
 // Nothing here is n_free × m: memory O((q + p) n_free + (q + p + m) n_C). Columns are appended to
 // storage with spare capacity (pgd/column_store.hpp): the accessors are views.
 #include <Eigen/Core>
+#include <vector>
 
 #include "pgd/column_store.hpp"
 #include "pgd/energy_factor.hpp"
@@ -53,6 +54,9 @@ class ResponseBasis {
   /// k^{-1/2}-scaled candidates made orthonormal to Zs and each other; dependent ones dropped.
   Eigen::MatrixXd orthonormalised(const Eigen::MatrixXd& candidates, double drop) const;
   void extendEnergyFactor(Eigen::Index added);  ///< the energy factor's columns for the new directions
+  /// A⁻¹ rhs, its columns split between threadCount() threads (each column is solved alike whatever
+  /// the split: the result does not depend on the thread count).
+  Eigen::MatrixXd solveColumns(const Eigen::MatrixXd& rhs);
 
   const Problem& problem_;
   const SpdFactor& factor_;
@@ -60,6 +64,7 @@ class ResponseBasis {
   ColumnStore Z_, Zs_, X_, T_;
   Eigen::MatrixXd UF_, VF_, G_, v0_;
   EnergyFactor energy_;
+  std::vector<SpdFactor::Workspace> workspaces_;
   long sparse_solves_ = 0;
 };
 
