@@ -64,13 +64,16 @@ void ResponseBasis::extendEnergyFactor(Eigen::Index added) {
 }
 
 Eigen::MatrixXd ResponseBasis::solveColumns(const Eigen::MatrixXd& rhs) {
-  const int columns = static_cast<int>(rhs.cols());
-  const int threads = std::max(1, std::min(threadCount(), columns));
+  // Parts of a fixed width, whatever the thread count: CHOLMOD's solve runs kernels of 1 to 4
+  // columns whose rounding differs, so a column must land in the same group on any thread count.
+  constexpr int kPart = 4;
+  const int columns = static_cast<int>(rhs.cols()), parts = (columns + kPart - 1) / kPart;
+  const int threads = std::max(1, std::min(threadCount(), parts));
   while (static_cast<int>(workspaces_.size()) < threads) workspaces_.emplace_back();
   Eigen::MatrixXd X(rhs.rows(), columns);
-  parallelFor(threads, threads, [&](int part, int thread) {
-    const int begin = columns * part / threads, end = columns * (part + 1) / threads;
-    X.middleCols(begin, end - begin) = factor_.solve(rhs.middleCols(begin, end - begin), workspaces_[thread]);
+  parallelFor(parts, threads, [&](int part, int thread) {
+    const int begin = part * kPart, width = std::min(kPart, columns - begin);
+    X.middleCols(begin, width) = factor_.solve(rhs.middleCols(begin, width), workspaces_[thread]);
   });
   return X;
 }

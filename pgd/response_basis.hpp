@@ -54,8 +54,8 @@ class ResponseBasis {
   /// k^{-1/2}-scaled candidates made orthonormal to Zs and each other; dependent ones dropped.
   Eigen::MatrixXd orthonormalised(const Eigen::MatrixXd& candidates, double drop) const;
   void extendEnergyFactor(Eigen::Index added);  ///< the energy factor's columns for the new directions
-  /// A⁻¹ rhs, its columns split between threadCount() threads (each column is solved alike whatever
-  /// the split: the result does not depend on the thread count).
+  /// A⁻¹ rhs, its columns solved in parts of 4 spread over threadCount() threads (the parts do not
+  /// depend on the thread count, so neither does the result).
   Eigen::MatrixXd solveColumns(const Eigen::MatrixXd& rhs);
 
   const Problem& problem_;
