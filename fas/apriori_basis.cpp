@@ -26,6 +26,13 @@ CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& /*s*/) {
   const Eigen::MatrixXd& c = stage_.coordinates();
   // In whitened coordinates the A-product is the Euclidean one: modes are unit vectors there.
   const Eigen::Index q = basis.loadHistories().rows();
+  if (factor.rank() <= options_.modes + options_.increment_modes) {
+    // The whole expansion fits: its span is the coarse space (early cycles, and expansions of low
+    // rank such as a problem without contact, whose few energy modes alone starve the coarse step).
+    previous_ = c;
+    const Eigen::MatrixXd all = Eigen::MatrixXd::Identity(factor.rank(), factor.rank());
+    return CoarseSpace::fromTraces(pgd::modeTraces(basis, factor.combination(all)));
+  }
   Eigen::MatrixXd theta = pgd::historyFactor(basis, c);
   Eigen::MatrixXd U = pgd::leadingSingularVectors(factor.whiten(theta), options_.modes);
   if (options_.increment_modes > 0 && previous_.size() > 0) {
