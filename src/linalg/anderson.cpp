@@ -28,15 +28,24 @@ void AndersonMixing::next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image) {
   Eigen::MatrixXd& dg = dg_[static_cast<size_t>(newest_)];
   df.resize(rows, cols);  // no reallocation once the ring is full
   dg.resize(rows, cols);
-  // One pass: f_j (weighted) replaces f_{j−1}, F(x_j) replaces F(x_{j−1}), their differences stored.
-  for (Eigen::Index c = 0; c < cols; ++c)
+  // One pass: f_j (weighted) replaces f_{j−1}, F(x_j) replaces F(x_{j−1}), their differences stored
+  // (distinct arrays, column-major: restrict pointers let the compiler vectorise the rows).
+  const double* __restrict w = w_.data();
+  for (Eigen::Index c = 0; c < cols; ++c) {
+    const double* __restrict g = image.col(c).data();
+    const double* __restrict xc = x.col(c).data();
+    double* __restrict dfc = df.col(c).data();
+    double* __restrict dgc = dg.col(c).data();
+    double* __restrict fc = last_f_.col(c).data();
+    double* __restrict gc = last_image_.col(c).data();
     for (Eigen::Index r = 0; r < rows; ++r) {
-      const double f = w_[r] * (image(r, c) - x(r, c)), g = image(r, c);
-      df(r, c) = f - last_f_(r, c);
-      dg(r, c) = g - last_image_(r, c);
-      last_f_(r, c) = f;
-      last_image_(r, c) = g;
+      const double f = w[r] * (g[r] - xc[r]);
+      dfc[r] = f - fc[r];
+      dgc[r] = g[r] - gc[r];
+      fc[r] = f;
+      gc[r] = g[r];
     }
+  }
   for (int a = 0; a < count_; ++a) {
     gram_(newest_, a) = df.cwiseProduct(df_[static_cast<size_t>(a)]).sum();
     gram_(a, newest_) = gram_(newest_, a);

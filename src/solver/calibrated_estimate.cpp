@@ -5,7 +5,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "src/solver/error_estimate.hpp"
 
 namespace stc {
 
@@ -19,8 +18,9 @@ double CalibratedIndicatorEstimator::record(const InterfaceHistory& s, double in
   double bound = -1.0;
   for (const Checkpoint& c : checkpoints_) {
     if (!(c.indicator >= 2.0 * safety_ * indicator)) continue;
-    const InterfaceHistory d{c.s.v - s.v, c.s.lambda - s.lambda};
-    const double distance = std::sqrt(std::max(0.0, energyProduct(d, d)));
+    // ‖u_j − u_n‖²_K = Σ δv · δλ (energyProduct of the difference with itself), without temporaries.
+    const double squared = (c.s.v - s.v).cwiseProduct(c.s.lambda - s.lambda).sum();
+    const double distance = std::sqrt(std::max(0.0, squared));
     bound = std::max(bound, safety_ * indicator * distance / (c.indicator - safety_ * indicator));
   }
   if (indicator < 1.0 && (checkpoints_.empty() || indicator * spacing_ <= checkpoints_.back().indicator)) {
