@@ -27,10 +27,10 @@ struct FasOptions {
   /// it a poor coarse space (e.g. 10 modes + 5 residual vectors on the seed scene) can lock FAS in
   /// a 2-cycle at true error 0.1-0.2 (docs/compare_bases.md). Off: the seed's plain cycle.
   bool safeguard = true;
-  /// θ ≥ 1 of the safeguard. The indicator is a poor judge of one correction: on the 801-node seed
-  /// mesh corrections that halved the true error raised it 3 to 5 times, while on the 3D hemisphere
-  /// the corrections that raised it raised the error too. θ = 1.5 kept the 3D safeguard's effect and
-  /// removed the needless rejections of the finest 2D meshes (docs/method.md §4).
+  /// θ ≥ 1 of the safeguard. The indicator is an imperfect judge of one correction: on the 801-node
+  /// seed mesh corrections that cut the true error up to 7 times raised it up to 1.8 times, while on
+  /// the 3D hemisphere the corrections that raised it raised the error too. θ = 1.5 keeps most of
+  /// the safeguard's effect in 3D and removes the needless rejections at 1601 nodes (docs/method.md §4).
   double safeguard_growth = defaults::safeguard_growth;
   int max_skip = 8;               ///< >= 1, longest run of skipped coarse steps
   /// With the safeguard, i_C follows its verdicts (additive increase, multiplicative decrease): a

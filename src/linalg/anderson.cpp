@@ -1,6 +1,7 @@
 #include "src/linalg/anderson.hpp"
 
 #include <Eigen/Cholesky>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -18,6 +19,7 @@ void AndersonMixing::next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image) {
     throw std::invalid_argument("AndersonMixing: iterate, image and weights differ in size");
   if (last_f_.size() == 0) {  // first call: a plain step
     last_f_ = w_.asDiagonal() * (image - x);
+    last_norm_ = last_f_.norm();
     last_image_ = image;
     x = image;
     return;
@@ -31,6 +33,7 @@ void AndersonMixing::next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image) {
   // One pass: f_j (weighted) replaces f_{j−1}, F(x_j) replaces F(x_{j−1}), their differences stored
   // (distinct arrays, column-major: restrict pointers let the compiler vectorise the rows).
   const double* __restrict w = w_.data();
+  double squared = 0.0;
   for (Eigen::Index c = 0; c < cols; ++c) {
     const double* __restrict g = image.col(c).data();
     const double* __restrict xc = x.col(c).data();
@@ -40,11 +43,26 @@ void AndersonMixing::next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image) {
     double* __restrict gc = last_image_.col(c).data();
     for (Eigen::Index r = 0; r < rows; ++r) {
       const double f = w[r] * (g[r] - xc[r]);
+      squared += f * f;
       dfc[r] = f - fc[r];
       dgc[r] = g[r] - gc[r];
       fc[r] = f;
       gc[r] = g[r];
     }
+  }
+  // Safeguard (a restart, as in Zhang, O'Donoghue & Boyd, SIAM J. Sci. Comput. 42, 2020): a mixed
+  // iterate whose residual exceeds its predecessor's is kept, but the differences are forgotten and
+  // the next step is the plain one.
+  const double norm = std::sqrt(squared);
+  const bool worse = mixed_ && norm > last_norm_;
+  last_norm_ = norm;
+  if (worse) {
+    count_ = 0;
+    newest_ = -1;
+    mixed_ = false;
+    ++restarts_;
+    x = image;
+    return;
   }
   for (int a = 0; a < count_; ++a) {
     gram_(newest_, a) = df.cwiseProduct(df_[static_cast<size_t>(a)]).sum();
@@ -58,6 +76,7 @@ void AndersonMixing::next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image) {
   const Eigen::VectorXd gamma = (G + shift * Eigen::MatrixXd::Identity(count_, count_)).ldlt().solve(rhs);
   x = image;
   for (int a = 0; a < count_; ++a) x.noalias() -= gamma[a] * dg_[static_cast<size_t>(a)];
+  mixed_ = true;
 }
 
 }  // namespace stc

@@ -6,7 +6,9 @@
 //   γ = argmin ‖f_j − ΔF γ‖,   x_{j+1} = F(x_j) − ΔG γ,
 // the combination of the last depth + 1 images whose combined residual is smallest. On a linear
 // contraction it is a Krylov method (GMRES-equivalent, Walker & Ni §4); on LATIN's nonsmooth maps
-// it is a heuristic, and callers keep a test that can reject what it produces.
+// it is a heuristic, so it restarts: when a mixed iterate's residual exceeds its predecessor's, the
+// differences are forgotten and the step is the plain one (the safeguard of Zhang, O'Donoghue &
+// Boyd, SIAM J. Sci. Comput. 42, 2020, in its simplest form).
 // The iterates are matrices (an interface history: rows × instants) and the least-squares norm is
 // weighted by row, ‖diag(w) f‖_F. γ comes from the normal equations of the depth × depth Gram
 // matrix of ΔF, updated by one column per call, with a relative Tikhonov shift of 1e-12 (Walker &
@@ -24,12 +26,17 @@ class AndersonMixing {
 
   /// Given x_j (in `x`) and F(x_j), overwrites `x` with x_{j+1} (F(x_j) on the first call).
   void next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image);
+  /// Restarts so far: mixed iterates whose residual exceeded their predecessor's.
+  int restarts() const { return restarts_; }
 
  private:
   int depth_, count_ = 0;  ///< differences held, at most depth_
   int newest_ = -1;        ///< slot of the newest difference (a ring of depth_ slots)
   Eigen::VectorXd w_;
   Eigen::MatrixXd last_f_, last_image_;  ///< weighted f_{j−1}, F(x_{j−1}); empty before the first call
+  double last_norm_ = 0.0;               ///< ‖f_{j−1}‖ (weighted)
+  bool mixed_ = false;                   ///< x_j came from a mixed step
+  int restarts_ = 0;
   std::vector<Eigen::MatrixXd> df_, dg_; ///< weighted ΔF and ΔG, by slot
   Eigen::MatrixXd gram_;                 ///< ⟨ΔF_a, ΔF_b⟩ by slot
 };

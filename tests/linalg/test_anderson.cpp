@@ -72,3 +72,20 @@ TEST(AndersonMixing, RefusesBadSizes) {
   Eigen::MatrixXd x = Eigen::MatrixXd::Zero(4, 1);
   EXPECT_THROW(mixing.next(x, Eigen::MatrixXd::Zero(4, 1)), std::invalid_argument);
 }
+
+TEST(AndersonMixing, RestartsWhenAMixedIterateHasALargerResidual) {
+  // A map that changes under the iteration (its constant term alternates in sign, as a nonsmooth
+  // law switching branches would): the differences mix two maps, a mixed iterate's residual grows,
+  // and the mixing restarts from a plain step instead of extrapolating on.
+  const LinearMap map(20, 0.5);
+  const Eigen::MatrixXd kick = 5.0 * Eigen::MatrixXd::Ones(20, 2);
+  stc::AndersonMixing mixing(3, Eigen::VectorXd::Ones(20));
+  Eigen::MatrixXd x = Eigen::MatrixXd::Zero(20, 2);
+  for (int step = 0; step < 12; ++step) mixing.next(x, map.M * x + map.b + (step % 2 ? kick : -kick));
+  EXPECT_GT(mixing.restarts(), 0);
+  // On one fixed contraction it never restarts.
+  stc::AndersonMixing steady(3, Eigen::VectorXd::Ones(20));
+  Eigen::MatrixXd y = Eigen::MatrixXd::Zero(20, 2);
+  for (int step = 0; step < 12; ++step) steady.next(y, map.M * y + map.b);
+  EXPECT_EQ(steady.restarts(), 0);
+}
