@@ -42,9 +42,9 @@ Eigen::MatrixXd leadingSingularVectors(const Eigen::MatrixXd& coordinates, int c
   const Eigen::Index samples = std::min<Eigen::Index>({count + kOversampling, coordinates.rows(), coordinates.cols()});
   if (count <= 0 || samples == 0) return Eigen::MatrixXd(coordinates.rows(), 0);
   const Eigen::MatrixXd Q = rangeFinder(coordinates, samples);
-  // The SVD of the small projected matrix itself (not of its Gram matrix, whose eigenvalues would
+  // The SVD of the small projected matrix itself (divide and conquer; not of its Gram matrix, whose eigenvalues would
   // resolve σ only down to √ε σ_1): singular values to ε σ_1, so `drop` means what it says.
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Q.transpose() * coordinates, Eigen::ComputeThinU);
+  const Eigen::BDCSVD<Eigen::MatrixXd> svd(Q.transpose() * coordinates, Eigen::ComputeThinU);
   const Eigen::VectorXd& sigma = svd.singularValues();  // decreasing
   int keep = 0;
   while (keep < count && keep < sigma.size() && sigma[keep] > drop * sigma[0]) ++keep;

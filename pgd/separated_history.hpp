@@ -23,7 +23,7 @@ Eigen::MatrixXd historyFactor(const ResponseBasis& basis, const Eigen::MatrixXd&
 /// smaller (singular values below `drop` times the largest are left out). Halko, Martinsson &
 /// Tropp, SIAM Review 53 (2011), alg. 4.4 (range finder with q = 2 subspace iterations, 10 extra
 /// samples, a fixed seed: deterministic) and alg. 5.1 (the SVD of the small projected matrix, by
-/// Eigen's JacobiSVD). When count + 10 reaches s' or m the range is the whole row or column space
+/// Eigen's BDCSVD). When count + 10 reaches s' or m the range is the whole row or column space
 /// and the result is the exact SVD's.
 Eigen::MatrixXd leadingSingularVectors(const Eigen::MatrixXd& coordinates, int count, double drop = 1e-12);
 

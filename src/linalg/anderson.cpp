@@ -25,15 +25,17 @@ void AndersonMixing::next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image) {
     return;
   }
   newest_ = (newest_ + 1) % depth_;
-  count_ = std::min(count_ + 1, depth_);
+  const int held = std::min(count_ + 1, depth_);  // slots after this call, the newest included
   Eigen::MatrixXd& df = df_[static_cast<size_t>(newest_)];
   Eigen::MatrixXd& dg = dg_[static_cast<size_t>(newest_)];
   df.resize(rows, cols);  // no reallocation once the ring is full
   dg.resize(rows, cols);
-  // One pass: f_j (weighted) replaces f_{j−1}, F(x_j) replaces F(x_{j−1}), their differences stored
-  // (distinct arrays, column-major: restrict pointers let the compiler vectorise the rows).
+  // One pass, column by column: f_j (weighted) replaces f_{j−1}, F(x_j) replaces F(x_{j−1}), their
+  // differences are stored, and the products the least-squares problem needs, ⟨ΔF_new, ΔF_a⟩ and
+  // ⟨ΔF_a, f_j⟩, are summed while the column is in cache (restrict pointers: the rows vectorise).
   const double* __restrict w = w_.data();
   double squared = 0.0;
+  Eigen::VectorXd row = Eigen::VectorXd::Zero(held), rhs = Eigen::VectorXd::Zero(held);
   for (Eigen::Index c = 0; c < cols; ++c) {
     const double* __restrict g = image.col(c).data();
     const double* __restrict xc = x.col(c).data();
@@ -48,6 +50,16 @@ void AndersonMixing::next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image) {
       dgc[r] = g[r] - gc[r];
       fc[r] = f;
       gc[r] = g[r];
+    }
+    for (int a = 0; a < held; ++a) {
+      const double* __restrict da = df_[static_cast<size_t>(a)].col(c).data();
+      double sum_new = 0.0, sum_f = 0.0;
+      for (Eigen::Index r = 0; r < rows; ++r) {
+        sum_new += dfc[r] * da[r];
+        sum_f += da[r] * fc[r];
+      }
+      row[a] += sum_new;
+      rhs[a] += sum_f;
     }
   }
   // Safeguard (a restart, as in Zhang, O'Donoghue & Boyd, SIAM J. Sci. Comput. 42, 2020): a mixed
@@ -64,18 +76,23 @@ void AndersonMixing::next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image) {
     x = image;
     return;
   }
-  for (int a = 0; a < count_; ++a) {
-    gram_(newest_, a) = df.cwiseProduct(df_[static_cast<size_t>(a)]).sum();
-    gram_(a, newest_) = gram_(newest_, a);
-  }
+  count_ = held;
+  for (int a = 0; a < count_; ++a) gram_(newest_, a) = gram_(a, newest_) = row[a];
   // Normal equations over the slots held: (ΔFᵀΔF + δ I) γ = ΔFᵀ f_j.
   const Eigen::MatrixXd G = gram_.topLeftCorner(count_, count_);
-  Eigen::VectorXd rhs(count_);
-  for (int a = 0; a < count_; ++a) rhs[a] = df_[static_cast<size_t>(a)].cwiseProduct(last_f_).sum();
   const double shift = 1e-12 * G.diagonal().maxCoeff();
   const Eigen::VectorXd gamma = (G + shift * Eigen::MatrixXd::Identity(count_, count_)).ldlt().solve(rhs);
-  x = image;
-  for (int a = 0; a < count_; ++a) x.noalias() -= gamma[a] * dg_[static_cast<size_t>(a)];
+  // x_{j+1} = F(x_j) − ΔG γ, column by column.
+  for (Eigen::Index c = 0; c < cols; ++c) {
+    double* __restrict xc = x.col(c).data();
+    const double* __restrict g = image.col(c).data();
+    for (Eigen::Index r = 0; r < rows; ++r) xc[r] = g[r];
+    for (int a = 0; a < count_; ++a) {
+      const double* __restrict da = dg_[static_cast<size_t>(a)].col(c).data();
+      const double ga = gamma[a];
+      for (Eigen::Index r = 0; r < rows; ++r) xc[r] -= ga * da[r];
+    }
+  }
   mixed_ = true;
 }
 
