@@ -7,7 +7,10 @@
 //   2. fine local stage: ŝ ← its result (in Γ).
 // (The seed's increments Δv̂ = v̂ − Bũ, Δλ̂ = λ̂ − λ̃ give res̃ + Δλ̂ + kΔv̂ = W(ŝ) − W_s.) Start (a)
 // takes ŝ = (Bũ, λ̃), start (b) the local stage's own ŝ = (v̂, λ̃). Each iteration is two products
-// with B Y (2n_C × r), two passes over the interface fields and a local stage.
+// with B Y (2n_C × r), two passes over the interface fields and a local stage. Its state is
+// w = W(ŝ); with FasOptions::coarse_anderson > 0 the next w is the Anderson mixing of the last
+// images (src/linalg/anderson.hpp, in the k⁻¹ norm), the last iteration a plain one, so that the
+// result is a local-stage iterate (docs/method.md §4, "Anderson mixing of the coarse iterations").
 #include "fas/coarse_space.hpp"
 #include "fas/fas_options.hpp"
 #include "src/contact/contact_interface.hpp"
