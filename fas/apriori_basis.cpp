@@ -1,9 +1,8 @@
 #include "fas/apriori_basis.hpp"
 
-#include <Eigen/QR>
-
 #include "pgd/separated_history.hpp"
 #include "src/core/option_check.hpp"
+#include "src/linalg/dense_decompositions.hpp"
 
 namespace stc::fas {
 
@@ -44,8 +43,7 @@ CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& /*s*/) {
     const Eigen::MatrixXd V = pgd::leadingSingularVectors(d, options_.increment_modes, 1e-10);
     Eigen::MatrixXd all(U.rows(), U.cols() + V.cols());
     all << U, V;
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(all);
-    U = qr.householderQ() * Eigen::MatrixXd::Identity(all.rows(), all.cols());
+    U = linalg::orthonormalColumns(all);
   }
   previous_ = c;
   return CoarseSpace::fromTraces(pgd::modeTraces(basis, factor.combination(U)));

@@ -1,6 +1,6 @@
 #include "fas/coarse_space.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "src/linalg/dense_decompositions.hpp"
 
 namespace stc::fas {
 
@@ -14,13 +14,13 @@ CoarseSpace::CoarseSpace(const Eigen::MatrixXd& vectors, const Eigen::SparseMatr
   const Eigen::MatrixXd AV = A * vectors;
   Eigen::MatrixXd G = vectors.transpose() * AV;
   G = 0.5 * (G + G.transpose()).eval();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(G);
-  const Eigen::VectorXd& d = eig.eigenvalues();  // ascending
+  const linalg::SymmetricEigen eig = linalg::symmetricEigen(G);
+  const Eigen::VectorXd& d = eig.values;  // ascending
   const double largest = d.maxCoeff();
   int keep = 0;
   for (Eigen::Index j = 0; j < d.size(); ++j) keep += d[j] > drop * largest;
   // Y = V Q_kept D_kept^{-1/2}: then YᵀAY = D^{-1/2} Qᵀ G Q D^{-1/2} = I.
-  const Eigen::MatrixXd T = eig.eigenvectors().rightCols(keep) *
+  const Eigen::MatrixXd T = eig.vectors.rightCols(keep) *
                             d.tail(keep).cwiseSqrt().cwiseInverse().asDiagonal();
   Y_ = vectors * T;
   BY_ = B * Y_;

@@ -1,9 +1,8 @@
 #include "fas/residual_vectors.hpp"
 
-#include <Eigen/QR>
-#include <Eigen/SVD>
 #include <algorithm>
-#include <random>
+
+#include "src/linalg/dense_decompositions.hpp"
 
 namespace stc::fas {
 
@@ -19,18 +18,12 @@ Eigen::MatrixXd rangeOf(const Eigen::MatrixXd& R, int count) {
   if (count <= 0 || R.cols() == 0) return Eigen::MatrixXd(R.rows(), 0);
   // Randomized range finder (Halko, Martinsson, Tropp 2011, alg. 4.1) with 5 extra samples.
   const int samples = std::min<int>(count + 5, static_cast<int>(R.cols()));
-  std::mt19937 rng(20130513);
-  std::normal_distribution<double> normal;
-  Eigen::MatrixXd omega(R.cols(), samples);
-  for (Eigen::Index j = 0; j < omega.size(); ++j) omega(j) = normal(rng);
-  const Eigen::MatrixXd Z = R * omega;
-  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Z);
-  const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(R.rows(), samples);
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Q.transpose() * R, Eigen::ComputeThinU);
-  const Eigen::VectorXd& sigma = svd.singularValues();
+  const Eigen::MatrixXd Q = linalg::randomizedRange(R, samples, 0, 20130513u);
+  const linalg::Svd svd = linalg::singularValueDecomposition(Q.transpose() * R, linalg::SvdMethod::jacobi, linalg::kThinU);
+  const Eigen::VectorXd& sigma = svd.values;
   int keep = 0;
   while (keep < std::min<int>(count, static_cast<int>(sigma.size())) && sigma[keep] > 1e-12 * sigma[0]) ++keep;
-  return Q * svd.matrixU().leftCols(keep);
+  return Q * svd.U.leftCols(keep);
 }
 
 }  // namespace stc::fas

@@ -1,8 +1,8 @@
 #include "pgd/basis_verification.hpp"
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
 #include <cmath>
+
+#include "src/linalg/dense_decompositions.hpp"
 
 namespace stc::pgd {
 
@@ -10,11 +10,11 @@ Eigen::MatrixXd orthonormalIn(const Eigen::MatrixXd& V, const Eigen::SparseMatri
   if (V.cols() == 0) return V;
   Eigen::MatrixXd G = V.transpose() * (M * V);
   G = 0.5 * (G + G.transpose()).eval();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(G);
-  const Eigen::VectorXd& d = eig.eigenvalues();
+  const linalg::SymmetricEigen eig = linalg::symmetricEigen(G);
+  const Eigen::VectorXd& d = eig.values;
   int keep = 0;
   for (Eigen::Index j = 0; j < d.size(); ++j) keep += d[j] > 1e-12 * d.maxCoeff();
-  return V * eig.eigenvectors().rightCols(keep) * d.tail(keep).cwiseSqrt().cwiseInverse().asDiagonal();
+  return V * eig.vectors.rightCols(keep) * d.tail(keep).cwiseSqrt().cwiseInverse().asDiagonal();
 }
 
 Eigen::VectorXd principalCosines(const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y,
@@ -22,7 +22,7 @@ Eigen::VectorXd principalCosines(const Eigen::MatrixXd& X, const Eigen::MatrixXd
   const Eigen::MatrixXd Qx = orthonormalIn(X, M), Qy = orthonormalIn(Y, M);
   if (Qx.cols() == 0 || Qy.cols() == 0) return {};
   const Eigen::MatrixXd C = Qx.transpose() * (M * Qy);
-  return Eigen::JacobiSVD<Eigen::MatrixXd>(C).singularValues().cwiseMin(1.0);
+  return linalg::singularValueDecomposition(C, linalg::SvdMethod::jacobi, linalg::kValuesOnly).values.cwiseMin(1.0);
 }
 
 double projectionError(const Eigen::MatrixXd& U, const Eigen::MatrixXd& Y, const Eigen::SparseMatrix<double>& M) {

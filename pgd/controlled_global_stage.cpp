@@ -1,35 +1,23 @@
 #include "pgd/controlled_global_stage.hpp"
 
-#include <Eigen/QR>
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include "src/core/option_check.hpp"
+#include "src/linalg/dense_decompositions.hpp"
 #include "src/solver/warm_start.hpp"
 
 namespace stc::pgd {
 namespace {
-
-Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y) {
-  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
-  return qr.householderQ() * Eigen::MatrixXd::Identity(Y.rows(), Y.cols());
-}
 
 // Leading left singular directions of R (rows × m), at most `count`, enough that the rest of R's
 // Frobenius norm is at most `target`: randomized range finder with power iterations.
 Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double target, int count,
                                   const ControlledStageOptions& o, unsigned seed) {
   const int samples = std::min<int>({count + o.oversampling, static_cast<int>(R.cols()), static_cast<int>(R.rows())});
-  std::mt19937 rng(20131001u + seed);
-  std::normal_distribution<double> normal;
-  Eigen::MatrixXd omega(R.cols(), samples);
-  for (Eigen::Index j = 0; j < omega.size(); ++j) omega(j) = normal(rng);
-  Eigen::MatrixXd Q = orthonormalColumns(R * omega);
-  for (int it = 0; it < o.power_iterations; ++it) Q = orthonormalColumns(R * (R.transpose() * Q));
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Q.transpose() * R, Eigen::ComputeThinU);
-  const Eigen::VectorXd& sigma = svd.singularValues();
+  const Eigen::MatrixXd Q = linalg::randomizedRange(R, samples, o.power_iterations, 20131001u + seed);
+  const linalg::Svd svd = linalg::singularValueDecomposition(Q.transpose() * R, linalg::SvdMethod::jacobi, linalg::kThinU);
+  const Eigen::VectorXd& sigma = svd.values;
   double rest = R.squaredNorm();
   int keep = 0;
   while (keep < std::min<int>(count, static_cast<int>(sigma.size())) && sigma[keep] > 0.0 &&
@@ -37,7 +25,7 @@ Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double target, int c
     rest -= sigma[keep] * sigma[keep];
     ++keep;
   }
-  return Q * svd.matrixU().leftCols(keep);
+  return Q * svd.U.leftCols(keep);
 }
 
 }  // namespace

@@ -1,9 +1,8 @@
 #include "pgd/separated_history.hpp"
 
-#include <Eigen/SVD>
-#include <Eigen/QR>
 #include <algorithm>
-#include <random>
+
+#include "src/linalg/dense_decompositions.hpp"
 
 namespace stc::pgd {
 namespace {
@@ -11,21 +10,10 @@ namespace {
 constexpr int kOversampling = 10;
 constexpr int kSubspaceIterations = 2;
 
-Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y) {
-  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
-  return qr.householderQ() * Eigen::MatrixXd::Identity(Y.rows(), Y.cols());
-}
-
 // An orthonormal basis of (approximately) the leading `samples`-dimensional range of C.
 Eigen::MatrixXd rangeFinder(const Eigen::MatrixXd& C, Eigen::Index samples) {
   if (samples == C.rows()) return Eigen::MatrixXd::Identity(C.rows(), C.rows());
-  std::mt19937 rng(20160101u);
-  std::normal_distribution<double> normal;
-  Eigen::MatrixXd omega(C.cols(), samples);
-  for (Eigen::Index j = 0; j < omega.size(); ++j) omega(j) = normal(rng);
-  Eigen::MatrixXd Q = orthonormalColumns(C * omega);
-  for (int it = 0; it < kSubspaceIterations; ++it) Q = orthonormalColumns(C * (C.transpose() * Q));
-  return Q;
+  return linalg::randomizedRange(C, samples, kSubspaceIterations, 20160101u);
 }
 
 }  // namespace
@@ -44,11 +32,12 @@ Eigen::MatrixXd leadingSingularVectors(const Eigen::MatrixXd& coordinates, int c
   const Eigen::MatrixXd Q = rangeFinder(coordinates, samples);
   // The SVD of the small projected matrix itself (divide and conquer; not of its Gram matrix, whose eigenvalues would
   // resolve σ only down to √ε σ_1): singular values to ε σ_1, so `drop` means what it says.
-  const Eigen::BDCSVD<Eigen::MatrixXd> svd(Q.transpose() * coordinates, Eigen::ComputeThinU);
-  const Eigen::VectorXd& sigma = svd.singularValues();  // decreasing
+  const linalg::Svd svd =
+      linalg::singularValueDecomposition(Q.transpose() * coordinates, linalg::SvdMethod::divide_and_conquer, linalg::kThinU);
+  const Eigen::VectorXd& sigma = svd.values;  // decreasing
   int keep = 0;
   while (keep < count && keep < sigma.size() && sigma[keep] > drop * sigma[0]) ++keep;
-  return Q * svd.matrixU().leftCols(keep);
+  return Q * svd.U.leftCols(keep);
 }
 
 EnergySvd energySvd(const ResponseBasis& basis, const Eigen::MatrixXd& c, int count, double drop) {

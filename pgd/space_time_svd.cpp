@@ -1,7 +1,5 @@
 #include "pgd/space_time_svd.hpp"
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,6 +7,7 @@
 
 #include "pgd/arpack_eigen.hpp"
 #include "src/core/input_error.hpp"
+#include "src/linalg/dense_decompositions.hpp"
 
 namespace stc::pgd {
 namespace {
@@ -50,11 +49,11 @@ SpaceTimeSvd denseEnergySvd(const Eigen::MatrixXd& U, const Eigen::SparseMatrix<
   const Eigen::MatrixXd KU = K * U;
   Eigen::MatrixXd C = U.transpose() * KU;
   C = 0.5 * (C + C.transpose()).eval();  // symmetric to the last bit before the eigensolver
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(C);
-  if (eigen.info() != Eigen::Success) throw std::runtime_error("energySvd: Eigen's SelfAdjointEigenSolver failed");
+  const linalg::SymmetricEigen eigen = linalg::symmetricEigen(C);
+  if (!eigen.converged) throw std::runtime_error("energySvd: Eigen's SelfAdjointEigenSolver failed");
   // Eigen orders eigenvalues ascending: take the last r, reversed.
-  const Eigen::VectorXd lambda = eigen.eigenvalues().tail(r).reverse();
-  const Eigen::MatrixXd nu = eigen.eigenvectors().rightCols(r).rowwise().reverse();
+  const Eigen::VectorXd lambda = eigen.values.tail(r).reverse();
+  const Eigen::MatrixXd nu = eigen.vectors.rightCols(r).rowwise().reverse();
   return fromGram(U, lambda, nu, total);
 }
 
@@ -138,11 +137,12 @@ SpaceTimeSvd plainSvd(const Eigen::MatrixXd& U, int modes) {
   if (modes < 0 || modes > full)
     throw InputError("plainSvd: modes = " + std::to_string(modes) + " must be in [0, " + std::to_string(full) + "]");
   const int r = modes == 0 ? full : modes;
-  const Eigen::BDCSVD<Eigen::MatrixXd> svd(U, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const linalg::Svd svd =
+      linalg::singularValueDecomposition(U, linalg::SvdMethod::divide_and_conquer, linalg::kThinU | linalg::kThinV);
   SpaceTimeSvd s;
-  s.sigma = svd.singularValues().head(r);
-  s.space = svd.matrixU().leftCols(r);
-  s.time = svd.matrixV().leftCols(r);
+  s.sigma = svd.values.head(r);
+  s.space = svd.U.leftCols(r);
+  s.time = svd.V.leftCols(r);
   s.total_energy = U.squaredNorm();
   // A backward-stable SVD resolves σ_i down to ~ max(n, m) ε σ_1.
   const double floor = r > 0 ? s.sigma[0] * static_cast<double>(std::max(U.rows(), U.cols())) * kEpsilon : 0.0;

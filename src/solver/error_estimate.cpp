@@ -1,9 +1,10 @@
 #include "src/solver/error_estimate.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "src/linalg/dense_decompositions.hpp"
 
 namespace stc {
 namespace {
@@ -18,12 +19,12 @@ constexpr double kRoundOff = 1e-12;
 // Solves the symmetric system M c = b in the least-squares sense, ignoring directions of M below
 // 1e-12 of its largest eigenvalue (nearly parallel differences: a lower order is all they hold).
 Eigen::VectorXd pseudoSolve(const Eigen::MatrixXd& M, const Eigen::VectorXd& b) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(M);
-  const Eigen::VectorXd& d = eig.eigenvalues();
+  const linalg::SymmetricEigen eig = linalg::symmetricEigen(M);
+  const Eigen::VectorXd& d = eig.values;
   const double cutoff = 1e-12 * d.cwiseAbs().maxCoeff();
-  Eigen::VectorXd coordinates = eig.eigenvectors().transpose() * b;
+  Eigen::VectorXd coordinates = eig.vectors.transpose() * b;
   for (Eigen::Index i = 0; i < d.size(); ++i) coordinates[i] = d[i] > cutoff ? coordinates[i] / d[i] : 0.0;
-  return eig.eigenvectors() * coordinates;
+  return eig.vectors * coordinates;
 }
 
 }  // namespace

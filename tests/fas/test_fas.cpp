@@ -2,7 +2,6 @@
 // the basis spans the solution, coarse operator SPD, agreement with the incremental solver.
 #include <gtest/gtest.h>
 
-#include <Eigen/SVD>
 #include <cstdio>
 
 #include "fas/apriori_basis.hpp"
@@ -10,6 +9,7 @@
 #include "fas/residual_vectors.hpp"
 #include "latin/latin_solver.hpp"
 #include "src/core/input_error.hpp"
+#include "src/linalg/dense_decompositions.hpp"
 #include "src/solver/incremental_solver.hpp"
 #include "solver/seed_scene.hpp"
 
@@ -29,7 +29,8 @@ struct Fixture {
     return stc::buildProblem(scene);
   }
   Eigen::MatrixXd leadingModes(int count) const {
-    return Eigen::BDCSVD<Eigen::MatrixXd>(u_ref, Eigen::ComputeThinU).matrixU().leftCols(count);
+    using namespace stc::linalg;
+    return singularValueDecomposition(u_ref, SvdMethod::divide_and_conquer, kThinU).U.leftCols(count);
   }
 };
 
@@ -84,9 +85,10 @@ TEST(Fas, BasisSpanningTheSolutionConvergesInFewCycles) {
   const auto& f = fixture();
   stc::latin::GlobalStage g(f.problem);
   g.keepDisplacements(true);
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(f.u_ref, Eigen::ComputeThinU);
-  const int rank = static_cast<int>((svd.singularValues().array() > 1e-12 * svd.singularValues()[0]).count());
-  stc::fas::FixedBasisProvider provider(svd.matrixU().leftCols(rank), f.problem.numSteps(), g, f.problem.contact.B);
+  const stc::linalg::Svd svd =
+      stc::linalg::singularValueDecomposition(f.u_ref, stc::linalg::SvdMethod::jacobi, stc::linalg::kThinU);
+  const int rank = static_cast<int>((svd.values.array() > 1e-12 * svd.values[0]).count());
+  stc::fas::FixedBasisProvider provider(svd.U.leftCols(rank), f.problem.numSteps(), g, f.problem.contact.B);
   stc::fas::FasOptions options;
   options.tolerance = 1e-8;
   options.coarse_iterations = 300;
@@ -129,7 +131,8 @@ TEST(ResidualVectors, SpanWhatTheBasisMisses) {
   EXPECT_EQ(res.cols(), 2);
   Eigen::MatrixXd all(u.rows(), 3);
   all << fixed.basis(), res;
-  const Eigen::MatrixXd projected = all * all.completeOrthogonalDecomposition().solve(u);
+  const Eigen::MatrixXd Q = stc::linalg::orthonormalColumns(all);
+  const Eigen::MatrixXd projected = Q * (Q.transpose() * u);
   EXPECT_LE((projected - u).norm(), 1e-10 * u.norm());
 }
 

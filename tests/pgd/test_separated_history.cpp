@@ -2,11 +2,10 @@
 // (pgd/separated_history.hpp) against the eigen-decomposition of the n × m history's Gram matrix.
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
-
 #include "latin/local_stage.hpp"
 #include "pgd/controlled_global_stage.hpp"
 #include "pgd/separated_history.hpp"
+#include "src/linalg/dense_decompositions.hpp"
 #include "src/solver/incremental_solver.hpp"
 #include "solver/seed_scene.hpp"
 
@@ -22,8 +21,8 @@ TEST(SeparatedHistory, EnergySvdEqualsTheSvdOfTheFullHistory) {
   const Eigen::MatrixXd u = basis.loadResponses() * basis.loadHistories() + basis.responses() * stage.coordinates();
   // Dense: σ_i² are the eigenvalues of uᵀ A u (m × m).
   const Eigen::MatrixXd gram = u.transpose() * (stage.matrix() * u);
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> dense(0.5 * (gram + gram.transpose()));
-  const Eigen::VectorXd sigma_dense = dense.eigenvalues().reverse().cwiseMax(0.0).cwiseSqrt();
+  const stc::linalg::SymmetricEigen dense = stc::linalg::symmetricEigen(0.5 * (gram + gram.transpose()));
+  const Eigen::VectorXd sigma_dense = dense.values.reverse().cwiseMax(0.0).cwiseSqrt();
   const int r = 8;
   const stc::pgd::EnergySvd svd = stc::pgd::energySvd(basis, stage.coordinates(), r);
   ASSERT_EQ(svd.singular_values.size(), r);

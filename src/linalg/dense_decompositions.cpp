@@ -1,0 +1,59 @@
+#include "src/linalg/dense_decompositions.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+#include <Eigen/SVD>
+#include <random>
+
+namespace stc::linalg {
+namespace {
+
+template <class Decomposition>
+Svd fromDecomposition(const Decomposition& d, unsigned vectors) {
+  Svd svd;
+  svd.values = d.singularValues();
+  if (vectors & kThinU) svd.U = d.matrixU();
+  if (vectors & kThinV) svd.V = d.matrixV();
+  return svd;
+}
+
+}  // namespace
+
+Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y) {
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(Y.rows(), Y.cols());
+}
+
+SymmetricEigen symmetricEigen(const Eigen::MatrixXd& M) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(M);
+  SymmetricEigen result;
+  result.converged = eig.info() == Eigen::Success;
+  result.values = eig.eigenvalues();
+  result.vectors = eig.eigenvectors();
+  return result;
+}
+
+Svd singularValueDecomposition(const Eigen::MatrixXd& M, SvdMethod method, unsigned vectors) {
+  unsigned options = 0;
+  if (vectors & kThinU) options |= Eigen::ComputeThinU;
+  if (vectors & kThinV) options |= Eigen::ComputeThinV;
+  if (method == SvdMethod::jacobi) return fromDecomposition(Eigen::JacobiSVD<Eigen::MatrixXd>(M, options), vectors);
+  return fromDecomposition(Eigen::BDCSVD<Eigen::MatrixXd>(M, options), vectors);
+}
+
+Eigen::MatrixXd gaussianSketch(Eigen::Index rows, Eigen::Index cols, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal;
+  Eigen::MatrixXd omega(rows, cols);
+  for (Eigen::Index j = 0; j < omega.size(); ++j) omega(j) = normal(rng);
+  return omega;
+}
+
+Eigen::MatrixXd randomizedRange(const Eigen::MatrixXd& R, Eigen::Index samples, int power_iterations,
+                                unsigned seed) {
+  Eigen::MatrixXd Q = orthonormalColumns(R * gaussianSketch(R.cols(), samples, seed));
+  for (int it = 0; it < power_iterations; ++it) Q = orthonormalColumns(R * (R.transpose() * Q));
+  return Q;
+}
+
+}  // namespace stc::linalg

@@ -1,0 +1,47 @@
+#pragma once
+// The dense decompositions the solvers use on small matrices (Gram matrices, projected histories),
+// each one instantiated in dense_decompositions.cpp alone. Eigen's SVDs and symmetric eigensolver
+// are heavy templates: each file that instantiated them took one to two minutes to compile in the
+// sanitizer build, and eight did.
+#include <Eigen/Core>
+
+namespace stc::linalg {
+
+/// Q of the Householder QR of Y (Eigen::HouseholderQR), Y.cols() orthonormal columns: for every k
+/// the first k span Y's first k when those are independent.
+Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y);
+
+/// Eigenpairs of the symmetric M (Eigen::SelfAdjointEigenSolver, which reads its lower triangle),
+/// eigenvalues ascending, eigenvector j in column j. `converged` is false when the QR iterations did not.
+struct SymmetricEigen {
+  Eigen::VectorXd values;
+  Eigen::MatrixXd vectors;
+  bool converged = true;
+};
+SymmetricEigen symmetricEigen(const Eigen::MatrixXd& M);
+
+enum class SvdMethod {
+  jacobi,              ///< two-sided Jacobi (Eigen::JacobiSVD): accurate, O(n³) with a large constant
+  divide_and_conquer,  ///< Eigen::BDCSVD: bidiagonalisation then divide and conquer (Jacobi below 16 columns)
+};
+enum SvdVectors : unsigned { kValuesOnly = 0, kThinU = 1, kThinV = 2 };
+
+/// M = U diag(values) Vᵀ, values decreasing; U and V thin and filled only when asked for.
+struct Svd {
+  Eigen::VectorXd values;
+  Eigen::MatrixXd U, V;
+};
+Svd singularValueDecomposition(const Eigen::MatrixXd& M, SvdMethod method, unsigned vectors);
+
+/// A rows × cols matrix of independent standard normal entries, filled column by column from
+/// std::mt19937(seed): the same seed gives the same sketch on every platform with the same library.
+Eigen::MatrixXd gaussianSketch(Eigen::Index rows, Eigen::Index cols, unsigned seed);
+
+/// Orthonormal basis (R.rows() × samples) of the approximate leading range of R: randomized range
+/// finder with `power_iterations` subspace iterations (Halko, Martinsson & Tropp 2011, algs. 4.1
+/// and 4.4), Q = orth(R Ω), then Q = orth(R (Rᵀ Q)) each iteration, Ω = gaussianSketch(R.cols(),
+/// samples, seed).
+Eigen::MatrixXd randomizedRange(const Eigen::MatrixXd& R, Eigen::Index samples, int power_iterations,
+                                unsigned seed);
+
+}  // namespace stc::linalg

@@ -1,0 +1,79 @@
+// The dense decompositions (src/linalg/dense_decompositions.hpp): each one reconstructs its matrix
+// to round-off, both SVD methods agree, the randomized range finder recovers the range of a matrix
+// of exact low rank, and the Gaussian sketch is repeatable.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "src/linalg/dense_decompositions.hpp"
+
+namespace {
+
+using namespace stc::linalg;
+
+// A 40 × 25 matrix of exact rank 6 with singular values 1, 1/3, ..., 1/3^5 (a spread of 243).
+Eigen::MatrixXd lowRank() {
+  const Eigen::MatrixXd U = orthonormalColumns(gaussianSketch(40, 6, 1));
+  const Eigen::MatrixXd V = orthonormalColumns(gaussianSketch(25, 6, 2));
+  Eigen::VectorXd s(6);
+  for (int i = 0; i < 6; ++i) s[i] = std::pow(3.0, -i);
+  return U * s.asDiagonal() * V.transpose();
+}
+
+TEST(DenseDecompositions, OrthonormalColumnsSpanTheLeadingColumns) {
+  const Eigen::MatrixXd Y = gaussianSketch(30, 5, 3);
+  const Eigen::MatrixXd Q = orthonormalColumns(Y);
+  ASSERT_EQ(Q.rows(), 30);
+  ASSERT_EQ(Q.cols(), 5);
+  EXPECT_LT((Q.transpose() * Q - Eigen::MatrixXd::Identity(5, 5)).cwiseAbs().maxCoeff(), 1e-14);
+  // Column 1 of Y lies in the span of Q's first two columns (QR: Y = Q R, R upper triangular).
+  const Eigen::VectorXd y = Y.col(1);
+  const Eigen::MatrixXd Q2 = Q.leftCols(2);
+  EXPECT_LT((y - Q2 * (Q2.transpose() * y)).norm(), 1e-14 * y.norm());
+}
+
+TEST(DenseDecompositions, SymmetricEigenReconstructsAscending) {
+  const Eigen::MatrixXd G = gaussianSketch(12, 12, 4);
+  const Eigen::MatrixXd M = G + G.transpose();
+  const SymmetricEigen eig = symmetricEigen(M);
+  ASSERT_TRUE(eig.converged);
+  for (Eigen::Index i = 1; i < eig.values.size(); ++i) EXPECT_LE(eig.values[i - 1], eig.values[i]);
+  const Eigen::MatrixXd back = eig.vectors * eig.values.asDiagonal() * eig.vectors.transpose();
+  EXPECT_LT((back - M).cwiseAbs().maxCoeff(), 1e-13 * M.cwiseAbs().maxCoeff());
+}
+
+TEST(DenseDecompositions, BothSvdMethodsReconstructAndAgree) {
+  const Eigen::MatrixXd M = gaussianSketch(50, 30, 5);  // 30 columns: BDCSVD divides (Jacobi below 16)
+  const Svd jacobi = singularValueDecomposition(M, SvdMethod::jacobi, kThinU | kThinV);
+  const Svd bdc = singularValueDecomposition(M, SvdMethod::divide_and_conquer, kThinU | kThinV);
+  for (const Svd* s : {&jacobi, &bdc}) {
+    ASSERT_EQ(s->U.cols(), 30);
+    ASSERT_EQ(s->V.cols(), 30);
+    EXPECT_LT((s->U * s->values.asDiagonal() * s->V.transpose() - M).cwiseAbs().maxCoeff(), 1e-12);
+  }
+  EXPECT_LT((jacobi.values - bdc.values).cwiseAbs().maxCoeff(), 1e-12 * jacobi.values[0]);
+  const Svd values_only = singularValueDecomposition(M, SvdMethod::jacobi, kValuesOnly);
+  EXPECT_EQ(values_only.U.size(), 0);
+  EXPECT_EQ(values_only.V.size(), 0);
+  EXPECT_LT((values_only.values - jacobi.values).cwiseAbs().maxCoeff(), 1e-12 * jacobi.values[0]);
+}
+
+TEST(DenseDecompositions, RandomizedRangeHoldsAnExactlyLowRankRange) {
+  const Eigen::MatrixXd R = lowRank();
+  for (int power : {0, 2}) {
+    const Eigen::MatrixXd Q = randomizedRange(R, 6, power, 7);
+    ASSERT_EQ(Q.cols(), 6);
+    EXPECT_LT((R - Q * (Q.transpose() * R)).norm(), 1e-12 * R.norm()) << "power iterations " << power;
+  }
+}
+
+TEST(DenseDecompositions, GaussianSketchIsRepeatableAndStandard) {
+  const Eigen::MatrixXd a = gaussianSketch(200, 50, 9), b = gaussianSketch(200, 50, 9);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, gaussianSketch(200, 50, 10));
+  // 10 000 standard normal samples: mean within 4 standard errors (0.04) of 0, variance within 0.06 of 1.
+  EXPECT_LT(std::abs(a.mean()), 0.04);
+  EXPECT_LT(std::abs((a.array() - a.mean()).square().mean() - 1.0), 0.06);
+}
+
+}  // namespace
