@@ -11,18 +11,7 @@ CoarseSpace::CoarseSpace(const Eigen::MatrixXd& vectors, const Eigen::SparseMatr
     BY_.resize(B.rows(), 0);
     return;
   }
-  const Eigen::MatrixXd AV = A * vectors;
-  Eigen::MatrixXd G = vectors.transpose() * AV;
-  G = 0.5 * (G + G.transpose()).eval();
-  const linalg::SymmetricEigen eig = linalg::symmetricEigen(G);
-  const Eigen::VectorXd& d = eig.values;  // ascending
-  const double largest = d.maxCoeff();
-  int keep = 0;
-  for (Eigen::Index j = 0; j < d.size(); ++j) keep += d[j] > drop * largest;
-  // Y = V Q_kept D_kept^{-1/2}: then YᵀAY = D^{-1/2} Qᵀ G Q D^{-1/2} = I.
-  const Eigen::MatrixXd T = eig.vectors.rightCols(keep) *
-                            d.tail(keep).cwiseSqrt().cwiseInverse().asDiagonal();
-  Y_ = vectors * T;
+  Y_ = linalg::orthonormalIn(vectors, A, drop);
   BY_ = B * Y_;
 }
 

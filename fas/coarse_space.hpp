@@ -11,8 +11,8 @@ namespace stc::fas {
 class CoarseSpace {
  public:
   CoarseSpace() = default;
-  /// A-orthonormalises the columns of `vectors` (n_free × q): eigen-decomposition of the Gram
-  /// matrix G = VᵀAV, dropping directions with eigenvalue below `drop` · max (dependent vectors).
+  /// A-orthonormalises the columns of `vectors` (n_free × q) by linalg::orthonormalIn: eigen-decomposition
+  /// of the Gram matrix G = VᵀAV, dropping directions with eigenvalue below `drop` · max (dependent vectors).
   CoarseSpace(const Eigen::MatrixXd& vectors, const Eigen::SparseMatrix<double>& A,
               const Eigen::SparseMatrix<double>& B, double drop = 1e-12);
   /// A space whose basis Y is A-orthonormal by construction and kept in separated form

@@ -1,14 +1,12 @@
 #pragma once
 // Verification of a reduced basis against another (docs/method.md §5: "The SVD is used only to check the
 // a priori basis: principal angles, projection error of the converged solution on it").
-// Inner product: an SPD matrix M (e.g. K_ff, the energy of the free displacements).
+// Inner product: an SPD matrix M (e.g. K_ff, the energy of the free displacements); bases are made
+// M-orthonormal by linalg::orthonormalIn (src/linalg/dense_decompositions.hpp).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 namespace stc::pgd {
-
-/// Columns of V orthonormal in M (drops directions with Gram eigenvalue below 1e-12 · max).
-Eigen::MatrixXd orthonormalIn(const Eigen::MatrixXd& V, const Eigen::SparseMatrix<double>& M);
 
 /// Cosines of the principal angles between span X and span Y in the M product (Björck & Golub
 /// 1973: singular values of QxᵀM Qy), largest first; min(rank X, rank Y) of them.

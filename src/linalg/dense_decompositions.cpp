@@ -33,6 +33,21 @@ SymmetricEigen symmetricEigen(const Eigen::MatrixXd& M) {
   return result;
 }
 
+Eigen::MatrixXd orthonormalIn(const Eigen::MatrixXd& V, const Eigen::SparseMatrix<double>& M, double drop) {
+  if (V.cols() == 0) return V;
+  const Eigen::MatrixXd MV = M * V;
+  Eigen::MatrixXd G = V.transpose() * MV;
+  G = 0.5 * (G + G.transpose()).eval();  // symmetric to the last bit before the eigensolver
+  const SymmetricEigen eig = symmetricEigen(G);
+  const Eigen::VectorXd& d = eig.values;  // ascending
+  const double largest = d.maxCoeff();
+  int keep = 0;
+  for (Eigen::Index j = 0; j < d.size(); ++j) keep += d[j] > drop * largest;
+  // Y = V Q_kept D_kept^{-1/2}: then YᵀMY = D^{-1/2} Qᵀ G Q D^{-1/2} = I.
+  const Eigen::MatrixXd T = eig.vectors.rightCols(keep) * d.tail(keep).cwiseSqrt().cwiseInverse().asDiagonal();
+  return V * T;
+}
+
 Svd singularValueDecomposition(const Eigen::MatrixXd& M, SvdMethod method, unsigned vectors) {
   unsigned options = 0;
   if (vectors & kThinU) options |= Eigen::ComputeThinU;

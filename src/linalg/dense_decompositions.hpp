@@ -4,6 +4,7 @@
 // are heavy templates: each file that instantiated them took one to two minutes to compile in the
 // sanitizer build, and eight did.
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 namespace stc::linalg {
 
@@ -19,6 +20,11 @@ struct SymmetricEigen {
   bool converged = true;
 };
 SymmetricEigen symmetricEigen(const Eigen::MatrixXd& M);
+
+/// Columns spanning V's range, orthonormal in the SPD product M (YᵀMY = I): Y = V Q D^{-1/2} from
+/// the eigenpairs (D, Q) of the Gram matrix VᵀMV, leaving out directions whose eigenvalue is below
+/// `drop` times the largest (dependent columns). n × 0 when V has no column.
+Eigen::MatrixXd orthonormalIn(const Eigen::MatrixXd& V, const Eigen::SparseMatrix<double>& M, double drop = 1e-12);
 
 enum class SvdMethod {
   jacobi,              ///< two-sided Jacobi (Eigen::JacobiSVD): accurate, O(n³) with a large constant

@@ -42,6 +42,25 @@ TEST(DenseDecompositions, SymmetricEigenReconstructsAscending) {
   EXPECT_LT((back - M).cwiseAbs().maxCoeff(), 1e-13 * M.cwiseAbs().maxCoeff());
 }
 
+TEST(DenseDecompositions, OrthonormalInAnSpdProductDropsDependentColumns) {
+  // M = tridiag(-1, 4, -1), SPD; V's fourth column is the sum of its first two.
+  const int n = 20;
+  Eigen::SparseMatrix<double> M(n, n);
+  for (int i = 0; i < n; ++i) {
+    M.insert(i, i) = 4.0;
+    if (i > 0) M.insert(i, i - 1) = -1.0;
+    if (i + 1 < n) M.insert(i, i + 1) = -1.0;
+  }
+  Eigen::MatrixXd V = gaussianSketch(n, 4, 6);
+  V.col(3) = V.col(0) + V.col(1);
+  const Eigen::MatrixXd Y = orthonormalIn(V, M);
+  ASSERT_EQ(Y.cols(), 3);
+  EXPECT_LT((Y.transpose() * (M * Y) - Eigen::MatrixXd::Identity(3, 3)).cwiseAbs().maxCoeff(), 1e-12);
+  // Every column of V lies in span Y: V = Y (Yᵀ M V).
+  EXPECT_LT((V - Y * (Y.transpose() * (M * V))).norm(), 1e-12 * V.norm());
+  EXPECT_EQ(orthonormalIn(Eigen::MatrixXd(n, 0), M).cols(), 0);
+}
+
 TEST(DenseDecompositions, BothSvdMethodsReconstructAndAgree) {
   const Eigen::MatrixXd M = gaussianSketch(50, 30, 5);  // 30 columns: BDCSVD divides (Jacobi below 16)
   const Svd jacobi = singularValueDecomposition(M, SvdMethod::jacobi, kThinU | kThinV);
