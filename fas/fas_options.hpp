@@ -3,6 +3,8 @@
 // Defaults: src/core/solver_settings.hpp. The coarse space's own options (residual vectors, modes)
 // belong to its BasisProvider, the block size of the solves to the latin::GlobalStage the caller
 // builds.
+#include <optional>
+
 #include "src/core/solver_settings.hpp"
 
 namespace stc::fas {
@@ -27,12 +29,13 @@ struct FasOptions {
   /// it a poor coarse space (e.g. 10 modes + 5 residual vectors on the seed scene) can lock FAS in
   /// a 2-cycle at true error 0.1-0.2 (docs/compare_bases.md). Off: the seed's plain cycle.
   bool safeguard = true;
-  /// θ ≥ 1 of the safeguard. The indicator is an imperfect judge of one correction: on the 801-node
-  /// seed mesh corrections that cut the true error up to 7 times raised it up to 1.8 times, while on
-  /// the 3D hemisphere the corrections that raised it raised the error too. θ = 1.5 keeps most of
-  /// the safeguard's effect in 3D (43 relaxations against 38) and saves relaxations on the 2D hard
-  /// cases (κ = 100: 154 against 164; docs/method.md §4).
-  double safeguard_growth = defaults::safeguard_growth;
+  /// θ ≥ 1 of the safeguard; unset: defaults::safeguardGrowth(problem.dimension), 1.5 in 2D and 1
+  /// in 3D. The indicator is an imperfect judge of one correction: on the 801-node seed mesh
+  /// corrections that cut the true error up to 7 times raised it up to 1.8 times, and θ = 1.5 saves
+  /// relaxations on the 2D hard cases (κ = 100: 154 against 164), while on the 3D hemisphere the
+  /// corrections that raised it raised the error too and θ = 1.5 costs 3 to 12 relaxations
+  /// (docs/method.md §4, docs/three_d.md).
+  std::optional<double> safeguard_growth;
   int max_skip = 8;               ///< >= 1, longest run of skipped coarse steps
   /// With the safeguard, i_C follows its verdicts (additive increase, multiplicative decrease): a
   /// rejected correction halves the coarse iterations of the next coarse steps (at least 1), each

@@ -98,7 +98,8 @@ struct FasSpec {
   double pgd_gap_share = defaults::pgd_gap_share;  ///< latin-pgd, fas-apriori: γ in (0, 1)
   CoarseStart coarse_start = defaults::coarse_start;        ///< "zero" (docs/method.md §4 option a) or "mismatch" (b)
   bool adapt_coarse_iterations = true;  ///< i_C halved on a rejected correction, +1 on an accepted one
-  double safeguard_growth = defaults::safeguard_growth;  ///< θ >= 1 of the FAS safeguard
+  /// θ >= 1 of the FAS safeguard; unset: defaults::safeguardGrowth of the scene's dimension.
+  std::optional<double> safeguard_growth;
 };
 
 /// [solver]: choice and common options (each solver validates its own further options).

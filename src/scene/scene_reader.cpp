@@ -313,9 +313,10 @@ FasSpec readFas(const TableView& solver) {
   fas.pgd_gap_share = solver.optionalNumber("pgd_gap_share").value_or(fas.pgd_gap_share);
   requireRange(solver, "pgd_gap_share", fas.pgd_gap_share, fas.pgd_gap_share > 0.0 && fas.pgd_gap_share < 1.0,
                "must be in (0, 1)");
-  fas.safeguard_growth = solver.optionalNumber("safeguard_growth").value_or(fas.safeguard_growth);
-  requireRange(solver, "safeguard_growth", fas.safeguard_growth,
-               fas.safeguard_growth >= 1.0 && std::isfinite(fas.safeguard_growth), "must be >= 1");
+  fas.safeguard_growth = solver.optionalNumber("safeguard_growth");
+  if (fas.safeguard_growth)
+    requireRange(solver, "safeguard_growth", *fas.safeguard_growth,
+                 *fas.safeguard_growth >= 1.0 && std::isfinite(*fas.safeguard_growth), "must be >= 1");
   fas.adapt_coarse_iterations =
       solver.optionalBool("adapt_coarse_iterations").value_or(fas.adapt_coarse_iterations);
   if (solver.has("coarse_start"))

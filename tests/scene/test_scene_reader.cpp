@@ -357,7 +357,7 @@ TEST(SceneReader, FasKeysAreRead) {
   EXPECT_EQ(s.solver.fas.coarse_anderson, 0);
   EXPECT_EQ(s.solver.fas.safeguard_growth, 1.0);
   EXPECT_EQ(parseScene(kSeed, kSource).solver.fas.coarse_anderson, 2);        // the defaults
-  EXPECT_EQ(parseScene(kSeed, kSource).solver.fas.safeguard_growth, 1.5);
+  EXPECT_FALSE(parseScene(kSeed, kSource).solver.fas.safeguard_growth);  // the dimension's default
   EXPECT_TRUE(s.warnings.empty());
 }
 
