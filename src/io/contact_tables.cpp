@@ -4,8 +4,15 @@
 #include <limits>
 
 #include "src/contact/contact_state_table.hpp"
+#include "src/io/text_buffer.hpp"
 
 namespace stc {
+namespace {
+
+constexpr int kCsvDigits = 12;                ///< significant digits of the CSV tables
+constexpr std::size_t kFlushBytes = 1 << 20;  ///< contact.csv is written by pieces of about this size
+
+}  // namespace
 
 ReactionTable reactionTable(const Problem& problem, const SolveResult& result) {
   const auto& c = problem.contact;
@@ -44,7 +51,7 @@ ReactionTable reactionTable(const Problem& problem, const SolveResult& result) {
 
 void writeReactionsCsv(std::ostream& out, const Problem& problem, const SolveResult& result) {
   const ReactionTable table = reactionTable(problem, result);
-  out.precision(12);
+  out.precision(kCsvDigits);
   const bool three_d = problem.dimension == 3;
   out << "step,t,normal_force,tangential_force," << (three_d ? "tangential_force_2," : "")
       << "contact_xmin,contact_xmax,n_contact,n_slip\n";
@@ -63,26 +70,30 @@ void writeContactCsv(std::ostream& out, const Problem& problem, const SolveResul
   const int d = c.dimension;
   const Eigen::MatrixXd x = problem.nodePositions();
   const ContactStateTable states(problem.contact, result.admissible());
-  out.precision(12);
   // Columns for d = 2; in 3D the position gains z and each tangential quantity its τ_2 component.
   const bool three_d = d == 3;
   out << "step,node,x,y," << (three_d ? "z," : "") << "normal_force,tangential_force,"
       << (three_d ? "tangential_force_2," : "") << "pressure,shear," << (three_d ? "shear_2," : "") << "gap,slip,"
       << (three_d ? "slip_2," : "") << "state\n";
-  for (int k = 0; k < problem.numSteps(); ++k)
+  TextBuffer row;
+  const auto field = [&row](double value) { row.put(',').number(value, kCsvDigits); };
+  for (int k = 0; k < problem.numSteps(); ++k) {
     for (int i = 0; i < c.size(); ++i) {
       const int n = c.normalRow(i), node = c.nodes[i];
       const double ln = s.lambda(n, k);
-      out << k << ',' << node;
-      for (int a = 0; a < d; ++a) out << ',' << x(a, node);
-      out << ',' << ln;
-      for (int a = 1; a < d; ++a) out << ',' << s.lambda(n + a, k);
-      out << ',' << ln / c.tributary[i];
-      for (int a = 1; a < d; ++a) out << ',' << s.lambda(n + a, k) / c.tributary[i];
-      out << ',' << c.initial_gap[i] + s.v(n, k);
-      for (int a = 1; a < d; ++a) out << ',' << s.v(n + a, k) - (k > 0 ? s.v(n + a, k - 1) : 0.0);
-      out << ',' << toString(states.state(i, k)) << '\n';
+      row.integer(k).put(',').integer(node);
+      for (int a = 0; a < d; ++a) field(x(a, node));
+      field(ln);
+      for (int a = 1; a < d; ++a) field(s.lambda(n + a, k));
+      field(ln / c.tributary[i]);
+      for (int a = 1; a < d; ++a) field(s.lambda(n + a, k) / c.tributary[i]);
+      field(c.initial_gap[i] + s.v(n, k));
+      for (int a = 1; a < d; ++a) field(s.v(n + a, k) - (k > 0 ? s.v(n + a, k - 1) : 0.0));
+      row.put(',').text(toString(states.state(i, k))).put('\n');
     }
+    if (row.size() > kFlushBytes) row.flushTo(out);
+  }
+  row.flushTo(out);
 }
 
 }  // namespace stc

@@ -32,11 +32,10 @@ std::string frameName(int k) {
 
 // Nodal contact force (λ_n n + Σ_a λ_{t,a} τ_a) and state code (−1: not a contact node, 0 open,
 // 1 stick, 2 slip).
-void contactFields(const Problem& problem, const SolveResult& result, int k, Eigen::MatrixXd& force,
-                   Eigen::MatrixXd& state) {
+void contactFields(const Problem& problem, const SolveResult& result, const ContactStateTable& states, int k,
+                   Eigen::MatrixXd& force, Eigen::MatrixXd& state) {
   const auto& c = problem.contact;
   const int d = c.dimension;
-  const ContactStateTable states(problem.contact, result.admissible());
   force = Eigen::MatrixXd::Zero(d, problem.numNodes());
   state = Eigen::MatrixXd::Constant(1, problem.numNodes(), -1.0);
   for (int i = 0; i < c.size(); ++i) {
@@ -49,17 +48,19 @@ void contactFields(const Problem& problem, const SolveResult& result, int k, Eig
 
 // One VTU frame: displacement, contact force and state on the nodes; stress and von Mises on the
 // elements (σ_xx, σ_yy, σ_xy in 2D; the six components xx, yy, zz, yz, xz, xy in 3D).
-void writeFrame(std::ostream& out, const Problem& problem, const Eigen::VectorXd& u, const Eigen::MatrixXd& force,
-                const Eigen::MatrixXd& state) {
+void writeFrame(std::ostream& out, const Problem& problem, const VtuGrid& grid, const Eigen::VectorXd& u,
+                const Eigen::MatrixXd& force, const Eigen::MatrixXd& state) {
   const Eigen::MatrixXd displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), problem.dimension, problem.numNodes());
   const std::vector<PointField> nodal{{"displacement", displacement}, {"contact_force", force}, {"contact_state", state}};
-  if (problem.dimension == 3) {
-    const auto stress = elementStresses(problem.solid, problem.material, u);
-    writeVtu(out, problem.solid, nodal, {{"stress", stress.topRows(6)}, {"von_mises", stress.bottomRows(1)}});
-  } else {
-    const auto stress = elementStresses(problem.mesh, problem.material, problem.plane, u);
-    writeVtu(out, problem.mesh, nodal, {{"stress", stress.topRows(3)}, {"von_mises", stress.bottomRows(1)}});
-  }
+  const int d = problem.dimension;
+  const Eigen::MatrixXd stress = d == 3 ? Eigen::MatrixXd(elementStresses(problem.solid, problem.material, u))
+                                        : Eigen::MatrixXd(elementStresses(problem.mesh, problem.material, problem.plane, u));
+  const Eigen::Index components = d == 3 ? 6 : 3;
+  grid.write(out, nodal, {{"stress", stress.topRows(components)}, {"von_mises", stress.bottomRows(1)}});
+}
+
+VtuGrid gridOf(const Problem& problem) {
+  return problem.dimension == 3 ? VtuGrid(problem.solid) : VtuGrid(problem.mesh);
 }
 
 }  // namespace
@@ -103,17 +104,24 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
                          int stride) {
   ensureWritableDirectory(dir / "vtu");
   const SpdFactor factor(problem.stiffness_free, "K_ff");
-  std::vector<std::pair<double, std::string>> frames;
-  for (int k : frameSteps(problem.numSteps(), stride)) {
-    const Eigen::VectorXd rhs = problem.load(k) + problem.contact.B.transpose() * result.interface.lambda.col(k);
-    const Eigen::VectorXd u = problem.fullDisplacement(factor.solve(rhs), k);
+  const ContactStateTable states(problem.contact, result.admissible());
+  const VtuGrid grid = gridOf(problem);
+  const std::vector<int> steps = frameSteps(problem.numSteps(), stride);
+  // The frames are independent: each thread solves with its own workspace and writes its own files.
+  const int threads = threadCount();
+  std::vector<SpdFactor::Workspace> workspaces(static_cast<std::size_t>(threads));
+  parallelFor(static_cast<int>(steps.size()), threads, [&](int item, int thread) {
+    const int k = steps[static_cast<std::size_t>(item)];
+    const Eigen::MatrixXd rhs = problem.load(k) + problem.contact.B.transpose() * result.interface.lambda.col(k);
+    const Eigen::VectorXd u = problem.fullDisplacement(factor.solve(rhs, workspaces[static_cast<std::size_t>(thread)]), k);
     Eigen::MatrixXd force, state;
-    contactFields(problem, result, k, force, state);
+    contactFields(problem, result, states, k, force, state);
     AtomicFile file(dir / frameName(k));
-    writeFrame(file.stream(), problem, u, force, state);
+    writeFrame(file.stream(), problem, grid, u, force, state);
     file.commit();
-    frames.emplace_back(problem.times[k], frameName(k));
-  }
+  });
+  std::vector<std::pair<double, std::string>> frames;
+  for (int k : steps) frames.emplace_back(problem.times[k], frameName(k));
   writeFileAtomically(dir / "solution.pvd", pvdDocument(frames));
 }
 

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "src/io/text_buffer.hpp"
+
 namespace stc {
 namespace {
 
@@ -20,13 +22,6 @@ constexpr int kScalarsPerLine = 12;  ///< one-component arrays; larger tuples ta
 constexpr int kVtkTriangle = 5;
 constexpr int kVtkTetra = 10;
 constexpr const char* kDataIndent = "          ";  ///< the values, one level inside DataArray
-
-void putNumber(std::ostream& out, double value) {
-  char buffer[32];
-  const auto result =
-      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, kVtuDigits);
-  out.write(buffer, result.ptr - buffer);
-}
 
 /// `text` with the five XML special characters replaced by entities, for attribute values.
 std::string escapeXml(std::string_view text) {
@@ -73,50 +68,50 @@ void validateFields(const std::vector<Field>& fields, const char* kind, int colu
 
 /// A Float64 DataArray of `values` (rows = components, cols = tuples); rows beyond those of
 /// `values`, up to `components`, are written as 0.
-void writeFloatArray(std::ostream& out, const std::string& name,
-                     const Eigen::Ref<const Eigen::MatrixXd>& values, Eigen::Index components) {
-  out << "        <DataArray type=\"Float64\" Name=\"" << escapeXml(name)
-      << "\" NumberOfComponents=\"" << components << "\" format=\"ascii\">\n";
+void writeFloatArray(TextBuffer& out, const std::string& name, const Eigen::Ref<const Eigen::MatrixXd>& values,
+                     Eigen::Index components) {
+  out.text("        <DataArray type=\"Float64\" Name=\"").text(escapeXml(name)).text("\" NumberOfComponents=\"")
+      .integer(components).text("\" format=\"ascii\">\n");
   const Eigen::Index perLine = components == 1 ? kScalarsPerLine : 1;
   for (Eigen::Index j = 0; j < values.cols(); ++j) {
-    out << (j % perLine == 0 ? kDataIndent : " ");
+    out.text(j % perLine == 0 ? kDataIndent : " ");
     for (Eigen::Index i = 0; i < components; ++i) {
-      if (i > 0) out << ' ';
-      putNumber(out, i < values.rows() ? values(i, j) : 0.0);
+      if (i > 0) out.put(' ');
+      out.number(i < values.rows() ? values(i, j) : 0.0, kVtuDigits);
     }
-    if ((j + 1) % perLine == 0 || j + 1 == values.cols()) out << '\n';
+    if ((j + 1) % perLine == 0 || j + 1 == values.cols()) out.put('\n');
   }
-  out << "        </DataArray>\n";
+  out.text("        </DataArray>\n");
 }
 
 /// An integer DataArray of `count` values value(k), `perLine` to a line.
 template <typename ValueAt>
-void writeIntArray(std::ostream& out, const char* type, const char* name, Eigen::Index count,
-                   Eigen::Index perLine, ValueAt value) {
-  out << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\" format=\"ascii\">\n";
+void writeIntArray(TextBuffer& out, const char* type, const char* name, Eigen::Index count, Eigen::Index perLine,
+                   ValueAt value) {
+  out.text("        <DataArray type=\"").text(type).text("\" Name=\"").text(name).text("\" format=\"ascii\">\n");
   for (Eigen::Index k = 0; k < count; ++k) {
-    out << (k % perLine == 0 ? kDataIndent : " ") << value(k);
-    if ((k + 1) % perLine == 0 || k + 1 == count) out << '\n';
+    out.text(k % perLine == 0 ? kDataIndent : " ").integer(value(k));
+    if ((k + 1) % perLine == 0 || k + 1 == count) out.put('\n');
   }
-  out << "        </DataArray>\n";
+  out.text("        </DataArray>\n");
 }
 
 /// Opening tag of PointData/CellData; the first vector and scalar fields become the active ones.
 template <typename Field>
-void openData(std::ostream& out, const char* tag, const std::vector<Field>& fields) {
-  out << "      <" << tag;
+void openData(TextBuffer& out, const char* tag, const std::vector<Field>& fields) {
+  out.text("      <").text(tag);
   for (const Field& field : fields)
     if (field.values.rows() == 1) {
-      out << " Scalars=\"" << escapeXml(field.name) << '"';
+      out.text(" Scalars=\"").text(escapeXml(field.name)).put('"');
       break;
     }
   if (std::string_view(tag) == "PointData")
     for (const Field& field : fields)
       if (field.values.rows() >= 2) {
-        out << " Vectors=\"" << escapeXml(field.name) << '"';
+        out.text(" Vectors=\"").text(escapeXml(field.name)).put('"');
         break;
       }
-  out << ">\n";
+  out.text(">\n");
 }
 
 /// Components written for a point field: plane vectors get z = 0 (Warp By Vector needs 3).
@@ -124,58 +119,67 @@ Eigen::Index paddedComponents(Eigen::Index rows) { return rows == 2 ? 3 : rows; 
 
 /// Cells of one type, `cells` holding the node ids of each (one column per cell).
 template <typename Cells>
-void writeCells(std::ostream& out, const Cells& cells, int vtkType) {
+void writeCells(TextBuffer& out, const Cells& cells, int vtkType) {
   const Eigen::Index n = cells.cols(), k = cells.rows();
-  out << "      <Cells>\n";
-  writeIntArray(out, "Int64", "connectivity", k * n, k,
-                [&](Eigen::Index j) { return cells(j % k, j / k); });
-  writeIntArray(out, "Int64", "offsets", n, kScalarsPerLine,
-                [k](Eigen::Index e) { return k * (e + 1); });
-  writeIntArray(out, "UInt8", "types", n, kScalarsPerLine,
-                [vtkType](Eigen::Index) { return vtkType; });
-  out << "      </Cells>\n";
+  out.text("      <Cells>\n");
+  writeIntArray(out, "Int64", "connectivity", k * n, k, [&](Eigen::Index j) { return cells(j % k, j / k); });
+  writeIntArray(out, "Int64", "offsets", n, kScalarsPerLine, [k](Eigen::Index e) { return k * (e + 1); });
+  writeIntArray(out, "UInt8", "types", n, kScalarsPerLine, [vtkType](Eigen::Index) { return vtkType; });
+  out.text("      </Cells>\n");
 }
 
-/// The document for points (2 or 3 rows; z = 0 when 2) and cells of one VTK type.
+/// The <Points> and <Cells> elements for points (2 or 3 rows; z = 0 when 2) and cells of one VTK type.
 template <typename Points, typename Cells>
-void writeGrid(std::ostream& out, const Points& points, const Cells& cells, int vtkType,
-               const std::vector<PointField>& pointFields, const std::vector<CellField>& cellFields) {
-  const Eigen::Index numPoints = points.cols(), numCells = cells.cols();
-  validateFields(pointFields, "point", static_cast<int>(numPoints), "nodes", 3);
-  validateFields(cellFields, "cell", static_cast<int>(numCells), "elements",
-                 std::numeric_limits<int>::max());
-  out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "  <UnstructuredGrid>\n"
-      << "    <Piece NumberOfPoints=\"" << numPoints << "\" NumberOfCells=\""
-      << numCells << "\">\n";
-  openData(out, "PointData", pointFields);
-  for (const PointField& field : pointFields)
-    writeFloatArray(out, field.name, field.values, paddedComponents(field.values.rows()));
-  out << "      </PointData>\n";
-  openData(out, "CellData", cellFields);
-  for (const CellField& field : cellFields)
-    writeFloatArray(out, field.name, field.values, field.values.rows());
-  out << "      </CellData>\n";
-  out << "      <Points>\n";
+std::string geometryText(const Points& points, const Cells& cells, int vtkType) {
+  TextBuffer out;
+  out.text("      <Points>\n");
   writeFloatArray(out, "Points", points, 3);
-  out << "      </Points>\n";
+  out.text("      </Points>\n");
   writeCells(out, cells, vtkType);
-  out << "    </Piece>\n"
-      << "  </UnstructuredGrid>\n"
-      << "</VTKFile>\n";
+  return out.str();
 }
 
 }  // namespace
 
+VtuGrid::VtuGrid(const Mesh& mesh)
+    : points_(mesh.nodes.cols()),
+      cells_(mesh.triangles.cols()),
+      geometry_(geometryText(mesh.nodes, mesh.triangles, kVtkTriangle)) {}
+
+VtuGrid::VtuGrid(const TetMesh& mesh)
+    : points_(mesh.nodes.cols()), cells_(mesh.tets.cols()), geometry_(geometryText(mesh.nodes, mesh.tets, kVtkTetra)) {}
+
+void VtuGrid::write(std::ostream& out, const std::vector<PointField>& pointFields,
+                    const std::vector<CellField>& cellFields) const {
+  validateFields(pointFields, "point", static_cast<int>(points_), "nodes", 3);
+  validateFields(cellFields, "cell", static_cast<int>(cells_), "elements", std::numeric_limits<int>::max());
+  TextBuffer text;
+  text.text("<?xml version=\"1.0\"?>\n"
+            "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            "  <UnstructuredGrid>\n"
+            "    <Piece NumberOfPoints=\"")
+      .integer(points_)
+      .text("\" NumberOfCells=\"")
+      .integer(cells_)
+      .text("\">\n");
+  openData(text, "PointData", pointFields);
+  for (const PointField& field : pointFields)
+    writeFloatArray(text, field.name, field.values, paddedComponents(field.values.rows()));
+  text.text("      </PointData>\n");
+  openData(text, "CellData", cellFields);
+  for (const CellField& field : cellFields) writeFloatArray(text, field.name, field.values, field.values.rows());
+  text.text("      </CellData>\n").text(geometry_).text("    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
+  text.flushTo(out);
+}
+
 void writeVtu(std::ostream& out, const Mesh& mesh, const std::vector<PointField>& pointFields,
               const std::vector<CellField>& cellFields) {
-  writeGrid(out, mesh.nodes, mesh.triangles, kVtkTriangle, pointFields, cellFields);
+  VtuGrid(mesh).write(out, pointFields, cellFields);
 }
 
 void writeVtu(std::ostream& out, const TetMesh& mesh, const std::vector<PointField>& pointFields,
               const std::vector<CellField>& cellFields) {
-  writeGrid(out, mesh.nodes, mesh.tets, kVtkTetra, pointFields, cellFields);
+  VtuGrid(mesh).write(out, pointFields, cellFields);
 }
 
 std::string vtuDocument(const Mesh& mesh, const std::vector<PointField>& pointFields,

@@ -45,6 +45,21 @@ void writeVtu(std::ostream& out, const TetMesh& mesh, const std::vector<PointFie
 std::string vtuDocument(const TetMesh& mesh, const std::vector<PointField>& pointFields,
                         const std::vector<CellField>& cellFields);
 
+/// The document of a series of frames on one mesh: the points and cells, the same in every frame,
+/// are formatted once, at construction; write() adds the fields (the checks and the output are those
+/// of writeVtu).
+class VtuGrid {
+ public:
+  explicit VtuGrid(const Mesh& mesh);
+  explicit VtuGrid(const TetMesh& mesh);
+  void write(std::ostream& out, const std::vector<PointField>& pointFields,
+             const std::vector<CellField>& cellFields) const;
+
+ private:
+  Eigen::Index points_, cells_;
+  std::string geometry_;  ///< <Points> … </Cells>
+};
+
 /// A ParaView collection listing `frames` (time, file name relative to the .pvd) in the given
 /// order. Throws std::invalid_argument for an empty file name or a non-finite time.
 std::string pvdDocument(const std::vector<std::pair<double, std::string>>& frames);

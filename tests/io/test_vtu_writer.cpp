@@ -312,4 +312,23 @@ TEST(VtuTetDocument, RejectsAFieldWithTheWrongNumberOfColumnsNamingIt) {
   EXPECT_THROW(vtuDocument(twoTets(), {}, {{"stress", Eigen::MatrixXd::Zero(6, 3)}}), std::invalid_argument);
 }
 
+// A series writes every frame through one VtuGrid (the points and cells formatted once): each frame
+// is the document writeVtu gives for its fields, and the checks still refuse a field of the wrong size.
+TEST(VtuGrid, FramesAreTheDocumentsOfWriteVtu) {
+  const Mesh mesh = unitSquare();
+  const VtuGrid grid(mesh);
+  for (double scale : {1.0, -2.5e-7}) {
+    const Eigen::MatrixXd displacement = scale * Eigen::MatrixXd::Random(2, 4);
+    const Eigen::MatrixXd stress = scale * Eigen::MatrixXd::Random(3, 2);
+    std::ostringstream frame;
+    grid.write(frame, {{"displacement", displacement}}, {{"stress", stress}});
+    EXPECT_EQ(frame.str(), vtuDocument(mesh, {{"displacement", displacement}}, {{"stress", stress}}));
+  }
+  std::ostringstream ignored;
+  const std::string message =
+      invalidArgumentOf([&] { grid.write(ignored, {{"gap", Eigen::RowVector3d(0, 1, 2)}}, {}); });
+  EXPECT_NE(message.find("3 columns, the mesh has 4 nodes"), std::string::npos) << message;
+  EXPECT_TRUE(ignored.str().empty());
+}
+
 }  // namespace stc

@@ -1,0 +1,41 @@
+// The run outputs (src/io/run_writer.hpp) of one solution do not depend on the thread count: the VTU
+// frames are written in parallel, each thread with its own solve workspace and files.
+#include "src/io/run_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "scratch_dir.hpp"
+#include "solver/seed_scene.hpp"
+#include "src/core/threads.hpp"
+#include "src/solver/incremental_solver.hpp"
+
+namespace {
+
+using stc::iotest::ScratchDir;
+namespace fs = std::filesystem;
+
+TEST(RunWriter, FilesAreTheSameOnOneAndTwoThreads) {
+  const stc::Scene scene = stc::test::seedScene(21, 11);
+  const stc::Problem problem = stc::buildProblem(scene);
+  const stc::SolveResult result = stc::solveIncremental(problem);
+  const ScratchDir scratch;
+  stc::OutputSpec output;
+  output.vtu_stride = 3;  // frames 0, 3, 6, 9 and the last, 10
+  for (int threads : {1, 2}) {
+    const stc::ThreadCountScope scope(threads);
+    stc::writeRunOutputs(scratch.path() / std::to_string(threads), problem, result, {}, output);
+  }
+  const fs::path one = scratch.path() / "1", two = scratch.path() / "2";
+  int frames = 0;
+  for (const auto& entry : fs::directory_iterator(one / "vtu")) {
+    ++frames;
+    EXPECT_EQ(stc::iotest::readFile(entry.path()), stc::iotest::readFile(two / "vtu" / entry.path().filename()))
+        << entry.path().filename();
+  }
+  EXPECT_EQ(frames, 5);
+  for (const char* name : {"solution.pvd", "contact.csv", "reactions.csv"})
+    EXPECT_EQ(stc::iotest::readFile(one / name), stc::iotest::readFile(two / name)) << name;
+  EXPECT_NE(stc::iotest::readFile(one / "vtu" / "step_00000.vtu"), stc::iotest::readFile(one / "vtu" / "step_00010.vtu"));
+}
+
+}  // namespace
