@@ -52,11 +52,13 @@ void writeFrame(std::ostream& out, const Problem& problem, const VtuGrid& grid, 
                 const Eigen::MatrixXd& force, const Eigen::MatrixXd& state) {
   const Eigen::MatrixXd displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), problem.dimension, problem.numNodes());
   const std::vector<PointField> nodal{{"displacement", displacement}, {"contact_force", force}, {"contact_state", state}};
-  const int d = problem.dimension;
-  const Eigen::MatrixXd stress = d == 3 ? Eigen::MatrixXd(elementStresses(problem.solid, problem.material, u))
-                                        : Eigen::MatrixXd(elementStresses(problem.mesh, problem.material, problem.plane, u));
-  const Eigen::Index components = d == 3 ? 6 : 3;
-  grid.write(out, nodal, {{"stress", stress.topRows(components)}, {"von_mises", stress.bottomRows(1)}});
+  if (problem.dimension == 3) {
+    const auto stress = elementStresses(problem.solid, problem.material, u);
+    grid.write(out, nodal, {{"stress", stress.topRows(6)}, {"von_mises", stress.bottomRows(1)}});
+  } else {
+    const auto stress = elementStresses(problem.mesh, problem.material, problem.plane, u);
+    grid.write(out, nodal, {{"stress", stress.topRows(3)}, {"von_mises", stress.bottomRows(1)}});
+  }
 }
 
 VtuGrid gridOf(const Problem& problem) {
