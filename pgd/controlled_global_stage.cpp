@@ -52,9 +52,9 @@ int ControlledGlobalStage::seed(const Eigen::MatrixXd& directions) {
   return basis_.append(directions);
 }
 
-void ControlledGlobalStage::enrich(Eigen::MatrixXd& r_scaled, double target) {
+double ControlledGlobalStage::enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scaled, double error, double target) {
   const Eigen::VectorXd& sqrt_k = basis_.sqrtK();
-  while (error_ > target && basis_.size() < basis_.maxSize()) {
+  while (error > target && basis_.size() < basis_.maxSize()) {
     const int room = std::min(options_.block, basis_.maxSize() - basis_.size());
     const Eigen::MatrixXd found = leadingDirections(r_scaled, target, room, options_, passes_++);
     const int before = basis_.size();
@@ -63,29 +63,44 @@ void ControlledGlobalStage::enrich(Eigen::MatrixXd& r_scaled, double target) {
     const int added = basis_.size() - before;
     const auto scaled_new = basis_.scaledDirections().rightCols(added);
     const Eigen::MatrixXd c_new = scaled_new.transpose() * r_scaled;
-    c_.conservativeResize(basis_.size(), Eigen::NoChange);
-    c_.bottomRows(added) = c_new;
+    c.conservativeResize(basis_.size(), Eigen::NoChange);
+    c.bottomRows(added) = c_new;
     r_scaled.noalias() -= scaled_new * c_new;
-    error_ = r_scaled.norm();
+    error = r_scaled.norm();
   }
+  return error;
 }
 
-void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s) {
+Eigen::MatrixXd ControlledGlobalStage::scaledRightHandSides(const InterfaceHistory& hat) const {
   const Eigen::VectorXd& k = problem_.contact.search_direction;
-  const Eigen::VectorXd& inv_sqrt_k = basis_.invSqrtK();
-  // Scaled right-hand sides w̃ = k^{-1/2} (λ̂ + k v̂) and their projection on the directions.
-  const Eigen::MatrixXd w_scaled = inv_sqrt_k.asDiagonal() * (hat.lambda + k.asDiagonal() * hat.v);
+  return basis_.invSqrtK().asDiagonal() * (hat.lambda + k.asDiagonal() * hat.v);
+}
+
+double ControlledGlobalStage::project(const Eigen::MatrixXd& w_scaled, Eigen::MatrixXd& c, Eigen::MatrixXd& r_scaled) {
   const Eigen::MatrixXd& scaled = basis_.scaledDirections();
-  c_.noalias() = scaled.transpose() * w_scaled;
-  Eigen::MatrixXd r_scaled = w_scaled;
-  r_scaled.noalias() -= scaled * c_;
-  error_ = r_scaled.norm();
+  c.noalias() = scaled.transpose() * w_scaled;
+  r_scaled = w_scaled;
+  r_scaled.noalias() -= scaled * c;
   // Before any gap is known (the first solve, or a warm start) the bound is a share of w itself; it
   // is never below the floor, if one is set (ControlledStageOptions::floor_share).
   const double scale = w_scaled.norm();
   const double target = std::max(target_ >= 0.0 ? target_ : options_.gap_share * scale,
                                  options_.gap_share * options_.floor_share * options_.tolerance * scale);
-  enrich(r_scaled, target);
+  return enrich(c, r_scaled, r_scaled.norm(), target);
+}
+
+Eigen::MatrixXd ControlledGlobalStage::anticipate(const InterfaceHistory& hat) {
+  Eigen::MatrixXd c, r_scaled;
+  project(scaledRightHandSides(hat), c, r_scaled);
+  return c;
+}
+
+void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s) {
+  const Eigen::VectorXd& k = problem_.contact.search_direction;
+  // Scaled right-hand sides w̃ = k^{-1/2} (λ̂ + k v̂) and their projection on the directions.
+  const Eigen::MatrixXd w_scaled = scaledRightHandSides(hat);
+  Eigen::MatrixXd r_scaled;
+  error_ = project(w_scaled, c_, r_scaled);
   s.v = basis_.freeResponse();
   s.v.noalias() += basis_.traces() * c_;
   // λ = Z c − k v with Z c = k^{1/2} (w̃ − r̃).

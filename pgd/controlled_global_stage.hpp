@@ -60,10 +60,21 @@ class ControlledGlobalStage : public latin::LinearStage {
   const Eigen::MatrixXd& coordinates() const { return c_; }
   /// ‖r‖_{k⁻¹} of the last solve, and the bound it was held to.
   double projectionError() const { return error_; }
+  /// The coordinates c (p × m) that a solve from `hat` would have, the directions enriched as that
+  /// solve would enrich them (the same bound): the projection of the next right-hand side, without
+  /// forming s (two products with the directions where a solve has three; fas/apriori_basis.hpp
+  /// builds the coarse space from it). The last solve's coordinates() are kept; the directions
+  /// added stay.
+  Eigen::MatrixXd anticipate(const InterfaceHistory& hat);
 
  private:
-  /// Adds directions from the scaled residual r̃ = k^{-1/2} r until ‖r̃‖ ≤ target; updates c and r̃.
-  void enrich(Eigen::MatrixXd& r_scaled, double target);
+  /// w̃ = k^{-1/2} (λ̂ + k v̂), the scaled right-hand sides of a solve from `hat`.
+  Eigen::MatrixXd scaledRightHandSides(const InterfaceHistory& hat) const;
+  /// c = Z̃ᵀ w̃ and r̃ = w̃ − Z̃ c, enriched until ‖r̃‖ is at most the current bound. Returns ‖r̃‖.
+  double project(const Eigen::MatrixXd& w_scaled, Eigen::MatrixXd& c, Eigen::MatrixXd& r_scaled);
+  /// Adds directions from the scaled residual r̃ = k^{-1/2} r while its norm `error` exceeds
+  /// `target`; updates c and r̃, returns the final ‖r̃‖.
+  double enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scaled, double error, double target);
 
   const Problem& problem_;
   ControlledStageOptions options_;

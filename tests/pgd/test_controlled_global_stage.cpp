@@ -96,3 +96,27 @@ TEST(ControlledGlobalStage, IsTheExactStageWhenTheDirectionsSpanTheRightHandSide
   EXPECT_LE(distance(f.problem, s, s_exact), 1e-9 * distance(f.problem, s_exact, stc::InterfaceHistory::zeros(f.problem.contact, 41)));
   EXPECT_LE(stage.rank(), 2 * f.problem.contact.size());
 }
+
+TEST(ControlledGlobalStage, AnticipatesTheCoordinatesOfItsNextSolve) {
+  // anticipate(ŝ) enriches as solve(ŝ) would and returns that solve's coordinates, leaving the last
+  // solve's iterate alone; the solve that follows then needs no new direction.
+  const auto& f = fixture();
+  stc::pgd::ControlledGlobalStage stage(f.problem, {});
+  stc::InterfaceHistory s, first = stc::InterfaceHistory::zeros(f.problem.contact, f.problem.numSteps());
+  first.lambda = 0.3 * f.reference.interface.lambda;  // a first right-hand side, far from the next
+  stage.solve(first, s);
+  stage.observeGap(1e-2 * distance(f.problem, s, first));
+  const Eigen::MatrixXd c_first = stage.coordinates();
+  const int rank_first = stage.rank();
+  const stc::InterfaceHistory hat = f.hat();
+  const Eigen::MatrixXd anticipated = stage.anticipate(hat);
+  ASSERT_GT(stage.rank(), rank_first);  // the next right-hand side needed new directions
+  EXPECT_EQ(stage.coordinates(), c_first);
+  EXPECT_EQ(anticipated.rows(), stage.rank());
+  const int rank_anticipated = stage.rank();
+  stage.solve(hat, s);
+  EXPECT_EQ(stage.rank(), rank_anticipated);
+  // The solve projects w on all directions at once, the anticipation on the old ones and then the
+  // new ones on what the old left (k⁻¹-orthogonal to the old: equal up to round-off).
+  EXPECT_LE((stage.coordinates() - anticipated).norm(), 1e-10 * anticipated.norm());
+}
