@@ -272,7 +272,7 @@ Cost measureCost(const Study& st, stc::latin::GlobalStage& global, int repeats) 
     if (!c.rows.empty() && c.rows.back().svd == m) break;  // small scenes: fewer modes than asked
     providers.push_back(
         std::make_unique<stc::fas::FixedBasisProvider>(st.modes.leftCols(m), 15, global, contact.B));
-    spaces.push_back(providers.back()->coarseSpace(s));
+    spaces.push_back(providers.back()->coarseSpace(hat));
     c.rows.push_back({m, spaces.back().rank()});
   }
   const stc::fas::FasOptions o;  // i_C = 15, start (a)
@@ -291,7 +291,7 @@ Cost measureCost(const Study& st, stc::latin::GlobalStage& global, int repeats) 
       (void)e;
     }));
     for (std::size_t j = 0; j < c.rows.size(); ++j) {
-      renew[j].push_back(seconds([&] { spaces[j] = providers[j]->coarseSpace(s); }));
+      renew[j].push_back(seconds([&] { spaces[j] = providers[j]->coarseSpace(hat); }));
       hat2 = hat;  // coarseStep overwrites its local-stage iterate: start each repeat from the same one
       coarse[j].push_back(seconds([&] { stc::fas::coarseStep(contact, spaces[j], o, s, hat2); }));
       rr[j].push_back(renew[j].back() / relax.back());

@@ -14,15 +14,17 @@ void AprioriBasisOptions::validate() const {
                 "must be >= 1 (an empty coarse space)");
 }
 
-AprioriBasisProvider::AprioriBasisProvider(const pgd::ControlledGlobalStage& stage, AprioriBasisOptions options)
+AprioriBasisProvider::AprioriBasisProvider(pgd::ControlledGlobalStage& stage, AprioriBasisOptions options)
     : stage_(stage), options_(options) {
   options_.validate();
 }
 
-CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& /*s*/) {
+CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& hat) {
+  // The coordinates of ũ (anticipation first: it may add directions to the basis and its factor).
+  const Eigen::MatrixXd anticipated = options_.anticipate ? stage_.anticipate(hat) : Eigen::MatrixXd();
+  const Eigen::MatrixXd& c = options_.anticipate ? anticipated : stage_.coordinates();
   const pgd::ResponseBasis& basis = stage_.basis();
   const pgd::EnergyFactor& factor = basis.energyFactor();
-  const Eigen::MatrixXd& c = stage_.coordinates();
   // In whitened coordinates the A-product is the Euclidean one: modes are unit vectors there.
   const Eigen::Index q = basis.loadHistories().rows();
   if (factor.rank() <= options_.modes + options_.increment_modes) {

@@ -10,6 +10,10 @@
 //     A-orthogonal to the former (the directions the iteration is still moving in: the seed's
 //     residual vectors, §4.3, taken from the iterates' history instead of the iterate itself),
 // as a coarse space known by its traces B Y alone: no n_free × m array, no product with A.
+// With `anticipate` (the default) ũ is the displacement history the next global stage would give:
+// the projection of its right-hand side λ̂ + k v̂ on the directions, enriched as that stage would
+// enrich it (ControlledGlobalStage::anticipate), so the directions the next relaxation needs are in
+// the coarse step already (docs/method.md §5, "The anticipated expansion").
 #include <Eigen/Core>
 
 #include "fas/basis_provider.hpp"
@@ -21,17 +25,20 @@ namespace stc::fas {
 struct AprioriBasisOptions {
   int modes = defaults::pgd_max_modes;              ///< leading energy-SVD modes of ũ in the coarse space
   int increment_modes = defaults::pgd_increment_modes;  ///< leading modes of ũ's change since the last coarse step
+  /// ũ anticipated from the next global stage's right-hand side (true) or the last global stage's.
+  bool anticipate = defaults::pgd_anticipate;
 
   void validate() const;     ///< throws InputError naming the field
 };
 
 class AprioriBasisProvider : public BasisProvider {
  public:
-  AprioriBasisProvider(const pgd::ControlledGlobalStage& stage, AprioriBasisOptions options);
-  CoarseSpace coarseSpace(const InterfaceHistory& s) override;
+  /// With options.anticipate the provider enriches `stage`'s directions (coarseSpace).
+  AprioriBasisProvider(pgd::ControlledGlobalStage& stage, AprioriBasisOptions options);
+  CoarseSpace coarseSpace(const InterfaceHistory& hat) override;
 
  private:
-  const pgd::ControlledGlobalStage& stage_;
+  pgd::ControlledGlobalStage& stage_;
   AprioriBasisOptions options_;
   Eigen::MatrixXd previous_;  ///< coordinates c of ũ at the previous coarse step
 };

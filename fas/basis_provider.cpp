@@ -8,7 +8,7 @@ FixedBasisProvider::FixedBasisProvider(const Eigen::MatrixXd& vectors, int resid
                                        const latin::GlobalStage& global, const Eigen::SparseMatrix<double>& B)
     : fixed_(vectors, global.matrix(), B), residual_vectors_(residual_vectors), global_(global), B_(B) {}
 
-CoarseSpace FixedBasisProvider::coarseSpace(const InterfaceHistory& /*s*/) {
+CoarseSpace FixedBasisProvider::coarseSpace(const InterfaceHistory& /*hat*/) {
   const Eigen::SparseMatrix<double>& A = global_.matrix();
   const Eigen::MatrixXd res = residualVectors(global_.displacements(), fixed_.basis(), A, residual_vectors_);
   if (res.cols() == 0) return fixed_;

@@ -14,10 +14,11 @@ namespace stc::fas {
 class BasisProvider {
  public:
   virtual ~BasisProvider() = default;
-  /// The coarse space for the coming coarse step, given the interface history s = (v, λ) of the
-  /// last global stage (the provider reads the displacement history, when it needs one, from the
-  /// global stage it was built on).
-  virtual CoarseSpace coarseSpace(const InterfaceHistory& s) = 0;
+  /// The coarse space for the coming coarse step, given the local-stage iterate ŝ = `hat` of the
+  /// fine level, from which its next global stage starts (the a priori provider projects that
+  /// stage's right-hand side; a provider reads the displacement history of the last global stage,
+  /// when it needs one, from the global stage it was built on).
+  virtual CoarseSpace coarseSpace(const InterfaceHistory& hat) = 0;
 };
 
 /// Fixed vectors (e.g. SVD modes restricted to the free dofs) + N_res residual vectors of the
@@ -26,7 +27,7 @@ class FixedBasisProvider : public BasisProvider {
  public:
   FixedBasisProvider(const Eigen::MatrixXd& vectors, int residual_vectors, const latin::GlobalStage& global,
                      const Eigen::SparseMatrix<double>& B);
-  CoarseSpace coarseSpace(const InterfaceHistory& s) override;
+  CoarseSpace coarseSpace(const InterfaceHistory& hat) override;
   const CoarseSpace& fixedSpace() const { return fixed_; }
 
  private:

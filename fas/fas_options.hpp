@@ -29,12 +29,14 @@ struct FasOptions {
   /// it a poor coarse space (e.g. 10 modes + 5 residual vectors on the seed scene) can lock FAS in
   /// a 2-cycle at true error 0.1-0.2 (docs/compare_bases.md). Off: the seed's plain cycle.
   bool safeguard = true;
-  /// θ ≥ 1 of the safeguard; unset: defaults::safeguardGrowth(problem.dimension), 1.5 in 2D and 1
-  /// in 3D. The indicator is an imperfect judge of one correction: on the 801-node seed mesh
-  /// corrections that cut the true error up to 7 times raised it up to 1.8 times, and θ = 1.5 saves
-  /// relaxations on the 2D hard cases (κ = 100: 154 against 164), while on the 3D hemisphere the
-  /// corrections that raised it raised the error too and θ = 1.5 costs 3 to 12 relaxations
-  /// (docs/method.md §4, docs/three_d.md).
+  /// θ ≥ 1 of the safeguard; unset: defaults::safeguardGrowth(problem.dimension), 5 in 2D and 1 in
+  /// 3D. The indicator is an imperfect judge of one correction: on the 2D hard case ν = 0.49,
+  /// corrections from the anticipated expansion that raised it 3 to 15 times cut the true error by
+  /// half; of θ = 1.5, 3, 5, θ = 5 needs the fewest relaxations on every 2D hard case (κ = 0.01: 1734,
+  /// the cap of 2000, 1208; ν = 0.49 to true error 1e-6: 68, 34, 34), while on the 3D
+  /// hemisphere the corrections that raised it raised the error too (θ = 1.5 costs 3 to 12
+  /// relaxations there). A kept correction that raised it must pay back within its cycle, or the
+  /// next one is judged with θ = 1 (fas_solver.cpp; docs/method.md §4, docs/three_d.md).
   std::optional<double> safeguard_growth;
   int max_skip = 8;               ///< >= 1, longest run of skipped coarse steps
   /// With the safeguard, i_C follows its verdicts (additive increase, multiplicative decrease): a

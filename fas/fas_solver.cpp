@@ -51,8 +51,12 @@ class FineLevel {
 };
 
 // FasOptions::safeguard: the first relaxation after a coarse step judges it. A correction that
-// raised the indicator more than safeguard_growth times is undone (the pre-coarse local stage comes back; the relaxation spent on
-// the test stays counted) and the coarse step is skipped for a while, doubling while it fails.
+// raised the indicator more than θ = safeguard_growth times is undone (the pre-coarse local stage
+// comes back; the relaxation spent on the test stays counted) and the coarse step is skipped for a
+// while, doubling while it fails. A correction kept although it raised the indicator must pay back
+// within its cycle: if the indicator before the next coarse step is not 1 % below the one before
+// it, that next step is judged with θ = 1 (the 2-cycle of a poor coarse space, coarse step up and
+// relaxation down, is broken so; docs/method.md §4).
 // FasOptions::adapt_coarse_iterations: the verdicts also set i_C, halved on a rejection, one more
 // on an acceptance, within [1, coarse_iterations].
 class CoarseGuard {
@@ -75,6 +79,8 @@ class CoarseGuard {
   }
   void arm(const FineLevel& fine) {
     if (!enabled_) return;
+    strict_ = watching_ && fine.eta > kNetProgress * eta_watched_;  // the last raise did not pay back
+    watching_ = false;
     saved_ = fine.hat;
     eta_before_ = fine.eta;
     pending_ = true;
@@ -82,7 +88,11 @@ class CoarseGuard {
   void judge(FineLevel& fine) {
     if (!pending_) return;
     pending_ = false;
-    if (fine.eta <= growth_ * eta_before_) {
+    if (fine.eta <= (strict_ ? 1.0 : growth_) * eta_before_) {
+      if (fine.eta > eta_before_) {
+        watching_ = true;
+        eta_watched_ = eta_before_;
+      }
       backoff_ = 1;
       if (adapt_) iterations_ = std::min(iterations_ + 1, max_iterations_);
       return;
@@ -104,6 +114,10 @@ class CoarseGuard {
   double eta_before_ = 0.0;
   int skip_ = 0, backoff_ = 1;
   double growth_;
+  static constexpr double kNetProgress = 0.99;  ///< a cycle pays back when η falls by 1 %
+  bool watching_ = false;     ///< the last judged correction was kept with a raised η
+  double eta_watched_ = 0.0;  ///< η before that correction
+  bool strict_ = false;       ///< this coarse step is judged with θ = 1
 };
 
 }  // namespace
@@ -140,7 +154,7 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
     for (int j = 0; j < options.pre_relaxations && !stop; ++j) stop = relax();
     if (stop) break;
     if (!guard.skipThisCycle()) {
-      const CoarseSpace space = provider.coarseSpace(fine.s);
+      const CoarseSpace space = provider.coarseSpace(fine.hat);
       rank = space.rank();
       if (rank > 0) {
         guard.arm(fine);

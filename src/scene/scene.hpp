@@ -95,6 +95,8 @@ struct FasSpec {
   int pgd_max_modes = defaults::pgd_max_modes;
   /// fas-apriori: leading modes of the expansion's change since the previous coarse step (>= 0).
   int pgd_increment_modes = defaults::pgd_increment_modes;
+  /// fas-apriori: coarse space from the next global stage's projected right-hand side.
+  bool pgd_anticipate = defaults::pgd_anticipate;
   double pgd_gap_share = defaults::pgd_gap_share;  ///< latin-pgd, fas-apriori: γ in (0, 1)
   CoarseStart coarse_start = defaults::coarse_start;        ///< "zero" (docs/method.md §4 option a) or "mismatch" (b)
   bool adapt_coarse_iterations = true;  ///< i_C halved on a rejected correction, +1 on an accepted one

@@ -310,6 +310,7 @@ FasSpec readFas(const TableView& solver) {
   readCount(solver, "svd_modes", 0, fas.svd_modes);
   readCount(solver, "pgd_max_modes", 0, fas.pgd_max_modes);
   readCount(solver, "pgd_increment_modes", 0, fas.pgd_increment_modes);
+  fas.pgd_anticipate = solver.optionalBool("pgd_anticipate").value_or(fas.pgd_anticipate);
   fas.pgd_gap_share = solver.optionalNumber("pgd_gap_share").value_or(fas.pgd_gap_share);
   requireRange(solver, "pgd_gap_share", fas.pgd_gap_share, fas.pgd_gap_share > 0.0 && fas.pgd_gap_share < 1.0,
                "must be in (0, 1)");
@@ -331,7 +332,7 @@ SolverSpec readSolver(const TableView& root, std::vector<std::string>& warnings)
   const auto solver = root.optionalTable(
       "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
                  "post_relaxations", "coarse_iterations", "coarse_anderson", "adapt_coarse_iterations", "safeguard_growth", "residual_vectors",
-                 "svd_modes", "coarse_start", "pgd_max_modes", "pgd_increment_modes", "pgd_gap_share",
+                 "svd_modes", "coarse_start", "pgd_max_modes", "pgd_increment_modes", "pgd_anticipate", "pgd_gap_share",
                  "pgd_modes_per_cycle", "pgd_seed_share"});
   if (!solver) return spec;
   if (solver->has("name")) {

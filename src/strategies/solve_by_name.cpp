@@ -31,6 +31,7 @@ fas::AprioriBasisOptions aprioriOptions(const SolverSpec& spec) {
   fas::AprioriBasisOptions basis;
   basis.modes = spec.fas.pgd_max_modes;
   basis.increment_modes = spec.fas.pgd_increment_modes;
+  basis.anticipate = spec.fas.pgd_anticipate;
   return basis;
 }
 
