@@ -36,6 +36,7 @@ class AprioriBasisProvider : public BasisProvider {
   /// With options.anticipate the provider enriches `stage`'s directions (coarseSpace).
   AprioriBasisProvider(pgd::ControlledGlobalStage& stage, AprioriBasisOptions options);
   CoarseSpace coarseSpace(const InterfaceHistory& hat) override;
+  bool anticipates() const override { return options_.anticipate; }
 
  private:
   pgd::ControlledGlobalStage& stage_;

@@ -19,6 +19,9 @@ class BasisProvider {
   /// stage's right-hand side; a provider reads the displacement history of the last global stage,
   /// when it needs one, from the global stage it was built on).
   virtual CoarseSpace coarseSpace(const InterfaceHistory& hat) = 0;
+  /// True when the coarse space comes from the anticipated expansion (fas/apriori_basis.hpp): its
+  /// corrections are judged with defaults::safeguardGrowth(dimension, true) unless θ is set.
+  virtual bool anticipates() const { return false; }
 };
 
 /// Fixed vectors (e.g. SVD modes restricted to the free dofs) + N_res residual vectors of the

@@ -29,13 +29,16 @@ struct FasOptions {
   /// it a poor coarse space (e.g. 10 modes + 5 residual vectors on the seed scene) can lock FAS in
   /// a 2-cycle at true error 0.1-0.2 (docs/compare_bases.md). Off: the seed's plain cycle.
   bool safeguard = true;
-  /// θ ≥ 1 of the safeguard; unset: defaults::safeguardGrowth(problem.dimension), 5 in 2D and 1 in
-  /// 3D. The indicator is an imperfect judge of one correction: on the 2D hard case ν = 0.49,
+  /// θ ≥ 1 of the safeguard; unset: defaults::safeguardGrowth(problem.dimension, the provider
+  /// anticipates): in 2D 1.5, or 5 for fas-apriori's anticipated expansion; 1 in 3D. The indicator
+  /// is an imperfect judge of one correction: on the 801-node seed mesh corrections that cut the
+  /// true error up to 7 times raised it up to 1.8 times; on the 2D hard case ν = 0.49,
   /// corrections from the anticipated expansion that raised it 3 to 15 times cut the true error by
-  /// half; of θ = 1.5, 3, 5, θ = 5 needs the fewest relaxations on every 2D hard case (κ = 0.01: 1734,
-  /// the cap of 2000, 1208; ν = 0.49 to true error 1e-6: 68, 34, 34), while on the 3D
-  /// hemisphere the corrections that raised it raised the error too (θ = 1.5 costs 3 to 12
-  /// relaxations there). A kept correction that raised it must pay back within its cycle, or the
+  /// half; of θ = 1.5, 3, 5, θ = 5 needs the fewest relaxations on every 2D hard case with
+  /// fas-apriori (κ = 0.01: 1734, the cap of 2000, 1208; ν = 0.49 to true error 1e-6: 68, 34, 34),
+  /// while it costs fas-aposteriori relaxations (friction 2: 63 at θ = 1.5, 132 and 314 at θ = 5 on
+  /// two machines); on the 3D hemisphere the corrections that raised it raised the error too
+  /// (θ = 1.5 costs 3 to 12 relaxations there). A kept correction that raised it must pay back within its cycle, or the
   /// next one is judged with θ = 1 (fas_solver.cpp; docs/method.md §4, docs/three_d.md).
   std::optional<double> safeguard_growth;
   int max_skip = 8;               ///< >= 1, longest run of skipped coarse steps

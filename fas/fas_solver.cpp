@@ -61,13 +61,13 @@ class FineLevel {
 // on an acceptance, within [1, coarse_iterations].
 class CoarseGuard {
  public:
-  CoarseGuard(const FasOptions& options, int dimension)
+  CoarseGuard(const FasOptions& options, int dimension, bool anticipated)
       : enabled_(options.safeguard),
         adapt_(options.safeguard && options.adapt_coarse_iterations),
         max_skip_(options.max_skip),
         max_iterations_(options.coarse_iterations),
         iterations_(options.coarse_iterations),
-        growth_(options.safeguard_growth.value_or(defaults::safeguardGrowth(dimension))) {}
+        growth_(options.safeguard_growth.value_or(defaults::safeguardGrowth(dimension, anticipated))) {}
 
   /// i_C of the next coarse step.
   int coarseIterations() const { return iterations_; }
@@ -143,7 +143,7 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
   rule.calibration_safety = kFasCalibrationSafety;
   IterationMonitor monitor(solver_name, rule, &energy, reference, callback);
   FineLevel fine(problem, global, start, monitor);
-  CoarseGuard guard(options, problem.dimension);
+  CoarseGuard guard(options, problem.dimension, provider.anticipates());
   int rank = 0;
   const auto relax = [&] {
     const bool stop = fine.relax(rank);
