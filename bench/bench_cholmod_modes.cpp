@@ -108,5 +108,3 @@ BENCHMARK(Solve)->ArgsProduct({{0, 1}, {101, 201, 401}})->Unit(benchmark::kMilli
 BENCHMARK(ConcurrentSolve)->ArgsProduct({{0, 1}, {101}})->Iterations(200)->Unit(benchmark::kMillisecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

@@ -33,5 +33,3 @@ void IncrementalSeedScene(benchmark::State& state) {
 BENCHMARK(IncrementalSeedScene)->Unit(benchmark::kMillisecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

@@ -84,5 +84,3 @@ void Indicator(benchmark::State& state) {
 BENCHMARK(Indicator)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

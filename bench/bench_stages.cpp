@@ -157,5 +157,3 @@ BENCHMARK(SeparatedStage)->Apply(serial)->Unit(benchmark::kMillisecond);
 BENCHMARK(CoarseSpace)->Apply(serial)->Unit(benchmark::kMillisecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

@@ -33,6 +33,7 @@
 #include "pgd/basis_verification.hpp"
 #include "pgd/displacement_history.hpp"
 #include "src/core/input_error.hpp"
+#include "src/linalg/blas_kernels.hpp"
 #include "src/report/gnuplot_runner.hpp"
 #include "src/scene/scene_reader.hpp"
 #include "src/solver/condensed_interface.hpp"
@@ -266,6 +267,7 @@ bool check(const std::vector<Run>& runs) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  stc::linalg::preferFastBlasKernels();  // as the command line (src/linalg/blas_kernels.hpp)
   try {
     const Options o = parseArgs(argc, argv);
     const Setup st = setUp(o);

@@ -43,6 +43,7 @@
 #include "latin/latin_solver.hpp"
 #include "latin/local_stage.hpp"
 #include "src/core/input_error.hpp"
+#include "src/linalg/blas_kernels.hpp"
 #include "src/report/gnuplot_runner.hpp"
 #include "src/scene/scene_reader.hpp"
 #include "src/solver/condensed_interface.hpp"
@@ -551,6 +552,7 @@ int run(const Options& opt) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  stc::linalg::preferFastBlasKernels();  // as the command line (src/linalg/blas_kernels.hpp)
   try {
     const Options options = parseArgs(argc, argv);
     if (options.help) {

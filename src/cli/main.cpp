@@ -12,6 +12,7 @@
 #include "src/cli/threads_option.hpp"
 #include "src/core/input_error.hpp"
 #include "src/io/output_error.hpp"
+#include "src/linalg/blas_kernels.hpp"
 
 namespace {
 
@@ -41,6 +42,7 @@ void keepFreedFieldsInTheHeap() {
 
 int main(int argc, char** argv) {
   keepFreedFieldsInTheHeap();
+  stc::linalg::preferFastBlasKernels();
   CLI::App app{"stcontact " STC_VERSION
                ": quasi-static frictional contact over the whole space-time grid (LATIN, FAS, PGD)"};
   app.set_version_flag("--version", std::string("stcontact ") + STC_VERSION);

@@ -6,6 +6,7 @@
 
 #include "src/contact/contact_state_table.hpp"
 #include "src/core/threads.hpp"
+#include "src/linalg/blas_kernels.hpp"
 #include "src/fem/elasticity.hpp"
 #include "src/fem/elasticity3d.hpp"
 #include "src/io/atomic_file.hpp"
@@ -94,6 +95,7 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
                                                                    : std::nullopt)
       .add("wall_s", summary.wall_s)
       .add("threads", threadCount())
+      .add("blas_kernels", linalg::blasKernels())
       .add("n_dofs", problem.numDofs())
       .add("n_contact_nodes", problem.contact.size())
       .add("n_steps", problem.numSteps())

@@ -7,6 +7,7 @@
 
 #include "src/core/input_error.hpp"
 #include "src/io/output_error.hpp"
+#include "src/linalg/blas_kernels.hpp"
 #include "src/python/bindings.hpp"
 #include "src/strategies/solve_by_name.hpp"
 
@@ -27,6 +28,9 @@ std::string oneLine(std::string text) {
 PYBIND11_MODULE(_core, module) {
   module.doc() = "stcontact's compiled core; use the package stcontact (docs/python.md).";
   module.attr("__version__") = STC_VERSION;
+  // OpenBLAS's kernels for this processor where Debian's falls back to generic ones
+  // (src/linalg/blas_kernels.hpp); NumPy shares the process's OpenBLAS when it was built on it.
+  module.attr("blas_kernels") = stc::linalg::preferFastBlasKernels();
   static py::exception<stc::InputError> input_error(module, "InputError", PyExc_ValueError);
   py::register_exception_translator([](std::exception_ptr thrown) {
     try {

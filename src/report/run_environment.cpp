@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "src/core/threads.hpp"
+#include "src/linalg/blas_kernels.hpp"
 
 namespace stc {
 namespace {
@@ -64,6 +65,7 @@ RunEnvironment describeRunEnvironment(std::string build_type, std::string git_co
   env.git_commit = orUnknown(std::move(git_commit));
   env.load_average = loadAverage();
   env.threads = threadCount();
+  env.blas_kernels = orUnknown(linalg::blasKernels());
   return env;
 }
 
@@ -71,7 +73,8 @@ std::string machineMarkdown(const RunEnvironment& e, const std::string& load_aft
   std::ostringstream out;
   out << "## Machine and build\n\n"
       << "- CPU: " << e.cpu_model << "; " << e.logical_cores << " logical cores, " << e.usable_cores
-      << " usable by this process; stcontact threads: " << e.threads << "\n"
+      << " usable by this process; stcontact threads: " << e.threads << "; OpenBLAS kernels: "
+      << e.blas_kernels << "\n"
       << "- kernel: " << e.kernel << "\n- compiler: " << e.compiler << "; build type " << e.build_type
       << "; commit " << e.git_commit << "\n"
       << "- load average (1, 5, 15 min) at the start: " << (e.load_average.empty() ? "unknown" : e.load_average)

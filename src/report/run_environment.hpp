@@ -14,6 +14,7 @@ struct RunEnvironment {
   std::string git_commit = "unknown";  ///< commit of the sources at configure time
   std::string load_average;            ///< /proc/loadavg's 1, 5, 15 min averages (shared machines)
   int threads = 1;                     ///< stc::threadCount() when described (docs/threads.md)
+  std::string blas_kernels = "unknown";  ///< OpenBLAS's kernel set (src/linalg/blas_kernels.hpp)
 };
 
 /// Reads the machine's description; the build's is passed by the program that knows it.

@@ -1,6 +1,8 @@
 """Results hold NumPy arrays of the documented shapes and layout, moved rather than copied; warm
 starts, the per-iteration callback and the options behave as documented (docs/python.md)."""
 
+import os
+
 import numpy as np
 import pytest
 
@@ -142,3 +144,13 @@ def test_every_strategy_solves(small_scene):
         result = stcontact.solve(small_scene, solver, tol=1e-4)
         assert result.converged, (solver, result.summary["message"])
         assert result.solver == solver and result.interface_forces.shape == (62, 41)
+
+
+def test_blas_kernels_are_named_and_recorded(latin):
+    # The import switched OpenBLAS off its generic fallback where the processor has AVX2 (docs/threads.md,
+    # "BLAS kernels"), and summary.json records the kernels the solve ran on.
+    assert stcontact.blas_kernels and latin.summary["blas_kernels"] == stcontact.blas_kernels
+    with open("/proc/cpuinfo") as cpuinfo:
+        flags = next((line.split(":", 1)[1].split() for line in cpuinfo if line.startswith("flags")), [])
+    if "OPENBLAS_CORETYPE" not in os.environ and {"avx2", "fma"} <= set(flags):
+        assert stcontact.blas_kernels != "Prescott"

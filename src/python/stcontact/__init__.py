@@ -24,11 +24,13 @@ from ._results import CompareResult, SolveResult, Strategy, SvdResult
 from ._scene_toml import SceneValueError, override_text, scene_toml
 
 __version__ = _core.__version__
+blas_kernels = _core.blas_kernels  # OpenBLAS's kernel set in use (docs/threads.md, "BLAS kernels")
 InputError = _core.InputError
 IterationRecord = _core.IterationRecord
 
 __all__ = ["Scene", "load_scene", "check", "solve", "svd", "compare", "available_solvers", "InputError",
-           "IterationRecord", "SolveResult", "SvdResult", "CompareResult", "Strategy", "__version__"]
+           "IterationRecord", "SolveResult", "SvdResult", "CompareResult", "Strategy", "__version__",
+           "blas_kernels"]
 
 
 def _overrides(sets):
