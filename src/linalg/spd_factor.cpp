@@ -5,8 +5,10 @@
 #include <cstring>
 #include <mutex>
 #include <stdexcept>
+#include <vector>
 
 #include "src/core/input_error.hpp"
+#include "src/core/threads.hpp"
 
 namespace stc {
 
@@ -111,6 +113,21 @@ Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B, Workspace& workspace)
 }
 
 Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B) const { return solve(B, impl_->own); }
+
+Eigen::MatrixXd SpdFactor::solveOnThreads(const Eigen::MatrixXd& B) const {
+  const int chunks = static_cast<int>((B.cols() + kChunk - 1) / kChunk);
+  const int threads = std::max(1, std::min(threadCount(), chunks));
+  if (threads == 1) return solve(B);
+  if (B.rows() != impl_->n) throw std::invalid_argument("SpdFactor::solve: right-hand side has the wrong number of rows");
+  std::vector<Workspace> workspaces(static_cast<std::size_t>(threads));
+  Eigen::MatrixXd X(B.rows(), B.cols());
+  parallelFor(chunks, threads, [&](int chunk, int thread) {
+    const Eigen::Index begin = static_cast<Eigen::Index>(chunk) * kChunk;
+    const Eigen::Index width = std::min<Eigen::Index>(kChunk, B.cols() - begin);
+    X.middleCols(begin, width) = solve(B.middleCols(begin, width), workspaces[static_cast<std::size_t>(thread)]);
+  });
+  return X;
+}
 Eigen::VectorXd SpdFactor::solve(const Eigen::VectorXd& b) const {
   return solve(Eigen::MatrixXd(b), impl_->own).col(0);
 }

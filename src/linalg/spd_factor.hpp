@@ -39,6 +39,10 @@ class SpdFactor {
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B, Workspace& workspace) const;
   /// The same with the factor's own workspace: one thread at a time.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+  /// The same chunks handed out to threadCount() threads, each with a workspace of its own: bitwise
+  /// solve(B)'s result on any thread count. For the many-column solves of one caller (the Delassus
+  /// operator of the incremental solver); not from inside a parallelFor body (src/core/threads.hpp).
+  Eigen::MatrixXd solveOnThreads(const Eigen::MatrixXd& B) const;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   int size() const;
   /// Entries of the Cholesky factor L as CHOLMOD's analysis counts them (cholmod_common::lnz:

@@ -8,7 +8,7 @@ CondensedInterface CondensedInterface::build(const Problem& problem, const SpdFa
   const auto& B = problem.contact.B;
   CondensedInterface c;
   const Eigen::MatrixXd Bt = Eigen::MatrixXd(B.transpose());
-  c.delassus = B * stiffness_free.solve(Bt);
+  c.delassus = B * stiffness_free.solveOnThreads(Bt);
   c.delassus = 0.5 * (c.delassus + c.delassus.transpose()).eval();  // symmetric to round-off
   c.free_response = freeInterfaceResponse(problem, stiffness_free);
   c.sparse_solves = static_cast<int>(Bt.cols() + problem.loads.size());
@@ -24,7 +24,7 @@ Eigen::MatrixXd displacementsFromForces(const Problem& problem, const SpdFactor&
                                         const Eigen::MatrixXd& lambda) {
   Eigen::MatrixXd rhs = problem.loadBlock(0, problem.numSteps());
   rhs.noalias() += problem.contact.B.transpose() * lambda;
-  return stiffness_free.solve(rhs);
+  return stiffness_free.solveOnThreads(rhs);
 }
 
 }  // namespace stc

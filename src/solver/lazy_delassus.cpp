@@ -45,7 +45,7 @@ void LazyDelassus::solveColumns(const std::vector<int>& nodes) {
   Eigen::MatrixXd rhs(Bt_.rows(), d_ * static_cast<Eigen::Index>(nodes.size()));
   for (std::size_t p = 0; p < nodes.size(); ++p)
     for (int a = 0; a < d_; ++a) rhs.col(static_cast<Eigen::Index>(p) * d_ + a) = Bt_.col(d_ * nodes[p] + a);
-  const Eigen::MatrixXd w = B_ * factor_.solve(rhs);
+  const Eigen::MatrixXd w = B_ * factor_.solveOnThreads(rhs);
   for (std::size_t p = 0; p < nodes.size(); ++p) {
     slot_[nodes[p]] = count_;
     columns_.middleCols(static_cast<Eigen::Index>(count_) * d_, d_) = w.middleCols(static_cast<Eigen::Index>(p) * d_, d_);

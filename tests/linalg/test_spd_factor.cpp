@@ -3,9 +3,11 @@
 // once with one factor (what the threaded global stage relies on, docs/threads.md).
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <thread>
 
 #include "src/core/input_error.hpp"
+#include "src/core/threads.hpp"
 #include "src/linalg/spd_factor.hpp"
 #include "src/problem/problem.hpp"
 #include "solver/seed_scene.hpp"
@@ -57,4 +59,20 @@ TEST(SpdFactor, SolvesBitwiseAlikeInAnyWorkspaceAndOnTwoThreadsAtOnce) {
   b.join();
   EXPECT_EQ(wrong_left, 0);
   EXPECT_EQ(wrong_right, 0);
+}
+
+TEST(SpdFactor, SolvesOnThreadsBitwiseAsOnOne) {
+  // solveOnThreads hands the chunks of solve(B) to the threads: the same columns whatever the count
+  // (the incremental solver's Delassus operator relies on it: its reference is the same on any).
+  const auto& A = problem().stiffness_free;
+  const stc::SpdFactor factor(A, "K_ff");
+  std::srand(9);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 83);  // five chunks of 16 and a rest
+  const Eigen::MatrixXd serial = factor.solve(B);
+  for (int threads : {1, 2, 3, 8}) {
+    const stc::ThreadCountScope scope(threads);
+    const Eigen::MatrixXd X = factor.solveOnThreads(B);
+    EXPECT_EQ((X - serial).cwiseAbs().maxCoeff(), 0.0) << threads << " threads";
+  }
+  EXPECT_THROW(factor.solveOnThreads(Eigen::MatrixXd::Ones(A.rows() + 1, 40)), std::invalid_argument);
 }
