@@ -154,3 +154,11 @@ def test_blas_kernels_are_named_and_recorded(latin):
         flags = next((line.split(":", 1)[1].split() for line in cpuinfo if line.startswith("flags")), [])
     if "OPENBLAS_CORETYPE" not in os.environ and {"avx2", "fma"} <= set(flags):
         assert stcontact.blas_kernels != "Prescott"
+
+
+def test_numpy_products_agree_after_the_kernel_switch():
+    # NumPy shares the process's OpenBLAS when Debian's alternatives point both at it: its products
+    # on the kernels the import switched to agree with a sum that calls no BLAS.
+    a = np.random.default_rng(3).random((300, 200))
+    b = np.random.default_rng(4).random((200, 100))
+    np.testing.assert_allclose(a @ b, np.einsum("ij,jk->ik", a, b, optimize=False), rtol=1e-13, atol=0)
