@@ -19,13 +19,18 @@ const stc::Problem& problem() {
   return p;
 }
 
+// Random right-hand sides for K_ff, from a seed (the same every run).
+Eigen::MatrixXd randomRightHandSides(unsigned seed, int columns) {
+  std::srand(seed);
+  return Eigen::MatrixXd::Random(problem().stiffness_free.rows(), columns);
+}
+
 }  // namespace
 
 TEST(SpdFactor, SolvesEveryColumnToRoundOff) {
   const auto& A = problem().stiffness_free;
   const stc::SpdFactor factor(A, "K_ff");
-  std::srand(5);
-  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 37);  // two chunks of 16 and a rest
+  const Eigen::MatrixXd B = randomRightHandSides(5, 37);  // two chunks of 16 and a rest
   const Eigen::MatrixXd X = factor.solve(B);
   EXPECT_LE((A * X - B).norm(), 1e-10 * B.norm());
   // Alone, a column goes through CHOLMOD's one-column kernel instead of the four-column one: the
@@ -43,8 +48,7 @@ TEST(SpdFactor, RefusesAMatrixWithRigidMotionsOrANegativePivot) {
 
 TEST(SpdFactor, SolvesBitwiseAlikeInAnyWorkspaceAndOnTwoThreadsAtOnce) {
   const stc::SpdFactor factor(problem().stiffness_free, "K_ff");
-  std::srand(6);
-  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(factor.size(), 50);
+  const Eigen::MatrixXd B = randomRightHandSides(6, 50);
   const Eigen::MatrixXd X = factor.solve(B);
   stc::SpdFactor::Workspace w1, w2;
   EXPECT_TRUE(factor.solve(B, w1) == X);
@@ -66,8 +70,7 @@ TEST(SpdFactor, SolvesOnThreadsBitwiseAsOnOne) {
   // (the incremental solver's Delassus operator relies on it: its reference is the same on any).
   const auto& A = problem().stiffness_free;
   const stc::SpdFactor factor(A, "K_ff");
-  std::srand(9);
-  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 83);  // five chunks of 16 and a rest
+  const Eigen::MatrixXd B = randomRightHandSides(9, 83);  // five chunks of 16 and a rest
   const Eigen::MatrixXd serial = factor.solve(B);
   for (int threads : {1, 2, 3, 8}) {
     const stc::ThreadCountScope scope(threads);
