@@ -8,7 +8,8 @@
 //   (the second is the ctest case examples.library_example_small)
 // Arguments: SCENE.toml, then optionally a strategy name (default: the scene's [solver] name) and
 //   scene overrides KEY=VALUE, as `stcontact solve --set` takes them.
-// Steps: 0 OpenBLAS's fastest kernels for the processor · 1 read and validate the scene · 2 assemble the problem · 3 solve by name · 4 print the summary.
+// Steps: 0 OpenBLAS's fastest kernels for the processor · 1 read and validate the scene · 2 assemble
+//   the problem · 3 solve by name · 4 print the summary.
 // Exit status: 0 converged, 1 bad input, 2 not converged, 3 internal failure.
 #include <exception>
 #include <iostream>

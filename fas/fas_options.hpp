@@ -38,8 +38,9 @@ struct FasOptions {
   /// fas-apriori (κ = 0.01: 1734, the cap of 2000, 1208; ν = 0.49 to true error 1e-6: 68, 34, 34),
   /// while it costs fas-aposteriori relaxations (friction 2: 63 at θ = 1.5, 132 and 314 at θ = 5 on
   /// two machines); on the 3D hemisphere the corrections that raised it raised the error too
-  /// (θ = 1.5 costs 3 to 12 relaxations there). A kept correction that raised it must pay back within its cycle, or the
-  /// next one is judged with θ = 1 (fas_solver.cpp; docs/method.md §4, docs/three_d.md).
+  /// (θ = 1.5 costs 3 to 12 relaxations there). A kept correction that raised it must pay back
+  /// within its cycle, or the next one is judged with θ = 1 (fas_solver.cpp; docs/method.md §4,
+  /// docs/three_d.md).
   std::optional<double> safeguard_growth;
   int max_skip = 8;               ///< >= 1, longest run of skipped coarse steps
   /// With the safeguard, i_C follows its verdicts (additive increase, multiplicative decrease): a

@@ -6,13 +6,13 @@
 
 #include "src/contact/contact_state_table.hpp"
 #include "src/core/threads.hpp"
-#include "src/linalg/blas_kernels.hpp"
 #include "src/fem/elasticity.hpp"
 #include "src/fem/elasticity3d.hpp"
 #include "src/io/atomic_file.hpp"
 #include "src/io/contact_tables.hpp"
 #include "src/io/json_writer.hpp"
 #include "src/io/vtu_writer.hpp"
+#include "src/linalg/blas_kernels.hpp"
 #include "src/solver/condensed_interface.hpp"
 
 namespace stc {

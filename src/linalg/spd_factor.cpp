@@ -118,7 +118,7 @@ Eigen::MatrixXd SpdFactor::solveOnThreads(const Eigen::MatrixXd& B) const {
   const int chunks = static_cast<int>((B.cols() + kChunk - 1) / kChunk);
   const int threads = std::max(1, std::min(threadCount(), chunks));
   if (threads == 1) return solve(B);
-  if (B.rows() != impl_->n) throw std::invalid_argument("SpdFactor::solve: right-hand side has the wrong number of rows");
+  // A wrong row count is refused by solve(B, workspace) in the first chunk, and parallelFor rethrows it.
   std::vector<Workspace> workspaces(static_cast<std::size_t>(threads));
   Eigen::MatrixXd X(B.rows(), B.cols());
   parallelFor(chunks, threads, [&](int chunk, int thread) {
