@@ -15,10 +15,9 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
   const Eigen::Index rows = s.v.rows(), cols = s.v.cols();
   if (options.start == CoarseStart::ZeroCorrection) hat.v = s.v;  // start (a): ŝ = (Bũ, λ̃)
   // w = W(ŝ) = λ̂ + k v̂, the state of the restricted LATIN; W_s = λ + k Bũ, the fine stage's.
-  Eigen::MatrixXd w = hat.lambda, image(rows, cols), z(rows, cols), xi;
+  Eigen::MatrixXd w = hat.lambda, image(rows, cols), z(rows, cols), xi, dv(rows, cols);
   w.noalias() += k.asDiagonal() * hat.v;
   const Eigen::MatrixXd W_s = s.lambda + k.asDiagonal() * s.v;
-  InterfaceHistory trial{Eigen::MatrixXd(rows, cols), Eigen::MatrixXd(rows, cols)};
   std::optional<AndersonMixing> mixing;
   if (options.coarse_anderson > 0) mixing.emplace(options.coarse_anderson, k.cwiseSqrt().cwiseInverse());
   // One thread: each coarse iteration is dense products of r × 2n_C by 2n_C × m on this thread
@@ -30,17 +29,12 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
   for (int it = 0;; ++it) {
     z = w - W_s;
     xi.noalias() = BY.transpose() * z;  // seed eq. (8) with R A P = I
-    trial.v.noalias() = BY * xi;        // B Δu, seed eq. (7)
-    for (Eigen::Index c = 0; c < cols; ++c)
-      for (Eigen::Index r = 0; r < rows; ++r) {
-        const double v = s.v(r, c) + trial.v(r, c);
-        trial.v(r, c) = v;
-        trial.lambda(r, c) = w(r, c) - k[r] * v;  // λ = W(ŝ) − k v, seed eq. (5)
-      }
-    latin::localStage(contact, trial, hat);
-    if (it + 1 >= options.coarse_iterations) break;
-    image = hat.lambda;
-    image.noalias() += k.asDiagonal() * hat.v;
+    dv.noalias() = BY * xi;             // B Δu, seed eq. (7)
+    // The trial v = Bũ + B Δu, λ = W(ŝ) − k v (seed eq. (5)) and its local stage, in one pass: the
+    // last iteration's ŝ is the result, the others' W(ŝ) = λ̂ + k v̂ the next state.
+    const bool last = it + 1 >= options.coarse_iterations;
+    latin::localStageOfTrial(contact, s.v, dv, w, last ? &hat : nullptr, last ? nullptr : &image);
+    if (last) break;
     if (mixing) mixing->next(w, image);
     else w.swap(image);
   }

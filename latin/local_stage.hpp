@@ -19,4 +19,11 @@ namespace stc::latin {
 /// are split into contiguous ranges, one per thread (src/core/threads.hpp); the same result.
 void localStage(const ContactInterface& contact, const InterfaceHistory& s, InterfaceHistory& hat);
 
+/// The local stage of the FAS coarse step's trial (fas/coarse_step.hpp), s = (v0 + dv, w − k (v0 +
+/// dv)), formed node by node instead of stored: writes ŝ into `hat` and w' = λ̂ + k v̂ (the next
+/// right-hand side) into `image`, each when not null. Bitwise the same as localStage on the stored
+/// trial followed by image = λ̂ + k v̂, in one pass over the fields instead of four.
+void localStageOfTrial(const ContactInterface& contact, const Eigen::MatrixXd& v0, const Eigen::MatrixXd& dv,
+                       const Eigen::MatrixXd& w, InterfaceHistory* hat, Eigen::MatrixXd* image);
+
 }  // namespace stc::latin

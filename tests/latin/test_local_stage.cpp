@@ -105,3 +105,41 @@ TEST(LocalStage3d, OutputSatisfiesTheConeLawAndFollowsTheSearchDirection) {
     EXPECT_LE(residual.cwiseAbs().maxCoeff(), 1e-12 * s.lambda.cwiseAbs().maxCoeff()) << "seed " << seed;
   }
 }
+
+namespace {
+
+// localStageOfTrial against localStage on the stored trial s = (v0 + dv, w − k (v0 + dv)): the
+// same arithmetic node by node, so the same bits (the coarse step's results do not change with it).
+void expectTrialFormMatchesStoredTrial(const stc::Problem& problem) {
+  const Eigen::VectorXd& k = problem.contact.search_direction;
+  const stc::InterfaceHistory a = randomState(problem, 21), b = randomState(problem, 22);
+  const Eigen::MatrixXd& v0 = a.v;
+  const Eigen::MatrixXd dv = 0.1 * b.v, w = a.lambda + b.lambda;
+  stc::InterfaceHistory trial{v0 + dv, Eigen::MatrixXd()};
+  trial.lambda = w - k.asDiagonal() * trial.v;
+  stc::InterfaceHistory expected, hat;
+  stc::latin::localStage(problem.contact, trial, expected);
+  const Eigen::MatrixXd expected_image = expected.lambda + k.asDiagonal() * expected.v;
+  Eigen::MatrixXd image;
+  stc::latin::localStageOfTrial(problem.contact, v0, dv, w, &hat, &image);
+  EXPECT_TRUE(hat.v == expected.v);
+  EXPECT_TRUE(hat.lambda == expected.lambda);
+  EXPECT_TRUE(image == expected_image);
+  // Either output alone: the same values.
+  Eigen::MatrixXd image_alone;
+  stc::InterfaceHistory hat_alone;
+  stc::latin::localStageOfTrial(problem.contact, v0, dv, w, nullptr, &image_alone);
+  stc::latin::localStageOfTrial(problem.contact, v0, dv, w, &hat_alone, nullptr);
+  EXPECT_TRUE(image_alone == expected_image);
+  EXPECT_TRUE(hat_alone.lambda == expected.lambda);
+}
+
+}  // namespace
+
+TEST_F(LocalStageTest, TrialFormIsBitwiseTheLocalStageOfTheStoredTrial) {
+  expectTrialFormMatchesStoredTrial(problem);
+}
+
+TEST(LocalStage3d, TrialFormIsBitwiseTheLocalStageOfTheStoredTrial) {
+  expectTrialFormMatchesStoredTrial(stc::buildProblem(stc::test::hemisphereScene(3, 11)));
+}
