@@ -7,6 +7,12 @@
 #include "src/linalg/anderson.hpp"
 
 namespace stc::fas {
+namespace {
+
+/// Entries per interface field (d n_C × m) from which the coarse step runs on threadCount() threads.
+constexpr Eigen::Index kThreadedCoarseEntries = 1 << 20;
+
+}  // namespace
 
 void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const FasOptions& options,
                 const InterfaceHistory& s, InterfaceHistory& hat) {
@@ -20,12 +26,14 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
   const Eigen::MatrixXd W_s = s.lambda + k.asDiagonal() * s.v;
   std::optional<AndersonMixing> mixing;
   if (options.coarse_anderson > 0) mixing.emplace(options.coarse_anderson, k.cwiseSqrt().cwiseInverse());
-  // One thread: each coarse iteration is dense products of r × 2n_C by 2n_C × m on this thread
-  // around a short local stage (~50 µs on the seed). On 2 threads every one of those local stages
-  // had to wake the pool's worker, asleep during the products, and hand over: that cost more than
-  // the split saves (bench_stages CoarseStep, seed: 8.3 ms on 1 thread, 13.2 ms on 2; a worker
-  // kept awake longer, 8.9 ms; serial here: 7.9 ms; docs/threads.md).
-  const ThreadCountScope serial(1);
+  // One thread on small fields: each coarse iteration is dense products of r × 2n_C by 2n_C × m on
+  // this thread around a short local stage (~50 µs on the seed). On 2 threads every one of those
+  // local stages had to wake the pool's worker, asleep during the products, and hand over: that cost
+  // more than the split saves (bench_stages CoarseStep, seed: 8.3 ms on 1 thread, 13.2 ms on 2;
+  // docs/threads.md). From kThreadedCoarseEntries entries per field on, the local stages are long
+  // enough to share (401 contact nodes × 2001 instants: 0.90 of the serial solve's time; 1601 × 201,
+  // 643 000 entries: the same time either way).
+  const ThreadCountScope threads(rows * cols >= kThreadedCoarseEntries ? threadCount() : 1);
   for (int it = 0;; ++it) {
     z = w - W_s;
     xi.noalias() = BY.transpose() * z;  // seed eq. (8) with R A P = I

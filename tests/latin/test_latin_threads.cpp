@@ -50,6 +50,23 @@ TEST(LocalStage, ThreadsGiveBitwiseTheSerialResult) {
   }
 }
 
+// The coarse step's form (fas/coarse_step.cpp runs it on threads on large fields).
+TEST(LocalStageOfTrial, ThreadsGiveBitwiseTheSerialResult) {
+  const stc::InterfaceHistory a = randomState(5), b = randomState(6);
+  stc::InterfaceHistory serial, threaded;
+  Eigen::MatrixXd serial_image, threaded_image;
+  {
+    const stc::ThreadCountScope one(1);
+    stc::latin::localStageOfTrial(problem().contact, a.v, b.v, a.lambda, &serial, &serial_image);
+  }
+  for (int threads : {2, 3}) {
+    const stc::ThreadCountScope scope(threads);
+    stc::latin::localStageOfTrial(problem().contact, a.v, b.v, a.lambda, &threaded, &threaded_image);
+    EXPECT_TRUE(identical(serial, threaded)) << threads << " threads";
+    EXPECT_TRUE(serial_image == threaded_image) << threads << " threads";
+  }
+}
+
 TEST(GlobalStage, ThreadsGiveBitwiseTheSerialResult) {
   stc::latin::GlobalStage global(problem(), 7);  // 6 blocks, the last one shorter
   const stc::InterfaceHistory hat = randomState(4);
