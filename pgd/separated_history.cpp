@@ -1,6 +1,7 @@
 #include "pgd/separated_history.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "src/linalg/dense_decompositions.hpp"
 
@@ -10,10 +11,24 @@ namespace {
 constexpr int kOversampling = 10;
 constexpr int kSubspaceIterations = 2;
 
+constexpr unsigned kSketchSeed = 20160101u;
+
+// The range finder's sketch Ω (rows × cols): the same seed on every call, so the same matrix for a
+// given size. Drawing it cost about a fifth of the coarse space on the seed scene (std::normal
+// draws, two calls per coarse step), so it is drawn once per row count (per thread) at the widest
+// width asked: filled column by column, a narrower sketch is its leading columns, the same numbers
+// as a fresh draw.
+Eigen::Ref<const Eigen::MatrixXd> fixedSketch(Eigen::Index rows, Eigen::Index cols) {
+  thread_local std::map<Eigen::Index, Eigen::MatrixXd> sketches;
+  Eigen::MatrixXd& sketch = sketches[rows];
+  if (sketch.cols() < cols) sketch = linalg::gaussianSketch(rows, cols, kSketchSeed);
+  return sketch.leftCols(cols);
+}
+
 // An orthonormal basis of (approximately) the leading `samples`-dimensional range of C.
 Eigen::MatrixXd rangeFinder(const Eigen::MatrixXd& C, Eigen::Index samples) {
   if (samples == C.rows()) return Eigen::MatrixXd::Identity(C.rows(), C.rows());
-  return linalg::randomizedRange(C, samples, kSubspaceIterations, 20160101u);
+  return linalg::randomizedRange(C, fixedSketch(C.cols(), samples), kSubspaceIterations);
 }
 
 }  // namespace

@@ -66,7 +66,12 @@ Eigen::MatrixXd gaussianSketch(Eigen::Index rows, Eigen::Index cols, unsigned se
 
 Eigen::MatrixXd randomizedRange(const Eigen::MatrixXd& R, Eigen::Index samples, int power_iterations,
                                 unsigned seed) {
-  Eigen::MatrixXd Q = orthonormalColumns(R * gaussianSketch(R.cols(), samples, seed));
+  return randomizedRange(R, gaussianSketch(R.cols(), samples, seed), power_iterations);
+}
+
+Eigen::MatrixXd randomizedRange(const Eigen::MatrixXd& R, const Eigen::Ref<const Eigen::MatrixXd>& omega,
+                                int power_iterations) {
+  Eigen::MatrixXd Q = orthonormalColumns(R * omega);
   for (int it = 0; it < power_iterations; ++it) Q = orthonormalColumns(R * (R.transpose() * Q));
   return Q;
 }

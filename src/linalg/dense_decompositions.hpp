@@ -49,5 +49,8 @@ Eigen::MatrixXd gaussianSketch(Eigen::Index rows, Eigen::Index cols, unsigned se
 /// samples, seed).
 Eigen::MatrixXd randomizedRange(const Eigen::MatrixXd& R, Eigen::Index samples, int power_iterations,
                                 unsigned seed);
+/// The same from a given sketch Ω (R.cols() × samples).
+Eigen::MatrixXd randomizedRange(const Eigen::MatrixXd& R, const Eigen::Ref<const Eigen::MatrixXd>& omega,
+                                int power_iterations);
 
 }  // namespace stc::linalg
