@@ -10,15 +10,16 @@
 namespace stc::pgd {
 namespace {
 
-// Leading left singular directions of R (rows × m), at most `count`, enough that the rest of R's
-// Frobenius norm is at most `target`: randomized range finder with power iterations.
-Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double target, int count,
+// Leading left singular directions of R (rows × m, Frobenius norm `norm`), at most `count`, enough
+// that the rest of R's Frobenius norm is at most `target`: randomized range finder with power
+// iterations.
+Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double norm, double target, int count,
                                   const ControlledStageOptions& o, unsigned seed) {
   const int samples = std::min<int>({count + o.oversampling, static_cast<int>(R.cols()), static_cast<int>(R.rows())});
   const Eigen::MatrixXd Q = linalg::randomizedRange(R, samples, o.power_iterations, 20131001u + seed);
   const linalg::Svd svd = linalg::singularValueDecomposition(Q.transpose() * R, linalg::SvdMethod::jacobi, linalg::kThinU);
   const Eigen::VectorXd& sigma = svd.values;
-  double rest = R.squaredNorm();
+  double rest = norm * norm;
   int keep = 0;
   while (keep < std::min<int>(count, static_cast<int>(sigma.size())) && sigma[keep] > 0.0 &&
          (keep == 0 || rest > target * target)) {
@@ -56,7 +57,7 @@ double ControlledGlobalStage::enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scal
   const Eigen::VectorXd& sqrt_k = basis_.sqrtK();
   while (error > target && basis_.size() < basis_.maxSize()) {
     const int room = std::min(options_.block, basis_.maxSize() - basis_.size());
-    const Eigen::MatrixXd found = leadingDirections(r_scaled, target, room, options_, passes_++);
+    const Eigen::MatrixXd found = leadingDirections(r_scaled, error, target, room, options_, passes_++);
     const int before = basis_.size();
     if (found.cols() == 0 || basis_.append(sqrt_k.asDiagonal() * found) == 0) break;
     // New directions are k⁻¹-orthogonal to the old ones: their coordinates come from r alone.

@@ -6,6 +6,11 @@
 #include "src/core/threads.hpp"
 
 namespace stc::pgd {
+namespace {
+
+constexpr double kReorthogonalise = 0.70710678118654752;  ///< 1/√2: a second Gram–Schmidt pass below it
+
+}  // namespace
 
 ResponseBasis::ResponseBasis(const Problem& problem, const SpdFactor& factor)
     : problem_(problem),
@@ -33,7 +38,22 @@ Eigen::MatrixXd ResponseBasis::orthonormalised(const Eigen::MatrixXd& candidates
   Eigen::MatrixXd Y = inv_sqrt_k_.asDiagonal() * candidates;
   const Eigen::VectorXd original = Y.colwise().norm();
   const View Zs = Zs_.view();
-  for (int pass = 0; pass < 2 && Zs.cols() > 0; ++pass) Y -= Zs * (Zs.transpose() * Y);
+  if (Zs.cols() > 0) {
+    Y -= Zs * (Zs.transpose() * Y);
+    // A second pass only for the columns that lost more than 1 − 1/√2 of their norm in the first
+    // (the criterion of Daniel, Gragg, Kaufman & Stewart, Math. Comp. 30, 1976; with it classical
+    // Gram–Schmidt keeps orthogonality to working precision, Giraud, Langou & Rozložník, Comput.
+    // Math. Appl. 50, 2005). Candidates from a projection error are orthogonal to Zs already, and
+    // skip it: the pass read all p directions twice.
+    std::vector<Eigen::Index> again;
+    for (Eigen::Index j = 0; j < Y.cols(); ++j)
+      if (Y.col(j).norm() < kReorthogonalise * original[j]) again.push_back(j);
+    if (!again.empty()) {
+      Eigen::MatrixXd part = Y(Eigen::all, again);
+      part -= Zs * (Zs.transpose() * part);
+      Y(Eigen::all, again) = part;
+    }
+  }
   Eigen::Index kept = 0;
   const Eigen::Index room = Z_.rows() - Z_.cols();
   for (Eigen::Index j = 0; j < Y.cols() && kept < room; ++j) {
@@ -48,17 +68,17 @@ Eigen::MatrixXd ResponseBasis::orthonormalised(const Eigen::MatrixXd& candidates
 }
 
 void ResponseBasis::extendEnergyFactor(Eigen::Index added) {
-  // For a new direction z_j: φ_jᵀ A φ_i = (B φ_i)ᵀ z_j, the direction block symmetrised.
+  // For a new direction z_j: φ_iᵀ A φ_j = (B φ_i)ᵀ z_j, i ≤ j (the factor reads one triangle; the
+  // other side, z_iᵀ (B φ_j), agrees to the sparse solves' accuracy and read all of Z again).
   const Eigen::Index p = Z_.cols() - added;
   const View Z = Z_.view(), T = T_.view();
   const Eigen::MatrixXd load_part = VF_.transpose() * Z.rightCols(added);   // q × added
   const Eigen::MatrixXd TZ = T.transpose() * Z.rightCols(added);            // (p + added) × added
-  const Eigen::MatrixXd ZT = Z.transpose() * T.rightCols(added);            // (p + added) × added
   const Eigen::Index q = VF_.cols();
   for (Eigen::Index a = 0; a < added; ++a) {
     Eigen::VectorXd products(q + p + a + 1);
     products.head(q) = load_part.col(a);
-    products.tail(p + a + 1) = 0.5 * (TZ.col(a).head(p + a + 1) + ZT.col(a).head(p + a + 1));
+    products.tail(p + a + 1) = TZ.col(a).head(p + a + 1);
     energy_.append(products);
   }
 }

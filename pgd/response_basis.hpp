@@ -43,7 +43,8 @@ class ResponseBasis {
   const Eigen::VectorXd& invSqrtK() const { return inv_sqrt_k_; }
 
   /// Appends the columns of `candidates` (2n_C × b), k⁻¹-orthogonalised against the directions
-  /// (block classical Gram–Schmidt, twice) and each other (in order), dropping those left with less
+  /// (block classical Gram–Schmidt, a second pass for the columns the first one shortened by more
+  /// than 1 − 1/√2) and each other (in order, twice), dropping those left with less
   /// than `drop` of their norm, and solves for their responses (one multi-right-hand-side solve).
   /// Returns the number appended.
   int append(const Eigen::MatrixXd& candidates, double drop = 1e-8);
