@@ -79,15 +79,15 @@ void marchNodes(const ContactInterface& contact, int m, int first, int last, In 
   std::array<Tangential<D>, kNodeBlock> previous_vt;
   for (int begin = first; begin < last; begin += kNodeBlock) {
     const int count = std::min(last - begin, kNodeBlock);
+    const Eigen::VectorXd& directions = contact.search_direction;
     for (int j = 0; j < count; ++j) {
       const int i = begin + j;
-      const Eigen::VectorXd& k = contact.search_direction;
-      nodes[j] = {k[D * i], k[D * i + 1], contact.initial_gap[i]};
+      nodes[j] = {directions[D * i], directions[D * i + 1], contact.initial_gap[i]};
       previous_vt[j].setZero();
     }
-    for (int k = 0; k < m; ++k)
+    for (int instant = 0; instant < m; ++instant)
       for (int j = 0; j < count; ++j)
-        out(begin + j, k, nodeLaw<D>(nodes[j], contact.friction, in(begin + j, k), previous_vt[j]));
+        out(begin + j, instant, nodeLaw<D>(nodes[j], contact.friction, in(begin + j, instant), previous_vt[j]));
   }
 }
 

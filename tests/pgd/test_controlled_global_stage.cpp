@@ -53,6 +53,24 @@ TEST(ResponseBasis, DirectionsAreOrthonormalInTheInverseSearchProductAndResponse
   EXPECT_LE((basis.traces() - f.problem.contact.B * basis.responses()).norm(), 1e-12 * basis.traces().norm());
 }
 
+// Candidates almost in the span of the directions (a warm start's, say) lose most of their norm in
+// the first Gram–Schmidt pass; the second pass they then get keeps the basis orthonormal (one pass
+// would leave them ~ε·10⁶ out of orthogonality here: the test fails with it switched off).
+TEST(ResponseBasis, StaysOrthonormalWhenCandidatesLieMostlyInItsSpan) {
+  const auto& f = fixture();
+  stc::pgd::ControlledGlobalStage stage(f.problem, {});
+  stc::InterfaceHistory s;
+  stage.solve(f.hat(), s);
+  const Eigen::MatrixXd Z = stage.basis().directions();
+  std::srand(5);
+  const Eigen::MatrixXd candidates =
+      Z * Eigen::MatrixXd::Random(Z.cols(), 3) + 1e-6 * Eigen::MatrixXd::Random(Z.rows(), 3);
+  ASSERT_EQ(stage.seed(candidates), 3);
+  const Eigen::MatrixXd& all = stage.basis().directions();
+  const Eigen::MatrixXd gram = all.transpose() * f.problem.contact.search_direction.cwiseInverse().asDiagonal() * all;
+  EXPECT_LE((gram - Eigen::MatrixXd::Identity(all.cols(), all.cols())).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(ControlledGlobalStage, DepartsFromTheExactStageByItsProjectionError) {
   const auto& f = fixture();
   stc::latin::GlobalStage exact(f.problem);
