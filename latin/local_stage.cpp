@@ -13,7 +13,7 @@ namespace {
 // (3202 rows: 25.6 kB apart), and its neighbours come back for the same lines later. Four 2D nodes
 // share a line. Each node's arithmetic is the same in any block: the result does not depend on it.
 // Measured (docs/threads.md, "The local stage by blocks of nodes"): 4 and 16 alike on 401 × 2001,
-// 16 slower than 4 on 401 × 201 (the branches of interleaved nodes).
+// 16 slower than 4 on 401 × 201.
 constexpr int kNodeBlock = 4;
 
 template <int D>
