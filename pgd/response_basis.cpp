@@ -1,9 +1,6 @@
 #include "pgd/response_basis.hpp"
 
-#include <algorithm>
-
 #include "pgd/separated_loads.hpp"
-#include "src/core/threads.hpp"
 
 namespace stc::pgd {
 namespace {
@@ -87,15 +84,7 @@ Eigen::MatrixXd ResponseBasis::solveColumns(const Eigen::MatrixXd& rhs) {
   // Parts of a fixed width, whatever the thread count: CHOLMOD's solve runs kernels of 1 to 4
   // columns whose rounding differs, so a column must land in the same group on any thread count.
   constexpr int kPart = 4;
-  const int columns = static_cast<int>(rhs.cols()), parts = (columns + kPart - 1) / kPart;
-  const int threads = std::max(1, std::min(threadCount(), parts));
-  while (static_cast<int>(workspaces_.size()) < threads) workspaces_.emplace_back();
-  Eigen::MatrixXd X(rhs.rows(), columns);
-  parallelFor(parts, threads, [&](int part, int thread) {
-    const int begin = part * kPart, width = std::min(kPart, columns - begin);
-    X.middleCols(begin, width) = factor_.solve(rhs.middleCols(begin, width), workspaces_[thread]);
-  });
-  return X;
+  return factor_.solveInParts(rhs, kPart, workspaces_);
 }
 
 int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {

@@ -115,15 +115,22 @@ Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B, Workspace& workspace)
 Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B) const { return solve(B, impl_->own); }
 
 Eigen::MatrixXd SpdFactor::solveOnThreads(const Eigen::MatrixXd& B) const {
-  const int chunks = static_cast<int>((B.cols() + kChunk - 1) / kChunk);
-  const int threads = std::max(1, std::min(threadCount(), chunks));
-  if (threads == 1) return solve(B);
-  // A wrong row count is refused by solve(B, workspace) in the first chunk, and parallelFor rethrows it.
-  std::vector<Workspace> workspaces(static_cast<std::size_t>(threads));
+  if (threadCount() == 1 || B.cols() <= kChunk) return solve(B);
+  std::vector<Workspace> workspaces;
+  return solveInParts(B, kChunk, workspaces);
+}
+
+Eigen::MatrixXd SpdFactor::solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const {
+  if (part < 1 || part > kChunk)
+    throw std::invalid_argument("SpdFactor::solveInParts: part must be in [1, " + std::to_string(kChunk) + "]");
+  const int parts = static_cast<int>((B.cols() + part - 1) / part);
+  const int threads = std::max(1, std::min(threadCount(), parts));
+  while (static_cast<int>(workspaces.size()) < threads) workspaces.emplace_back();
+  // A wrong row count is refused by solve(B, workspace) in the first part, and parallelFor rethrows it.
   Eigen::MatrixXd X(B.rows(), B.cols());
-  parallelFor(chunks, threads, [&](int chunk, int thread) {
-    const Eigen::Index begin = static_cast<Eigen::Index>(chunk) * kChunk;
-    const Eigen::Index width = std::min<Eigen::Index>(kChunk, B.cols() - begin);
+  parallelFor(parts, threads, [&](int index, int thread) {
+    const Eigen::Index begin = static_cast<Eigen::Index>(index) * part;
+    const Eigen::Index width = std::min<Eigen::Index>(part, B.cols() - begin);
     X.middleCols(begin, width) = solve(B.middleCols(begin, width), workspaces[static_cast<std::size_t>(thread)]);
   });
   return X;

@@ -8,6 +8,7 @@
 #include <Eigen/SparseCore>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace stc {
 
@@ -43,6 +44,12 @@ class SpdFactor {
   /// solve(B)'s result on any thread count. For the many-column solves of one caller (the Delassus
   /// operator of the incremental solver); not from inside a parallelFor body (src/core/threads.hpp).
   Eigen::MatrixXd solveOnThreads(const Eigen::MatrixXd& B) const;
+  /// The columns of B in parts of `part` columns (1 ≤ part ≤ kChunk, one CHOLMOD call each), handed
+  /// out in order to threadCount() threads, thread t solving with workspaces[t] (added as needed, kept
+  /// for the next call). A part is solved the same way on any thread, so the result does not depend
+  /// on the thread count; narrow parts spread few columns over the threads (the separated stage's
+  /// new directions, about 8 at a time: pgd/response_basis.cpp). Not from inside a parallelFor body.
+  Eigen::MatrixXd solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   int size() const;
   /// Entries of the Cholesky factor L as CHOLMOD's analysis counts them (cholmod_common::lnz:

@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "src/core/input_error.hpp"
 #include "src/core/threads.hpp"
@@ -78,4 +79,29 @@ TEST(SpdFactor, SolvesOnThreadsBitwiseAsOnOne) {
     EXPECT_EQ((X - serial).cwiseAbs().maxCoeff(), 0.0) << threads << " threads";
   }
   EXPECT_THROW(factor.solveOnThreads(Eigen::MatrixXd::Ones(A.rows() + 1, 40)), std::invalid_argument);
+}
+
+TEST(SpdFactor, SolvesInPartsBitwiseOnAnyThreadCount) {
+  // solveInParts: one CHOLMOD call per part of `part` columns, whichever thread takes it (the separated
+  // stage's new directions in parts of 4: the same responses on any thread count).
+  const auto& A = problem().stiffness_free;
+  const stc::SpdFactor factor(A, "K_ff");
+  const Eigen::MatrixXd B = randomRightHandSides(10, 23);  // five parts of 4 and a rest of 3
+  std::vector<stc::SpdFactor::Workspace> serial_workspaces;
+  Eigen::MatrixXd serial;
+  {
+    const stc::ThreadCountScope one(1);
+    serial = factor.solveInParts(B, 4, serial_workspaces);
+  }
+  EXPECT_EQ(serial_workspaces.size(), 1u);
+  std::vector<stc::SpdFactor::Workspace> workspaces;
+  for (int threads : {2, 3, 8}) {
+    const stc::ThreadCountScope scope(threads);
+    const Eigen::MatrixXd X = factor.solveInParts(B, 4, workspaces);  // workspaces kept between calls
+    EXPECT_EQ((X - serial).cwiseAbs().maxCoeff(), 0.0) << threads << " threads";
+  }
+  EXPECT_EQ(workspaces.size(), 6u);  // grown to the largest count that had parts for it (6 parts)
+  EXPECT_LE((A * serial - B).norm(), 1e-10 * B.norm());
+  EXPECT_THROW(factor.solveInParts(B, 0, workspaces), std::invalid_argument);
+  EXPECT_THROW(factor.solveInParts(B, stc::SpdFactor::kChunk + 1, workspaces), std::invalid_argument);
 }
