@@ -43,7 +43,7 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
     const bool last = it + 1 >= options.coarse_iterations;
     latin::localStageOfTrial(contact, s.v, dv, w, last ? &hat : nullptr, last ? nullptr : &image);
     if (last) break;
-    if (mixing) mixing->next(w, image);
+    if (mixing) mixing->nextTaking(w, image);
     else w.swap(image);
   }
 }

@@ -6,7 +6,9 @@
 #include <Eigen/Dense>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
+#include "src/core/threads.hpp"
 #include "src/linalg/anderson.hpp"
 
 namespace {
@@ -88,4 +90,33 @@ TEST(AndersonMixing, RestartsWhenAMixedIterateHasALargerResidual) {
   Eigen::MatrixXd y = Eigen::MatrixXd::Zero(20, 2);
   for (int step = 0; step < 12; ++step) steady.next(y, map.M * y + map.b);
   EXPECT_EQ(steady.restarts(), 0);
+}
+
+TEST(AndersonMixing, TakingTheImageAndSplittingTheColumnsChangeNoBit) {
+  // nextTaking keeps the image's storage instead of a copy, and both passes split the columns over
+  // the threads with sums taken per column: the iterates are bitwise those of next on one thread.
+  const LinearMap map(40, 0.9);
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(40, 37);  // more columns than threads
+  const Eigen::VectorXd weights = Eigen::VectorXd::LinSpaced(40, 0.5, 2.0);
+  const auto iterates = [&](int threads, bool taking) {
+    const stc::ThreadCountScope scope(threads);
+    stc::AndersonMixing mixing(3, weights);
+    Eigen::MatrixXd x = Eigen::MatrixXd::Zero(40, 37), image;
+    std::vector<Eigen::MatrixXd> out;
+    for (int step = 0; step < 15; ++step) {
+      image = map.M * x + b;
+      if (taking) mixing.nextTaking(x, image);
+      else mixing.next(x, image);
+      out.push_back(x);
+    }
+    return out;
+  };
+  const std::vector<Eigen::MatrixXd> serial = iterates(1, false);
+  for (const int threads : {1, 2, 3, 8})
+    for (const bool taking : {false, true}) {
+      const std::vector<Eigen::MatrixXd> run = iterates(threads, taking);
+      for (size_t step = 0; step < serial.size(); ++step)
+        ASSERT_TRUE(run[step] == serial[step]) << threads << " threads, taking " << taking << ", step " << step;
+    }
+  EXPECT_GT((serial.back() - serial.front()).norm(), 0.0);  // the iteration moved
 }
