@@ -9,8 +9,9 @@
 namespace stc::fas {
 namespace {
 
-/// Entries per interface field (d n_C × m) from which the coarse step runs on threadCount() threads.
-constexpr Eigen::Index kThreadedCoarseEntries = 1 << 20;
+/// Entries per interface field (d n_C × m) from which the coarse step runs on threadCount() threads
+/// (docs/threads.md, "The local stage by blocks of nodes").
+constexpr Eigen::Index kThreadedCoarseEntries = 1 << 16;
 
 }  // namespace
 
@@ -30,9 +31,10 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
   // this thread around a short local stage (~50 µs on the seed). On 2 threads every one of those
   // local stages had to wake the pool's worker, asleep during the products, and hand over: that cost
   // more than the split saves (bench_stages CoarseStep, seed: 8.3 ms on 1 thread, 13.2 ms on 2;
-  // docs/threads.md). From kThreadedCoarseEntries entries per field on, the local stages are long
-  // enough to share (401 contact nodes × 2001 instants: 0.90 of the serial solve's time; 1601 × 201,
-  // 643 000 entries: the same time either way).
+  // docs/threads.md). From kThreadedCoarseEntries entries per field on, the local stages and the
+  // Anderson passes are long enough to share (alternated runs to 1e-4 or 1e-6, threaded against
+  // serial: 0.97 of the time at 201 contact nodes × 201 instants, 80 000 entries; 0.93 at 401, 0.92
+  // at 801 and 1601; the seed mesh, 40 000 entries, 1.02).
   const ThreadCountScope threads(rows * cols >= kThreadedCoarseEntries ? threadCount() : 1);
   for (int it = 0;; ++it) {
     z = w - W_s;
