@@ -19,15 +19,24 @@ AndersonMixing::AndersonMixing(int depth, Eigen::VectorXd row_weights)
 }
 
 void AndersonMixing::next(Eigen::MatrixXd& x, const Eigen::MatrixXd& image) {
-  Eigen::MatrixXd copy = image;
-  nextTaking(x, copy);
+  requireSizes(x, image);
+  imageOf(call_ + 1) = image;  // F(x_j) joins the ring, in the buffer of F(x_{j−depth−1})
+  advance(x);
 }
 
 void AndersonMixing::nextTaking(Eigen::MatrixXd& x, Eigen::MatrixXd& image) {
+  requireSizes(x, image);
+  imageOf(call_ + 1).swap(image);  // F(x_j) joins the ring; `image` gets the buffer of F(x_{j−depth−1})
+  advance(x);
+}
+
+void AndersonMixing::requireSizes(const Eigen::MatrixXd& x, const Eigen::MatrixXd& image) const {
   if (w_.size() != x.rows() || image.rows() != x.rows() || image.cols() != x.cols())
     throw std::invalid_argument("AndersonMixing: iterate, image and weights differ in size");
+}
+
+void AndersonMixing::advance(Eigen::MatrixXd& x) {
   ++call_;
-  imageOf(call_).swap(image);  // F(x_j) joins the ring; `image` gets the buffer of F(x_{j−depth−1})
   const Eigen::MatrixXd& g = imageOf(call_);
   if (call_ == 0) {  // first call: a plain step
     last_f_ = w_.asDiagonal() * (g - x);

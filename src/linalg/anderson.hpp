@@ -35,6 +35,9 @@ class AndersonMixing {
   int restarts() const { return restarts_; }
 
  private:
+  void requireSizes(const Eigen::MatrixXd& x, const Eigen::MatrixXd& image) const;  ///< throws std::invalid_argument
+  /// One step from x_j, F(x_j) being in the ring already: x ← x_{j+1}.
+  void advance(Eigen::MatrixXd& x);
   /// The first pass over the columns: f_j and ΔF_new stored, ⟨ΔF_new, ΔF_a⟩ into `row` and
   /// ⟨ΔF_a, f_j⟩ into `rhs` for the `held` slots. Returns ‖f_j‖² (weighted).
   double updateDifferences(const Eigen::MatrixXd& x, int held, Eigen::VectorXd& row, Eigen::VectorXd& rhs);
