@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "src/core/input_error.hpp"
 #include "src/mesh/facet_measure.hpp"
@@ -135,6 +137,43 @@ ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& b
                                        const DofStatus& dofs, double friction) {
   const SurfaceGroup& group = mesh.group(boundary);
   return build(mesh.nodes, group.nodes, group.triangles, boundary, obstacle, dofs, friction);
+}
+
+ContactInterface restrictToNodes(const ContactInterface& contact, const std::vector<int>& nodes) {
+  const int d = contact.dimension, count = static_cast<int>(nodes.size());
+  const bool has_directions = contact.search_direction.size() == contact.rows();
+  ContactInterface sub;
+  sub.dimension = d;
+  sub.friction = contact.friction;
+  sub.search_scale_per_length = contact.search_scale_per_length;
+  sub.normals.resize(contact.normals.rows(), count);
+  sub.tangents.resize(contact.tangents.rows(), (d - 1) * count);
+  sub.initial_gap.resize(count);
+  sub.tributary.resize(count);
+  sub.search_direction.resize(has_directions ? d * count : 0);
+  std::vector<int> new_row(static_cast<size_t>(contact.rows()), -1);
+  std::vector<Eigen::Triplet<double>> select;  // (new row, old row)
+  for (int j = 0; j < count; ++j) {
+    const int i = nodes[static_cast<size_t>(j)];
+    if (i < 0 || i >= contact.size()) throw std::out_of_range("restrictToNodes: node index " + std::to_string(i));
+    sub.nodes.push_back(contact.nodes[static_cast<size_t>(i)]);
+    sub.normals.col(j) = contact.normals.col(i);
+    sub.tangents.middleCols((d - 1) * j, d - 1) = contact.tangents.middleCols((d - 1) * i, d - 1);
+    sub.initial_gap[j] = contact.initial_gap[i];
+    sub.tributary[j] = contact.tributary[i];
+    if (has_directions) sub.search_direction.segment(d * j, d) = contact.search_direction.segment(d * i, d);
+    for (int a = 0; a < d; ++a) {
+      new_row[static_cast<size_t>(d * i + a)] = d * j + a;
+      select.emplace_back(d * j + a, d * i + a, 1.0);
+    }
+  }
+  Eigen::SparseMatrix<double> selection(d * count, contact.rows());
+  selection.setFromTriplets(select.begin(), select.end());
+  sub.B = selection * contact.B;
+  for (int row : contact.held_rows)
+    if (new_row[static_cast<size_t>(row)] >= 0) sub.held_rows.push_back(new_row[static_cast<size_t>(row)]);
+  std::sort(sub.held_rows.begin(), sub.held_rows.end());
+  return sub;
 }
 
 void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale) {

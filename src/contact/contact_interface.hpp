@@ -63,6 +63,12 @@ ContactInterface buildContactInterface(const Mesh& mesh, const std::string& boun
 ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& boundary, const Obstacle& obstacle,
                                        const DofStatus& dofs, double friction);
 
+/// The interface of nodes `nodes` (indices 0..n_C−1 of `contact`, kept in the given order, no
+/// repeats): their frames, gaps, measures, search directions (when set), B rows and held rows,
+/// renumbered.
+/// Throws std::out_of_range for an index outside the interface.
+ContactInterface restrictToNodes(const ContactInterface& contact, const std::vector<int>& nodes);
+
 /// Sets k = κ E ℓ_i / L on every row of every node.
 void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale);
 

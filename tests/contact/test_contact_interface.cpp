@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <vector>
 
 #include "src/core/input_error.hpp"
 #include "src/problem/problem.hpp"
@@ -89,4 +91,29 @@ TEST(ContactInterface, PenetratingNodeIsAnInputError) {
   } catch (const stc::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("starts inside the obstacle"), std::string::npos) << e.what();
   }
+}
+
+TEST(ContactInterface, RestrictedToNodesKeepsTheirDataAndRowsInTheGivenOrder) {
+  stc::ContactInterface full = seed().contact;
+  full.held_rows = {2 * 7 + 1};  // node 7's tangential row, as a symmetry plane would hold it
+  const std::vector<int> picked = {7, 3};
+  const stc::ContactInterface sub = stc::restrictToNodes(full, picked);
+  ASSERT_EQ(sub.size(), 2);
+  EXPECT_EQ(sub.dimension, 2);
+  EXPECT_EQ(sub.friction, full.friction);
+  const Eigen::MatrixXd B = full.B, subB = sub.B;
+  ASSERT_EQ(subB.rows(), 4);
+  for (int j = 0; j < 2; ++j) {
+    const int i = picked[static_cast<size_t>(j)];
+    EXPECT_EQ(sub.nodes[static_cast<size_t>(j)], full.nodes[static_cast<size_t>(i)]);
+    EXPECT_EQ(sub.initial_gap[j], full.initial_gap[i]);
+    EXPECT_EQ(sub.tributary[j], full.tributary[i]);
+    EXPECT_EQ(sub.normals.col(j), full.normals.col(i));
+    EXPECT_EQ(sub.tangents.col(j), full.tangents.col(i));
+    EXPECT_EQ(sub.search_direction.segment(2 * j, 2), full.search_direction.segment(2 * i, 2));
+    EXPECT_EQ(subB.middleRows(2 * j, 2), B.middleRows(2 * i, 2));
+  }
+  EXPECT_EQ(sub.held_rows, std::vector<int>({1}));
+  EXPECT_EQ(stc::restrictToNodes(full, {}).rows(), 0);
+  EXPECT_THROW(stc::restrictToNodes(full, {full.size()}), std::out_of_range);
 }
