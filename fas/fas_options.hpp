@@ -22,6 +22,8 @@ struct FasOptions {
   int coarse_iterations = defaults::coarse_iterations;
   /// Anderson depth of the coarse iterations (fas/coarse_step.hpp; 0: plain restricted LATIN).
   int coarse_anderson = defaults::coarse_anderson;
+  /// The coarse step on its contact zone (fas/coarse_zone.hpp); false: on every node, as the seed.
+  bool coarse_zone = defaults::coarse_zone;
   CoarseStart start = defaults::coarse_start;
   /// Safeguard: a coarse correction after which the next relaxation's indicator exceeds
   /// `safeguard_growth` times the one before the coarse step is rejected (the pre-coarse local stage is restored) and the next

@@ -41,6 +41,9 @@ inline constexpr int post_relaxations = 1;     ///< ν2
 inline constexpr int coarse_iterations = 8;    ///< i_C
 /// Anderson depth of the coarse step's restricted LATIN (0: plain iterations; fas/coarse_step.hpp).
 inline constexpr int coarse_anderson = 2;
+/// The coarse step iterates on its contact zone only, the open nodes clear of the obstacle
+/// eliminated exactly (fas/coarse_zone.hpp; docs/method.md §4).
+inline constexpr bool coarse_zone = true;
 /// θ of the FAS safeguard: a correction is rejected when the next indicator exceeds θ times the one
 /// before the coarse step (fas/fas_options.hpp). It depends on the dimension and on the coarse space
 /// (docs/method.md §4): on the plane meshes corrections that raise the indicator up to 1.8 times

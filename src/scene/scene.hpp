@@ -88,6 +88,7 @@ struct FasSpec {
   int post_relaxations = defaults::post_relaxations;        ///< ν2 >= 0
   int coarse_iterations = defaults::coarse_iterations;      ///< i_C >= 1
   int coarse_anderson = defaults::coarse_anderson;          ///< Anderson depth of the coarse step, >= 0 (0: off)
+  bool coarse_zone = defaults::coarse_zone;                 ///< the coarse step on its contact zone only
   int residual_vectors = defaults::residual_vectors;        ///< N_res >= 0
   int svd_modes = defaults::svd_modes;                      ///< fas-aposteriori: leading energy-SVD modes (>= 0)
   /// fas-apriori: leading energy modes of the a priori expansion in the coarse space (>= 0; 0:

@@ -318,6 +318,7 @@ FasSpec readFas(const TableView& solver) {
   if (fas.safeguard_growth)
     requireRange(solver, "safeguard_growth", *fas.safeguard_growth,
                  *fas.safeguard_growth >= 1.0 && std::isfinite(*fas.safeguard_growth), "must be >= 1");
+  fas.coarse_zone = solver.optionalBool("coarse_zone").value_or(fas.coarse_zone);
   fas.adapt_coarse_iterations =
       solver.optionalBool("adapt_coarse_iterations").value_or(fas.adapt_coarse_iterations);
   if (solver.has("coarse_start"))
@@ -331,7 +332,8 @@ SolverSpec readSolver(const TableView& root, std::vector<std::string>& warnings)
   SolverSpec spec;
   const auto solver = root.optionalTable(
       "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
-                 "post_relaxations", "coarse_iterations", "coarse_anderson", "adapt_coarse_iterations", "safeguard_growth", "residual_vectors",
+                 "post_relaxations", "coarse_iterations", "coarse_anderson", "coarse_zone", "adapt_coarse_iterations", "safeguard_growth",
+                 "residual_vectors",
                  "svd_modes", "coarse_start", "pgd_max_modes", "pgd_increment_modes", "pgd_anticipate", "pgd_gap_share",
                  "pgd_modes_per_cycle", "pgd_seed_share"});
   if (!solver) return spec;

@@ -21,6 +21,7 @@ fas::FasOptions fasOptions(const SolverSpec& spec) {
   o.post_relaxations = spec.fas.post_relaxations;
   o.coarse_iterations = spec.fas.coarse_iterations;
   o.coarse_anderson = spec.fas.coarse_anderson;
+  o.coarse_zone = spec.fas.coarse_zone;
   o.start = spec.fas.coarse_start;
   o.adapt_coarse_iterations = spec.fas.adapt_coarse_iterations;
   o.safeguard_growth = spec.fas.safeguard_growth;

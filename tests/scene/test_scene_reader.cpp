@@ -342,7 +342,7 @@ TEST(SceneReader, FasKeysAreRead) {
                                      "residual_vectors = 5\nsvd_modes = 4\npgd_max_modes = 12\n"
                                      "pgd_increment_modes = 7\npgd_gap_share = 0.2\ncoarse_start = \"mismatch\"\n"
                                      "adapt_coarse_iterations = false\ncoarse_anderson = 0\nsafeguard_growth = 1\n"
-                                     "pgd_anticipate = false\n",
+                                     "pgd_anticipate = false\ncoarse_zone = false\n",
                              kSource);
   EXPECT_EQ(s.solver.fas.pre_relaxations, 2);
   EXPECT_EQ(s.solver.fas.post_relaxations, 0);
@@ -357,6 +357,8 @@ TEST(SceneReader, FasKeysAreRead) {
   EXPECT_FALSE(s.solver.fas.pgd_anticipate);
   EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.pgd_anticipate);  // the default
   EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.adapt_coarse_iterations);  // the default
+  EXPECT_FALSE(s.solver.fas.coarse_zone);
+  EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.coarse_zone);  // the default
   EXPECT_EQ(s.solver.fas.coarse_anderson, 0);
   EXPECT_EQ(s.solver.fas.safeguard_growth, 1.0);
   EXPECT_EQ(parseScene(kSeed, kSource).solver.fas.coarse_anderson, 2);        // the defaults
@@ -386,6 +388,7 @@ TEST(SceneReaderErrors, FasRangesAreChecked) {
   EXPECT_THAT(errorOf(kSeed + "coarse_start = \"middle\"\n"), HasSubstr("solver.coarse_start"));
   EXPECT_THAT(errorOf(kSeed + "adapt_coarse_iterations = 1\n"), HasSubstr("solver.adapt_coarse_iterations"));
   EXPECT_THAT(errorOf(kSeed + "pgd_anticipate = \"yes\"\n"), HasSubstr("solver.pgd_anticipate"));
+  EXPECT_THAT(errorOf(kSeed + "coarse_zone = 0\n"), HasSubstr("solver.coarse_zone"));
   EXPECT_THAT(errorOf(kSeed + "coarse_anderson = -1\n"), HasSubstr("'solver.coarse_anderson' = -1"));
   EXPECT_THAT(errorOf(kSeed + "safeguard_growth = 0.5\n"), HasSubstr("'solver.safeguard_growth' = 0.5"));
 }
