@@ -7,8 +7,9 @@
 //   SeparatedStage   the separated global stage (docs/method.md §5) on the directions found by 20
 //                    iterations of latin-pgd, without enrichment: three products with p columns
 //   LatinIteration   local stage + exact global stage + indicator
-//   CoarseStep       one FAS coarse step, i_C = 15, in the fas-apriori coarse space (default
-//                    modes + increment modes, seed eqs. (3)–(8))
+//   CoarseStep       one FAS coarse step at the defaults (i_C = 8, Anderson depth 2, on its
+//                    contact zone), in the fas-apriori coarse space (default modes + increment
+//                    modes, seed eqs. (3)–(8)); CoarseStepEveryNode the same with coarse_zone off
 //   CoarseSpace      the fas-apriori coarse space from the separated iterate (energy SVD of the
 //                    expansion's factors, pgd/separated_history.hpp)
 // Build and run (docs/micro_benchmarks.md):
@@ -111,10 +112,9 @@ void LatinIteration(benchmark::State& state) {
   label(state, z);
 }
 
-void CoarseStep(benchmark::State& state) {
+void coarseStepWith(benchmark::State& state, const stc::fas::FasOptions& options) {
   Sized& z = sized(static_cast<int>(state.range(0)));
   const stc::ThreadCountScope threads(static_cast<int>(state.range(1)));
-  const stc::fas::FasOptions options;  // i_C = 15, start (a)
   stc::InterfaceHistory hat;
   for (auto _ : state) {
     state.PauseTiming();
@@ -124,6 +124,14 @@ void CoarseStep(benchmark::State& state) {
     benchmark::ClobberMemory();
   }
   label(state, z, z.space.rank());
+}
+
+void CoarseStep(benchmark::State& state) { coarseStepWith(state, stc::fas::FasOptions{}); }
+
+void CoarseStepEveryNode(benchmark::State& state) {
+  stc::fas::FasOptions options;
+  options.coarse_zone = false;
+  coarseStepWith(state, options);
 }
 
 void SeparatedStage(benchmark::State& state) {
@@ -153,6 +161,7 @@ BENCHMARK(LocalStage)->Apply(threaded)->Unit(benchmark::kMicrosecond);
 BENCHMARK(GlobalStage)->Apply(threaded)->Unit(benchmark::kMillisecond);
 BENCHMARK(LatinIteration)->Apply(threaded)->Unit(benchmark::kMillisecond);
 BENCHMARK(CoarseStep)->Apply(threaded)->Unit(benchmark::kMillisecond);
+BENCHMARK(CoarseStepEveryNode)->Apply(threaded)->Unit(benchmark::kMillisecond);
 BENCHMARK(SeparatedStage)->Apply(serial)->Unit(benchmark::kMillisecond);
 BENCHMARK(CoarseSpace)->Apply(serial)->Unit(benchmark::kMillisecond);
 
