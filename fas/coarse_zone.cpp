@@ -1,6 +1,7 @@
 #include "fas/coarse_zone.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace stc::fas {
 namespace {
@@ -14,20 +15,22 @@ void addNode(int d, int i, bool in_zone, CoarseZone& zone) {
 }  // namespace
 
 CoarseZone coarseZone(const ContactInterface& contact, const InterfaceHistory& s, const InterfaceHistory& hat) {
+  const int d = contact.dimension, n = contact.size();
   const Eigen::Index m = hat.v.cols();
+  // Instant by instant: the fields are stored by column, a node's row is d n_C doubles apart from
+  // one instant to the next (on 401 nodes × 2001 instants, walking the rows took 7 % of a solve).
   double delta = 0.0;
-  for (int i = 0; i < contact.size(); ++i) {
-    const int n = contact.normalRow(i);
-    delta = std::max(delta, (s.v.row(n) - hat.v.row(n)).cwiseAbs().maxCoeff());
-  }
+  for (Eigen::Index j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) delta = std::max(delta, std::abs(s.v(d * i, j) - hat.v(d * i, j)));
+  std::vector<char> in_zone(static_cast<size_t>(n), 0);
+  for (Eigen::Index j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int row = d * i;
+      if (hat.lambda(row, j) > 0.0 || contact.initial_gap[i] + hat.v(row, j) < delta)
+        in_zone[static_cast<size_t>(i)] = 1;
+    }
   CoarseZone zone;
-  for (int i = 0; i < contact.size(); ++i) {
-    const int n = contact.normalRow(i);
-    const double g0 = contact.initial_gap[i];
-    bool in_zone = false;
-    for (Eigen::Index j = 0; j < m && !in_zone; ++j) in_zone = hat.lambda(n, j) > 0.0 || g0 + hat.v(n, j) < delta;
-    addNode(contact.dimension, i, in_zone, zone);
-  }
+  for (int i = 0; i < n; ++i) addNode(d, i, in_zone[static_cast<size_t>(i)] != 0, zone);
   return zone;
 }
 
