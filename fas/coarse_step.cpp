@@ -64,8 +64,10 @@ struct ZoneLinearStage {
   void apply(const Eigen::MatrixXd& z, Eigen::MatrixXd& xi) const {
     if (z.rows() > 0) xi.noalias() = map.transpose() * z;
     if (shift.size() == 0) return;
-    if (z.rows() > 0) xi += shift;
-    else xi = shift;
+    if (z.rows() > 0)
+      xi += shift;
+    else
+      xi = shift;
   }
 };
 
@@ -73,8 +75,8 @@ struct ZoneLinearStage {
 // stages and the i_C − 1 local stages between them: returns the last ξ and leaves in `w` the state
 // it came from.
 Eigen::MatrixXd iterateOnZone(const ContactInterface& zone_contact, const ZoneLinearStage& stage,
-                              const FasOptions& options, const Eigen::MatrixXd& v0, const Eigen::MatrixXd& W_s,
-                              Eigen::MatrixXd& w) {
+                              const FasOptions& options, const Eigen::MatrixXd& v0,
+                              const Eigen::MatrixXd& W_s, Eigen::MatrixXd& w) {
   const Eigen::VectorXd& k = zone_contact.search_direction;
   Eigen::MatrixXd image(w.rows(), w.cols()), z, xi, dv(w.rows(), w.cols());
   std::optional<AndersonMixing> mixing;
@@ -89,8 +91,10 @@ Eigen::MatrixXd iterateOnZone(const ContactInterface& zone_contact, const ZoneLi
     // The trial v = Bũ + B Δu, λ = W(ŝ) − k v (seed eq. (5)), its local stage and the next state
     // W(ŝ) = λ̂ + k v̂, in one pass.
     latin::localStageOfTrial(zone_contact, v0, dv, w, nullptr, &image);
-    if (mixing) mixing->nextTaking(w, image);
-    else w.swap(image);
+    if (mixing)
+      mixing->nextTaking(w, image);
+    else
+      w.swap(image);
   }
 }
 
@@ -108,7 +112,9 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
   }
   if (options.start == CoarseStart::ZeroCorrection) hat.v = s.v;  // start (a): ŝ = (Bũ, λ̃)
   // On the zone: w = W(ŝ) = λ̂ + k v̂, the restricted LATIN's state; W_s = λ + k Bũ, the fine stage's.
-  const auto on_zone = [&](const Eigen::MatrixXd& field) { return Eigen::MatrixXd(field(zone.rows, Eigen::all)); };
+  const auto on_zone = [&](const Eigen::MatrixXd& field) {
+    return Eigen::MatrixXd(field(zone.rows, Eigen::all));
+  };
   const Eigen::VectorXd k_zone = k(zone.rows);
   const Eigen::MatrixXd v0 = on_zone(s.v);
   const Eigen::MatrixXd W_s = on_zone(s.lambda) + k_zone.asDiagonal() * v0;

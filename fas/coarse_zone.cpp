@@ -14,7 +14,8 @@ void addNode(int d, int i, bool in_zone, CoarseZone& zone) {
 
 }  // namespace
 
-CoarseZone coarseZone(const ContactInterface& contact, const InterfaceHistory& s, const InterfaceHistory& hat) {
+CoarseZone coarseZone(const ContactInterface& contact, const InterfaceHistory& s,
+                      const InterfaceHistory& hat) {
   const int d = contact.dimension, n = contact.size();
   const Eigen::Index m = hat.v.cols();
   // Instant by instant: the fields are stored by column, a node's row is d n_C doubles apart from

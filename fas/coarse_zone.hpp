@@ -21,7 +21,8 @@ struct CoarseZone {
 /// From the global-stage iterate `s` (v, λ) and its local stage `hat` (v̂, λ̂): node i is in the
 /// zone when, at some instant, λ̂_n > 0 (closed) or its gap g0 + v̂_n is below δ, the largest
 /// |v_n − v̂_n| over the grid (how far apart the two iterates still are; 0 at convergence).
-CoarseZone coarseZone(const ContactInterface& contact, const InterfaceHistory& s, const InterfaceHistory& hat);
+CoarseZone coarseZone(const ContactInterface& contact, const InterfaceHistory& s,
+                      const InterfaceHistory& hat);
 
 /// Every node of the interface: nothing eliminated (the seed's coarse step).
 CoarseZone wholeInterface(const ContactInterface& contact);

@@ -155,7 +155,8 @@ ContactInterface restrictToNodes(const ContactInterface& contact, const std::vec
   std::vector<Eigen::Triplet<double>> select;  // (new row, old row)
   for (int j = 0; j < count; ++j) {
     const int i = nodes[static_cast<size_t>(j)];
-    if (i < 0 || i >= contact.size()) throw std::out_of_range("restrictToNodes: node index " + std::to_string(i));
+    if (i < 0 || i >= contact.size())
+      throw std::out_of_range("restrictToNodes: node index " + std::to_string(i));
     sub.nodes.push_back(contact.nodes[static_cast<size_t>(i)]);
     sub.normals.col(j) = contact.normals.col(i);
     sub.tangents.middleCols((d - 1) * j, d - 1) = contact.tangents.middleCols((d - 1) * i, d - 1);

@@ -332,10 +332,9 @@ SolverSpec readSolver(const TableView& root, std::vector<std::string>& warnings)
   SolverSpec spec;
   const auto solver = root.optionalTable(
       "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
-                 "post_relaxations", "coarse_iterations", "coarse_anderson", "coarse_zone", "adapt_coarse_iterations", "safeguard_growth",
-                 "residual_vectors",
-                 "svd_modes", "coarse_start", "pgd_max_modes", "pgd_increment_modes", "pgd_anticipate", "pgd_gap_share",
-                 "pgd_modes_per_cycle", "pgd_seed_share"});
+                 "post_relaxations", "coarse_iterations", "coarse_anderson", "coarse_zone", "adapt_coarse_iterations",
+                 "safeguard_growth", "residual_vectors", "svd_modes", "coarse_start", "pgd_max_modes",
+                 "pgd_increment_modes", "pgd_anticipate", "pgd_gap_share", "pgd_modes_per_cycle", "pgd_seed_share"});
   if (!solver) return spec;
   if (solver->has("name")) {
     spec.name = readKeyword(*solver, "name", kSolverNames);

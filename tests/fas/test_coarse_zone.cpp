@@ -9,9 +9,9 @@
 #include "latin/global_stage.hpp"
 #include "latin/latin_solver.hpp"
 #include "latin/local_stage.hpp"
+#include "solver/seed_scene.hpp"
 #include "src/linalg/dense_decompositions.hpp"
 #include "src/solver/incremental_solver.hpp"
-#include "solver/seed_scene.hpp"
 
 namespace {
 
@@ -65,7 +65,8 @@ struct CoarseFixture {
     const stc::SpdFactor K(problem.stiffness_free, "K");
     const Eigen::MatrixXd u = stc::displacementsFromForces(problem, K, reference.interface.lambda);
     using namespace stc::linalg;
-    const Eigen::MatrixXd modes = singularValueDecomposition(u, SvdMethod::divide_and_conquer, kThinU).U.leftCols(30);
+    const Eigen::MatrixXd modes =
+        singularValueDecomposition(u, SvdMethod::divide_and_conquer, kThinU).U.leftCols(30);
     stc::latin::GlobalStage global(problem);
     space = stc::fas::CoarseSpace(modes, global.matrix(), problem.contact.B);
     stc::latin::LatinOptions latin;
@@ -95,7 +96,9 @@ const CoarseFixture& coarseFixture() {
   return f;
 }
 
-double maxDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return (a - b).cwiseAbs().maxCoeff(); }
+double maxDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return (a - b).cwiseAbs().maxCoeff();
+}
 
 }  // namespace
 
@@ -108,11 +111,13 @@ TEST(CoarseStep, WithoutContactOneEliminatedStageIsTheLimitOfTheRestrictedLatin)
   stc::InterfaceHistory hat;
   stc::latin::localStage(clear, f.s, hat);
   ASSERT_TRUE(stc::fas::coarseZone(clear, f.s, hat).nodes.empty());
-  const stc::InterfaceHistory eliminated = f.coarseStep(clear, true, 1), whole = f.coarseStep(clear, false, 100);
+  const stc::InterfaceHistory eliminated = f.coarseStep(clear, true, 1),
+                              whole = f.coarseStep(clear, false, 100);
   const double force = f.s.lambda.cwiseAbs().maxCoeff(), motion = whole.v.cwiseAbs().maxCoeff();
   EXPECT_LE(maxDifference(eliminated.v, whole.v), 1e-12 * motion);  // measured: 5e-16
   EXPECT_LE(maxDifference(eliminated.lambda, whole.lambda), 1e-12 * force);
-  EXPECT_GT(maxDifference(eliminated.v, f.coarseStep(clear, false, 1).v), 1e-2 * motion);  // one plain stage is not it
+  EXPECT_GT(maxDifference(eliminated.v, f.coarseStep(clear, false, 1).v),
+            1e-2 * motion);  // one plain stage is not it
 }
 
 TEST(CoarseStep, EliminatingTheFarRowsKeepsTheFixedPointOfTheRestrictedLatin) {
@@ -127,7 +132,8 @@ TEST(CoarseStep, EliminatingTheFarRowsKeepsTheFixedPointOfTheRestrictedLatin) {
   stc::ContactInterface lifted = f.problem.contact;
   for (int i = 0; i < lifted.size(); ++i)
     if (!std::binary_search(zone.nodes.begin(), zone.nodes.end(), i)) lifted.initial_gap[i] += 10.0;
-  const stc::InterfaceHistory eliminated = f.coarseStep(lifted, true, 400), whole = f.coarseStep(lifted, false, 400);
+  const stc::InterfaceHistory eliminated = f.coarseStep(lifted, true, 400),
+                              whole = f.coarseStep(lifted, false, 400);
   const double force = whole.lambda.cwiseAbs().maxCoeff(), motion = whole.v.cwiseAbs().maxCoeff();
   // Measured: 1.9e-12 of the force and 2.5e-14 of the motion in Release, 5.5e-9 of the force with
   // the sanitizers (the Anderson-mixed iterations round differently and restart elsewhere); after
