@@ -60,14 +60,14 @@ struct ZoneLinearStage {
     return true;
   }
 
-  /// ξ from z = W_Z − W_s,Z (seed eq. (8) with R A P = I).
+  /// ξ from z = W_Z − W_s,Z (seed eq. (8) with R A P = I). An empty zone leaves the shift alone.
   void apply(const Eigen::MatrixXd& z, Eigen::MatrixXd& xi) const {
-    if (z.rows() > 0) xi.noalias() = map.transpose() * z;
-    if (shift.size() == 0) return;
-    if (z.rows() > 0)
-      xi += shift;
-    else
+    if (z.rows() == 0) {
       xi = shift;
+      return;
+    }
+    xi.noalias() = map.transpose() * z;
+    if (shift.size() > 0) xi += shift;
   }
 };
 
@@ -115,11 +115,12 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
   const auto on_zone = [&](const Eigen::MatrixXd& field) {
     return Eigen::MatrixXd(field(zone.rows, Eigen::all));
   };
-  const Eigen::VectorXd k_zone = k(zone.rows);
+  const ContactInterface zone_contact = restrictToNodes(contact, zone.nodes);
+  const Eigen::VectorXd& k_zone = zone_contact.search_direction;
   const Eigen::MatrixXd v0 = on_zone(s.v);
   const Eigen::MatrixXd W_s = on_zone(s.lambda) + k_zone.asDiagonal() * v0;
   Eigen::MatrixXd w = on_zone(hat.lambda) + k_zone.asDiagonal() * on_zone(hat.v);
-  const Eigen::MatrixXd xi = iterateOnZone(restrictToNodes(contact, zone.nodes), stage, options, v0, W_s, w);
+  const Eigen::MatrixXd xi = iterateOnZone(zone_contact, stage, options, v0, W_s, w);
   // The last trial on every node (the far ones open: W_F = k_F v_F) and its fine local stage.
   const ThreadCountScope threads(threadsFor(s.v.rows(), s.v.cols()));
   const Eigen::MatrixXd dv = BY * xi;
