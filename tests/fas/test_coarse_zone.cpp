@@ -6,12 +6,10 @@
 
 #include "fas/coarse_step.hpp"
 #include "fas/coarse_zone.hpp"
+#include "fas/seed_fas_fixture.hpp"
 #include "latin/global_stage.hpp"
 #include "latin/latin_solver.hpp"
 #include "latin/local_stage.hpp"
-#include "solver/seed_scene.hpp"
-#include "src/linalg/dense_decompositions.hpp"
-#include "src/solver/incremental_solver.hpp"
 
 namespace {
 
@@ -57,27 +55,16 @@ namespace {
 // iterations), and a coarse space of the solution's 30 leading displacement modes: more than the
 // closed nodes (7) need, so that the restricted LATIN converges.
 struct CoarseFixture {
-  stc::Problem problem = make();
+  const stc::Problem& problem = stc::test::seedFas().problem;
   stc::fas::CoarseSpace space;
   stc::InterfaceHistory s;
   CoarseFixture() {
-    const stc::SolveResult reference = stc::solveIncremental(problem);
-    const stc::SpdFactor K(problem.stiffness_free, "K");
-    const Eigen::MatrixXd u = stc::displacementsFromForces(problem, K, reference.interface.lambda);
-    using namespace stc::linalg;
-    const Eigen::MatrixXd modes =
-        singularValueDecomposition(u, SvdMethod::divide_and_conquer, kThinU).U.leftCols(30);
     stc::latin::GlobalStage global(problem);
-    space = stc::fas::CoarseSpace(modes, global.matrix(), problem.contact.B);
+    space = stc::fas::CoarseSpace(stc::test::seedFas().leadingModes(30), global.matrix(), problem.contact.B);
     stc::latin::LatinOptions latin;
     latin.max_iterations = 6;
     latin.tolerance = 1e-14;
     s = stc::latin::solveLatin(problem, latin).interface;
-  }
-  static stc::Problem make() {
-    stc::Scene scene = stc::test::seedScene(31, 41);
-    scene.solver.search_scale = 3.0;
-    return stc::buildProblem(scene);
   }
   // The coarse step from s and its local stage on `contact`, i_C = `iterations`.
   stc::InterfaceHistory coarseStep(const stc::ContactInterface& contact, bool zone, int iterations) const {

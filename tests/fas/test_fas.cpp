@@ -12,33 +12,12 @@
 #include "src/core/input_error.hpp"
 #include "src/linalg/dense_decompositions.hpp"
 #include "src/solver/incremental_solver.hpp"
+#include "fas/seed_fas_fixture.hpp"
 #include "solver/seed_scene.hpp"
 
 namespace {
 
-struct Fixture {
-  stc::Problem problem;
-  stc::SolveResult reference;
-  Eigen::MatrixXd u_ref;  // converged free displacements, n_free × m
-  Fixture() : problem(make()), reference(stc::solveIncremental(problem)) {
-    const stc::SpdFactor K(problem.stiffness_free, "K");
-    u_ref = stc::displacementsFromForces(problem, K, reference.interface.lambda);
-  }
-  static stc::Problem make() {
-    stc::Scene scene = stc::test::seedScene(31, 41);
-    scene.solver.search_scale = 3.0;
-    return stc::buildProblem(scene);
-  }
-  Eigen::MatrixXd leadingModes(int count) const {
-    using namespace stc::linalg;
-    return singularValueDecomposition(u_ref, SvdMethod::divide_and_conquer, kThinU).U.leftCols(count);
-  }
-};
-
-const Fixture& fixture() {
-  static const Fixture f;
-  return f;
-}
+const stc::test::SeedFas& fixture() { return stc::test::seedFas(); }
 
 double relativeDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();

@@ -1,0 +1,39 @@
+#pragma once
+// The FAS tests' reference problem: the seed scene on 31 contact nodes × 41 instants (κ = 3), its
+// incremental solution and the converged free displacements, built once per test program.
+#include <Eigen/Core>
+
+#include "solver/seed_scene.hpp"
+#include "src/linalg/dense_decompositions.hpp"
+#include "src/linalg/spd_factor.hpp"
+#include "src/solver/condensed_interface.hpp"
+#include "src/solver/incremental_solver.hpp"
+
+namespace stc::test {
+
+struct SeedFas {
+  Problem problem;
+  SolveResult reference;
+  Eigen::MatrixXd u_ref;  ///< converged free displacements, n_free × m
+  SeedFas() : problem(make()), reference(solveIncremental(problem)) {
+    const SpdFactor K(problem.stiffness_free, "K");
+    u_ref = displacementsFromForces(problem, K, reference.interface.lambda);
+  }
+  static Problem make() {
+    Scene scene = seedScene(31, 41);
+    scene.solver.search_scale = 3.0;
+    return buildProblem(scene);
+  }
+  /// The leading `count` left singular vectors of u_ref.
+  Eigen::MatrixXd leadingModes(int count) const {
+    using namespace linalg;
+    return singularValueDecomposition(u_ref, SvdMethod::divide_and_conquer, kThinU).U.leftCols(count);
+  }
+};
+
+inline const SeedFas& seedFas() {
+  static const SeedFas f;
+  return f;
+}
+
+}  // namespace stc::test
