@@ -123,7 +123,7 @@ class CoarseGuard {
 }  // namespace
 
 SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
-                     const FasOptions& options, const std::string& solver_name, const ErrorReference* reference,
+                     const FasOptions& options, const std::string& solver_name, const ErrorMeasure* reference,
                      const IterationCallback& callback) {
   return solveFas(problem, global, provider, InterfaceHistory::zeros(problem.contact, problem.numSteps()),
                   options, solver_name, reference, callback);
@@ -131,7 +131,7 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
 
 SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
                      const InterfaceHistory& start, const FasOptions& options, const std::string& solver_name,
-                     const ErrorReference* reference, const IterationCallback& callback) {
+                     const ErrorMeasure* reference, const IterationCallback& callback) {
   options.validate();
   requireFits(start, problem);
   const EquilibriumEnergy energy(problem, global.factor());

@@ -16,12 +16,12 @@ namespace stc::fas {
 /// `solver_name` is recorded in the summary ("fas-aposteriori", "fas-apriori"). Starts from s = 0.
 SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
                      const FasOptions& options, const std::string& solver_name,
-                     const ErrorReference* reference = nullptr, const IterationCallback& callback = {});
+                     const ErrorMeasure* reference = nullptr, const IterationCallback& callback = {});
 
 /// The same from `start` (2n_C × m), e.g. a neighbouring problem's converged solution (a warm
 /// start): the fine level begins with the local stage of `start`, as it does of s = 0 otherwise.
 SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
                      const InterfaceHistory& start, const FasOptions& options, const std::string& solver_name,
-                     const ErrorReference* reference = nullptr, const IterationCallback& callback = {});
+                     const ErrorMeasure* reference = nullptr, const IterationCallback& callback = {});
 
 }  // namespace stc::fas

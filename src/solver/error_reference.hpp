@@ -16,11 +16,12 @@
 #include <mutex>
 
 #include "src/solver/condensed_interface.hpp"
+#include "src/solver/error_measure.hpp"
 #include "src/solver/lazy_delassus.hpp"
 
 namespace stc {
 
-class ErrorReference {
+class ErrorReference : public ErrorMeasure {
  public:
   /// `lambda_ref` (2n_C × m): the reference contact forces, e.g. from solveIncremental.
   ErrorReference(const Problem& problem, const SpdFactor& stiffness_free, Eigen::MatrixXd delassus,
@@ -28,16 +29,16 @@ class ErrorReference {
   /// The same with W computed lazily (header); keeps the factor and refers to `problem`, which must
   /// outlive it. relativeError may then be called from several threads (the columns are guarded).
   ErrorReference(const Problem& problem, std::shared_ptr<const SpdFactor> stiffness_free, Eigen::MatrixXd lambda_ref);
-  ~ErrorReference();
+  ~ErrorReference() override;
 
   /// Relative energy error of an equilibrated iterate given by its contact forces; NaN when
   /// undefined (see defined()).
-  double relativeError(const Eigen::MatrixXd& lambda) const;
+  double relativeError(const Eigen::MatrixXd& lambda) const override;
   /// False when the reference's strain energy is zero to round-off (a rigid motion without
   /// contact): the relative error is then 0/0, and its value would be noise (e.g. 1e3 for a
   /// correct iterate). Round-off: Σ uᵀKu has an absolute error up to γ_n Σ |u|ᵀ|K||u|,
   /// γ_n ≈ n ε (Higham, Accuracy and Stability, §3.1), n the number of dofs.
-  bool defined() const { return defined_; }
+  bool defined() const override { return defined_; }
   /// Σ_k u_ref,kᵀ K u_ref,k (full field, full K).
   double referenceEnergy() const { return reference_energy_; }
   const Eigen::MatrixXd& referenceForces() const { return lambda_ref_; }

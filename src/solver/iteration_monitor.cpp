@@ -6,7 +6,7 @@
 namespace stc {
 
 IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const EquilibriumEnergy* energy,
-                                   const ErrorReference* reference, IterationCallback callback)
+                                   const ErrorMeasure* reference, IterationCallback callback)
     : rule_(rule),
       energy_(energy),
       estimator_(rule.estimate_period, rule.estimate_order, rule.estimate_safety, rule.estimate_window,

@@ -12,7 +12,7 @@
 #include "src/solver/calibrated_estimate.hpp"
 #include "src/solver/equilibrium_energy.hpp"
 #include "src/solver/error_estimate.hpp"
-#include "src/solver/error_reference.hpp"
+#include "src/solver/error_measure.hpp"
 #include "src/solver/solve_summary.hpp"
 
 namespace stc {
@@ -42,7 +42,7 @@ class IterationMonitor {
   /// `energy` normalises the error estimate; without it (unit tests of the bookkeeping) the
   /// indicator stands in for the estimate.
   IterationMonitor(std::string solver, StoppingRule rule, const EquilibriumEnergy* energy,
-                   const ErrorReference* reference = nullptr, IterationCallback callback = {});
+                   const ErrorMeasure* reference = nullptr, IterationCallback callback = {});
 
   /// Records one iteration whose equilibrated iterate is `s`; returns true when the solve must stop
   /// (the summary says why).
@@ -68,7 +68,7 @@ class IterationMonitor {
   const EquilibriumEnergy* energy_;
   ErrorEstimator estimator_;
   CalibratedIndicatorEstimator calibrated_;
-  const ErrorReference* reference_;
+  const ErrorMeasure* reference_;
   IterationCallback callback_;
   std::chrono::steady_clock::time_point start_;
   double measure_s_ = 0.0;  // seconds spent in the true-error measure
