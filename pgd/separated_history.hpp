@@ -10,6 +10,7 @@
 // itself, converged as soon as the expansion is. The leading singular vectors come from a
 // randomized range finder with subspace iterations (leadingSingularVectors), at O(s' m r) cost.
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "pgd/response_basis.hpp"
 
@@ -40,6 +41,11 @@ EnergySvd energySvd(const ResponseBasis& basis, const Eigen::MatrixXd& c, int co
 Eigen::MatrixXd spatialModes(const ResponseBasis& basis, const Eigen::MatrixXd& combination);
 /// Their traces B Y = [V_F T] · combination (2n_C × r).
 Eigen::MatrixXd modeTraces(const ResponseBasis& basis, const Eigen::MatrixXd& combination);
+
+/// B_rows u for the history with coordinates `c` (p × m, p ≤ basis.size()): B_rows (U_F G + X c), for
+/// rows of B that are not the basis's own interface (rows × n_free), e.g. nodes left out of it.
+Eigen::MatrixXd displacementTraces(const ResponseBasis& basis, const Eigen::MatrixXd& c,
+                                   const Eigen::SparseMatrix<double>& B_rows);
 
 /// Every mode of the energy SVD of the history (n_free × r): SolveResult::spatial_modes.
 Eigen::MatrixXd energyModes(const ResponseBasis& basis, const Eigen::MatrixXd& c);

@@ -44,6 +44,9 @@ inline constexpr int coarse_anderson = 2;
 /// The coarse step iterates on its contact zone only, the open nodes clear of the obstacle
 /// eliminated exactly (fas/coarse_zone.hpp; docs/method.md §4).
 inline constexpr bool coarse_zone = true;
+/// fas-apriori solves on the contact nodes that can touch, the others checked open afterwards
+/// (src/strategies/reduced_interface.hpp; docs/method.md §5).
+inline constexpr bool reduce_interface = true;
 /// θ of the FAS safeguard: a correction is rejected when the next indicator exceeds θ times the one
 /// before the coarse step (fas/fas_options.hpp). It depends on the dimension and on the coarse space
 /// (docs/method.md §4): on the plane meshes corrections that raise the indicator up to 1.8 times

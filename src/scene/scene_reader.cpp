@@ -319,6 +319,7 @@ FasSpec readFas(const TableView& solver) {
     requireRange(solver, "safeguard_growth", *fas.safeguard_growth,
                  *fas.safeguard_growth >= 1.0 && std::isfinite(*fas.safeguard_growth), "must be >= 1");
   fas.coarse_zone = solver.optionalBool("coarse_zone").value_or(fas.coarse_zone);
+  fas.reduce_interface = solver.optionalBool("reduce_interface").value_or(fas.reduce_interface);
   fas.adapt_coarse_iterations =
       solver.optionalBool("adapt_coarse_iterations").value_or(fas.adapt_coarse_iterations);
   if (solver.has("coarse_start"))
@@ -332,7 +333,8 @@ SolverSpec readSolver(const TableView& root, std::vector<std::string>& warnings)
   SolverSpec spec;
   const auto solver = root.optionalTable(
       "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
-                 "post_relaxations", "coarse_iterations", "coarse_anderson", "coarse_zone", "adapt_coarse_iterations",
+                 "post_relaxations", "coarse_iterations", "coarse_anderson", "coarse_zone", "reduce_interface",
+                 "adapt_coarse_iterations",
                  "safeguard_growth", "residual_vectors", "svd_modes", "coarse_start", "pgd_max_modes",
                  "pgd_increment_modes", "pgd_anticipate", "pgd_gap_share", "pgd_modes_per_cycle", "pgd_seed_share"});
   if (!solver) return spec;

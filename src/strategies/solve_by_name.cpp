@@ -10,6 +10,7 @@
 #include "pgd/separated_history.hpp"
 #include "src/core/input_error.hpp"
 #include "src/solver/incremental_solver.hpp"
+#include "src/strategies/reduced_interface.hpp"
 
 namespace stc {
 
@@ -64,14 +65,10 @@ SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, con
 }
 
 SolveResult solveApriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
-  pgd::ControlledGlobalStage stage(problem, stageOptions(spec));
-  if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
-  fas::AprioriBasisProvider provider(stage, aprioriOptions(spec));
-  SolveResult result = fas::solveFas(problem, stage, provider, startOf(problem, inputs), fasOptions(spec),
-                                     "fas-apriori", inputs.reference, inputs.callback);
-  result.interface_directions = stage.basis().directions();
-  result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
-  return result;
+  if (spec.fas.reduce_interface && problem.contact.size() > 0) return solveAprioriOnContactZone(problem, spec, inputs);
+  Eigen::MatrixXd none;
+  return solveAprioriOn(problem, spec, startOf(problem, inputs), inputs.basis_seed, inputs.reference, inputs.callback,
+                        Eigen::SparseMatrix<double>(0, problem.numFreeDofs()), none);
 }
 
 SolveResult solveLatinPgd(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {

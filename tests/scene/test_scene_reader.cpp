@@ -342,7 +342,7 @@ TEST(SceneReader, FasKeysAreRead) {
                                      "residual_vectors = 5\nsvd_modes = 4\npgd_max_modes = 12\n"
                                      "pgd_increment_modes = 7\npgd_gap_share = 0.2\ncoarse_start = \"mismatch\"\n"
                                      "adapt_coarse_iterations = false\ncoarse_anderson = 0\nsafeguard_growth = 1\n"
-                                     "pgd_anticipate = false\ncoarse_zone = false\n",
+                                     "pgd_anticipate = false\ncoarse_zone = false\nreduce_interface = false\n",
                              kSource);
   EXPECT_EQ(s.solver.fas.pre_relaxations, 2);
   EXPECT_EQ(s.solver.fas.post_relaxations, 0);
@@ -359,6 +359,8 @@ TEST(SceneReader, FasKeysAreRead) {
   EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.adapt_coarse_iterations);  // the default
   EXPECT_FALSE(s.solver.fas.coarse_zone);
   EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.coarse_zone);  // the default
+  EXPECT_FALSE(s.solver.fas.reduce_interface);
+  EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.reduce_interface);  // the default
   EXPECT_EQ(s.solver.fas.coarse_anderson, 0);
   EXPECT_EQ(s.solver.fas.safeguard_growth, 1.0);
   EXPECT_EQ(parseScene(kSeed, kSource).solver.fas.coarse_anderson, 2);        // the defaults
@@ -389,6 +391,7 @@ TEST(SceneReaderErrors, FasRangesAreChecked) {
   EXPECT_THAT(errorOf(kSeed + "adapt_coarse_iterations = 1\n"), HasSubstr("solver.adapt_coarse_iterations"));
   EXPECT_THAT(errorOf(kSeed + "pgd_anticipate = \"yes\"\n"), HasSubstr("solver.pgd_anticipate"));
   EXPECT_THAT(errorOf(kSeed + "coarse_zone = 0\n"), HasSubstr("solver.coarse_zone"));
+  EXPECT_THAT(errorOf(kSeed + "reduce_interface = 1\n"), HasSubstr("solver.reduce_interface"));
   EXPECT_THAT(errorOf(kSeed + "coarse_anderson = -1\n"), HasSubstr("'solver.coarse_anderson' = -1"));
   EXPECT_THAT(errorOf(kSeed + "safeguard_growth = 0.5\n"), HasSubstr("'solver.safeguard_growth' = 0.5"));
 }

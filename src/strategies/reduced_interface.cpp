@@ -1,0 +1,332 @@
+#include "src/strategies/reduced_interface.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "fas/coarse_zone.hpp"
+#include "fas/fas_solver.hpp"
+#include "latin/indicator.hpp"
+#include "latin/local_stage.hpp"
+#include "pgd/separated_history.hpp"
+#include "src/solver/warm_start.hpp"
+
+namespace stc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int kZoneRounds = 3;          ///< restricted solves before the whole interface
+constexpr double kWholeShare = 0.75;    ///< a zone above this share of the nodes: the whole interface
+
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::vector<int> rowsOfNodes(int d, const std::vector<int>& nodes) {
+  std::vector<int> rows;
+  rows.reserve(nodes.size() * static_cast<size_t>(d));
+  for (int i : nodes)
+    for (int a = 0; a < d; ++a) rows.push_back(d * i + a);
+  return rows;
+}
+
+std::vector<int> otherNodes(int n, const std::vector<int>& nodes) {
+  std::vector<char> in(static_cast<size_t>(n), 0);
+  for (int i : nodes) in[static_cast<size_t>(i)] = 1;
+  std::vector<int> others;
+  for (int i = 0; i < n; ++i)
+    if (!in[static_cast<size_t>(i)]) others.push_back(i);
+  return others;
+}
+
+Eigen::SparseMatrix<double> rowsOf(const Eigen::SparseMatrix<double>& B, const std::vector<int>& rows) {
+  Eigen::SparseMatrix<double> S(static_cast<Eigen::Index>(rows.size()), B.rows());
+  std::vector<Eigen::Triplet<double>> ones;
+  for (size_t r = 0; r < rows.size(); ++r) ones.emplace_back(static_cast<int>(r), rows[r], 1.0);
+  S.setFromTriplets(ones.begin(), ones.end());
+  return S * B;
+}
+
+InterfaceHistory restricted(const InterfaceHistory& h, const std::vector<int>& rows) {
+  return {h.v(rows, Eigen::all), h.lambda(rows, Eigen::all)};
+}
+
+// The history on the whole interface: `part` on `rows`, λ = 0 and v = `far_v` on `far_rows`.
+InterfaceHistory lifted(const InterfaceHistory& part, const std::vector<int>& rows, const std::vector<int>& far_rows,
+                        const Eigen::MatrixXd& far_v, int all_rows) {
+  InterfaceHistory h = InterfaceHistory::zerosWithRows(all_rows, part.numSteps());
+  h.v(rows, Eigen::all) = part.v;
+  h.lambda(rows, Eigen::all) = part.lambda;
+  h.v(far_rows, Eigen::all) = far_v;
+  return h;
+}
+
+// The nodes of `far` whose gap g0 + v_n is negative at some instant (far_v: their rows, d per node).
+std::vector<int> penetrating(const ContactInterface& contact, const std::vector<int>& far, const Eigen::MatrixXd& far_v) {
+  const int d = contact.dimension;
+  std::vector<int> out;
+  for (size_t f = 0; f < far.size(); ++f) {
+    const int i = far[f];
+    if ((contact.initial_gap[i] + far_v.row(d * static_cast<Eigen::Index>(f)).array()).minCoeff() < 0.0) out.push_back(i);
+  }
+  return out;
+}
+
+// What the solves before the current one add to its records: the first relaxation, earlier rounds,
+// and the time before its own clock started.
+struct Offsets {
+  int iterations = 0, relaxations = 0, sparse_solves = 0;
+  double wall_s = 0.0;
+};
+
+IterationRecord shifted(IterationRecord r, const Offsets& o) {
+  r.iteration += o.iterations;
+  r.relaxations += o.relaxations;
+  r.sparse_solves += o.sparse_solves;
+  r.wall_s += o.wall_s;
+  return r;
+}
+
+// The first relaxation on the whole interface: its local stage ŝ (the restricted solves' start), the
+// nodes of its contact zone, and its record (iteration 1 of the history).
+struct FirstRelaxation {
+  InterfaceHistory s, hat;
+  std::vector<int> zone;
+  IterationRecord record;
+  double measure_s = 0.0;  ///< time spent measuring its true error
+};
+
+FirstRelaxation firstRelaxation(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs,
+                                Clock::time_point start) {
+  pgd::ControlledGlobalStage stage(problem, stageOptions(spec));
+  if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
+  FirstRelaxation first;
+  stage.solve(inputs.start ? *inputs.start : InterfaceHistory::zeros(problem.contact, problem.numSteps()), first.s);
+  latin::localStage(problem.contact, first.s, first.hat);
+  first.zone = fas::coarseZone(problem.contact, first.s, first.hat).nodes;
+  IterationRecord& r = first.record;
+  const auto measured = Clock::now();
+  if (inputs.reference && inputs.reference->defined()) r.error = inputs.reference->relativeError(first.s.lambda);
+  first.measure_s = secondsSince(measured);
+  r.iteration = r.relaxations = 1;
+  r.indicator = latin::indicator(problem.contact.search_direction, first.s, first.hat);
+  r.error_estimate = std::numeric_limits<double>::infinity();  // no contraction rate yet
+  r.rank = stage.rank();
+  r.sparse_solves = static_cast<int>(stage.sparseSolves());
+  r.wall_s = secondsSince(start) - first.measure_s;
+  return first;
+}
+
+// The result when the caller stops the solve at the first relaxation.
+SolveResult stoppedAtFirst(const FirstRelaxation& first) {
+  SolveResult out;
+  out.interface = first.s;
+  out.contact_admissible = first.hat;
+  SolveSummary& sum = out.summary;
+  sum.solver = "fas-apriori";
+  sum.termination = Termination::StoppedByCallback;
+  sum.message = "stopped by the caller after the first relaxation";
+  sum.history = {first.record};
+  sum.iterations = sum.relaxations = 1;
+  sum.indicator = first.record.indicator;
+  sum.error_estimate = first.record.error_estimate;
+  sum.error = first.record.error;
+  sum.wall_s = first.record.wall_s;
+  return out;
+}
+
+}  // namespace
+
+ErrorOnRows::ErrorOnRows(const ErrorMeasure& whole, std::vector<int> rows, int all_rows)
+    : whole_(whole), rows_(std::move(rows)), all_rows_(all_rows) {}
+
+double ErrorOnRows::relativeError(const Eigen::MatrixXd& lambda) const {
+  const auto start = Clock::now();
+  Eigen::MatrixXd all = Eigen::MatrixXd::Zero(all_rows_, lambda.cols());
+  all(rows_, Eigen::all) = lambda;
+  const double error = whole_.relativeError(all);
+  nanoseconds_ += std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+  return error;
+}
+
+SolveResult solveAprioriOn(const Problem& problem, const SolverSpec& spec, const InterfaceHistory& start,
+                           const Eigen::MatrixXd* seed, const ErrorMeasure* reference, const IterationCallback& callback,
+                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v) {
+  pgd::ControlledGlobalStage stage(problem, stageOptions(spec));
+  if (seed) stage.seed(*seed);
+  fas::AprioriBasisProvider provider(stage, aprioriOptions(spec));
+  SolveResult result = fas::solveFas(problem, stage, provider, start, fasOptions(spec), "fas-apriori", reference, callback);
+  result.interface_directions = stage.basis().directions();
+  result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
+  far_v = pgd::displacementTraces(stage.basis(), stage.coordinates(), B_far);
+  return result;
+}
+
+SolveResult solveAprioriOnContactZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+  const auto start = Clock::now();
+  if (inputs.start) requireFits(*inputs.start, problem);
+  const FirstRelaxation first = firstRelaxation(problem, spec, inputs, start);
+  if (inputs.callback && !inputs.callback(first.record)) return stoppedAtFirst(first);
+  std::vector<int> zone = first.zone;
+  const int n = problem.contact.size();
+  if (zone.empty() || zone.size() > kWholeShare * n) zone = otherNodes(n, {});
+  ZoneStart from;
+  from.hat = first.hat;
+  from.start = inputs.start;
+  from.first = first.record;
+  from.measure_s = first.measure_s;
+  from.clock = start;
+  return solveAprioriOnZone(problem, spec, inputs, std::move(zone), from);
+}
+
+namespace {
+
+// The rounds of solveAprioriOnZone: what they have spent so far, and where the next one starts.
+class ZoneRounds {
+ public:
+  ZoneRounds(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs, const ZoneStart& from)
+      : problem_(problem), spec_(spec), inputs_(inputs), from_(from), hat_(from.hat), measure_s_(from.measure_s) {
+    if (from.first) {
+      history_.push_back(*from.first);
+      offsets_ = {from.first->iteration, from.first->relaxations, from.first->sparse_solves, 0.0};
+    }
+    if (inputs.basis_seed) seed_ = *inputs.basis_seed;
+  }
+
+  /// One restricted solve on `zone`, lifted to the whole interface; `penetrating` receives the nodes
+  /// left out that its displacement pushes into the obstacle.
+  SolveResult solve(const std::vector<int>& zone, std::vector<int>& penetrating_nodes) {
+    const ContactInterface& contact = problem_.contact;
+    const int d = contact.dimension;
+    const std::vector<int> far = otherNodes(contact.size(), zone);
+    const std::vector<int> rows = rowsOfNodes(d, zone), far_rows = rowsOfNodes(d, far);
+    Problem part = problem_;
+    part.contact = restrictToNodes(contact, zone);
+    if (inputs_.reference) measure_.emplace(*inputs_.reference, rows, contact.rows());
+    const Offsets before = offsets_;
+    std::optional<double> clock;  // the restricted solve's clock starts after its set-up
+    const IterationCallback shift = [&](const IterationRecord& r) {
+      if (!clock) clock = clockOffset(r.wall_s);
+      return !inputs_.callback || inputs_.callback(shifted(r, withClock(before, *clock)));
+    };
+    const Eigen::MatrixXd part_seed = seed_ ? Eigen::MatrixXd((*seed_)(rows, Eigen::all)) : Eigen::MatrixXd();
+    SolverSpec budget = spec_;  // the iteration cap holds for the rounds together
+    budget.max_iterations = std::max(1, spec_.max_iterations - offsets_.relaxations);
+    Eigen::MatrixXd far_v;
+    SolveResult r = solveAprioriOn(part, budget, restricted(hat_, rows), seed_ ? &part_seed : nullptr,
+                                   measure_ ? &*measure_ : nullptr, shift, rowsOf(contact.B, far_rows), far_v);
+    count(r.summary, withClock(before, clock.value_or(clockOffset(r.summary.wall_s))));
+    penetrating_nodes = penetrating(contact, far, far_v);
+    return liftedResult(std::move(r), rows, far_rows, far_v);
+  }
+
+  /// Whether the rounds must stop: the caller stopped them or the iteration cap is spent.
+  bool spent(const SolveSummary& last) const {
+    return last.termination == Termination::StoppedByCallback || offsets_.relaxations >= spec_.max_iterations;
+  }
+
+  /// The next round starts from `last`, or from the first start when it did not converge (it
+  /// stagnated: κ = 0.01 of the hard cases), as a solve without the reduction would.
+  void startNext(const SolveResult& last) {
+    if (measure_) measure_s_ += measure_->secondsSpent();
+    measure_.reset();
+    if (last.summary.converged()) {
+      hat_ = *last.contact_admissible;
+      seed_ = last.interface_directions;
+      return;
+    }
+    hat_ = from_.start ? *from_.start : InterfaceHistory::zeros(problem_.contact, problem_.numSteps());
+    seed_.reset();
+    if (inputs_.basis_seed) seed_ = *inputs_.basis_seed;
+  }
+
+  /// The summary of all rounds: their history, counts and time; `rounds` says what they did.
+  void finish(SolveSummary& summary, const std::string& rounds) {
+    const std::string inner = "after " + std::to_string(summary.iterations) + " iterations";
+    const size_t at = summary.message.find(inner);
+    if (at != std::string::npos)
+      summary.message.replace(at, inner.size(), "after " + std::to_string(offsets_.iterations) + " iterations");
+    summary.message += "; solved on " + rounds;
+    if (from_.first) summary.message += " (first relaxation on all " + std::to_string(problem_.contact.size()) + ")";
+    summary.history = std::move(history_);
+    summary.iterations = offsets_.iterations;
+    summary.relaxations = offsets_.relaxations;
+    summary.wall_s = clockOffset(0.0);
+  }
+
+ private:
+  // Seconds on this solve's clock (from from_.clock, the true-error measure left out as the
+  // monitor leaves it out) less `wall_s`.
+  double clockOffset(double wall_s) const {
+    return secondsSince(from_.clock) - measure_s_ - (measure_ ? measure_->secondsSpent() : 0.0) - wall_s;
+  }
+  static Offsets withClock(Offsets o, double wall_s) {
+    o.wall_s = wall_s;
+    return o;
+  }
+  void count(const SolveSummary& sum, const Offsets& o) {
+    for (const IterationRecord& record : sum.history) history_.push_back(shifted(record, o));
+    offsets_.iterations += sum.iterations;
+    offsets_.relaxations += sum.relaxations;
+    if (!history_.empty()) offsets_.sparse_solves = history_.back().sparse_solves;
+  }
+  // The result on the whole interface: λ = 0 and v = far_v on the rows left out.
+  SolveResult liftedResult(SolveResult r, const std::vector<int>& rows, const std::vector<int>& far_rows,
+                     const Eigen::MatrixXd& far_v) const {
+    const int all_rows = problem_.contact.rows();
+    SolveResult out;
+    out.interface = lifted(r.interface, rows, far_rows, far_v, all_rows);
+    out.contact_admissible = lifted(r.admissible(), rows, far_rows, far_v, all_rows);
+    out.interface_directions = Eigen::MatrixXd::Zero(all_rows, r.interface_directions.cols());
+    out.interface_directions(rows, Eigen::all) = r.interface_directions;
+    out.spatial_modes = std::move(r.spatial_modes);
+    out.summary = std::move(r.summary);
+    return out;
+  }
+
+  const Problem& problem_;
+  const SolverSpec& spec_;
+  const StrategyInputs& inputs_;
+  const ZoneStart& from_;
+  InterfaceHistory hat_;
+  std::optional<Eigen::MatrixXd> seed_;
+  Offsets offsets_;
+  std::vector<IterationRecord> history_;
+  std::optional<ErrorOnRows> measure_;
+  double measure_s_ = 0.0;  ///< true-error measures of earlier rounds
+};
+
+std::string zoneSize(const std::vector<int>& zone, int n) {
+  return std::to_string(zone.size()) + " of " + std::to_string(n) + " contact nodes";
+}
+
+}  // namespace
+
+SolveResult solveAprioriOnZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs,
+                               std::vector<int> zone, const ZoneStart& from) {
+  const int n = problem.contact.size();
+  ZoneRounds rounds(problem, spec, inputs, from);
+  std::string log;  // what each round did, for the summary's message
+  for (int round = 1;; ++round) {
+    std::vector<int> wrong;
+    SolveResult out = rounds.solve(zone, wrong);
+    const SolveSummary& sum = out.summary;
+    if ((wrong.empty() && sum.converged()) || rounds.spent(sum) || static_cast<int>(zone.size()) == n) {
+      log += zoneSize(zone, n) + (wrong.empty() ? "" : ", " + std::to_string(wrong.size()) + " nodes left out penetrating");
+      rounds.finish(out.summary, log);
+      return out;
+    }
+    // Nodes left out that penetrate join the zone and the solve goes on from where it stopped; after
+    // kZoneRounds rounds, or a round that did not converge, the whole interface.
+    log += zoneSize(zone, n) + ", then " +
+           (sum.converged() ? "(" + std::to_string(wrong.size()) + " nodes left out penetrating) "
+                            : "(that solve " + std::string(toString(sum.termination)) + ", from the start) ");
+    rounds.startNext(out);
+    zone.insert(zone.end(), wrong.begin(), wrong.end());
+    std::sort(zone.begin(), zone.end());
+    if (!sum.converged() || round >= kZoneRounds) zone = otherNodes(n, {});
+  }
+}
+
+}  // namespace stc

@@ -1,0 +1,75 @@
+#pragma once
+// `fas-apriori` on the contact nodes that can touch (docs/method.md §5, "The reduced interface").
+// A potential contact node that stays open at every instant carries no force and imposes nothing:
+// the problem without it has the same solution, as long as that solution does not push it into the
+// obstacle. Far from the obstacle such nodes are most of a fine interface (on the half-disc with
+// 801 arc nodes, about two thirds), and every product of the separated global stage and every local
+// stage pays for their rows. So the solve
+//   1. runs one relaxation on the whole interface from the start and keeps the nodes of its contact
+//      zone (fas/coarse_zone.hpp: closed at some instant, or nearer the obstacle than the largest
+//      normal jump δ = max |v_n − v̂_n| of that relaxation);
+//   2. solves the problem on those nodes alone (restrictToNodes: the same body and loads), its
+//      iterates' true error measured with zero forces on the other rows (ErrorOnRows), which is
+//      their force in the restricted problem;
+//   3. checks the nodes left out: their normal displacement B_F u, one product with the separated
+//      displacement history u = U_F G + X c, must keep g0 + v_n ≥ 0 at every instant. The solution
+//      then satisfies every condition of the whole problem (equilibrium with λ_F = 0, the contact
+//      law on the zone, open far nodes). Nodes that penetrate join the zone and the solve goes on from
+//      where it stopped; after kZoneRounds such rounds the whole interface is solved.
+// The result is lifted to the whole interface: λ = 0 and v = B_F u on the nodes left out. Counts and
+// times include the first relaxation and everything before the restricted solve's first iteration.
+#include <Eigen/SparseCore>
+#include <atomic>
+#include <chrono>
+#include <optional>
+#include <vector>
+
+#include "src/solver/error_measure.hpp"
+#include "src/strategies/solve_by_name.hpp"
+
+namespace stc {
+
+/// The true-error measure of a solve on some rows of the interface: the other rows carry no force.
+class ErrorOnRows : public ErrorMeasure {
+ public:
+  /// `rows`: the rows solved, among `all_rows` rows of `whole`'s interface.
+  ErrorOnRows(const ErrorMeasure& whole, std::vector<int> rows, int all_rows);
+  double relativeError(const Eigen::MatrixXd& lambda) const override;
+  bool defined() const override { return whole_.defined(); }
+  /// Time spent in relativeError so far (the solve's clock leaves the measure out).
+  double secondsSpent() const { return static_cast<double>(nanoseconds_.load()) * 1e-9; }
+
+ private:
+  const ErrorMeasure& whole_;
+  std::vector<int> rows_;
+  int all_rows_;
+  mutable std::atomic<long long> nanoseconds_{0};
+};
+
+/// One `fas-apriori` solve of `problem` (its separated stage, a priori basis and FAS cycle) from
+/// `start`, with the directions started from `seed` when given; `far_v` receives B_far u of the
+/// last iterate's displacement history (B_far: rows × n_free, e.g. the rows of nodes left out).
+SolveResult solveAprioriOn(const Problem& problem, const SolverSpec& spec, const InterfaceHistory& start,
+                           const Eigen::MatrixXd* seed, const ErrorMeasure* reference, const IterationCallback& callback,
+                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v);
+
+/// `fas-apriori` with the interface reduced to its contact zone (the header's steps 1–3). Falls back
+/// to the whole interface when the zone holds more than three quarters of the nodes.
+SolveResult solveAprioriOnContactZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs);
+
+/// Where steps 2–3 start: ŝ on the whole interface, and what was spent before (counted in the result).
+struct ZoneStart {
+  InterfaceHistory hat;
+  const InterfaceHistory* start = nullptr;  ///< the first start (null: s = 0), for a whole-interface restart
+  std::optional<IterationRecord> first;     ///< the record of a first relaxation, counted in the result
+  double measure_s = 0.0;                   ///< time spent measuring its true error (not the solve's)
+  std::chrono::steady_clock::time_point clock = std::chrono::steady_clock::now();  ///< the result's time origin
+};
+
+/// Steps 2–3 from the contact nodes `zone` (indices, increasing): restricted solves, each followed by
+/// the check of the nodes left out, until none penetrates (solveAprioriOnContactZone after its first
+/// relaxation; a test may give a zone that misses nodes).
+SolveResult solveAprioriOnZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs,
+                               std::vector<int> zone, const ZoneStart& from);
+
+}  // namespace stc

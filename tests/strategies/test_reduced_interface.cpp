@@ -1,0 +1,124 @@
+// `fas-apriori` on its contact zone (src/strategies/reduced_interface.hpp): the nodes left out are
+// checked open, the result lifted to the whole interface is an equilibrated iterate of the whole
+// problem, and a zone that misses contact nodes is completed by the check.
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "solver/seed_scene.hpp"
+#include "src/strategies/reduced_interface.hpp"
+#include "strategies/strategy_fixture.hpp"
+
+namespace {
+
+const stc::test::StrategyFixture& fixture() {
+  static const stc::test::StrategyFixture f(stc::test::seedScene(31, 41));
+  return f;
+}
+
+stc::SolverSpec specAt(double tolerance, bool reduce) {
+  stc::SolverSpec spec = fixture().scene.solver;
+  spec.tolerance = tolerance;
+  spec.fas.reduce_interface = reduce;
+  return spec;
+}
+
+// Rows of the nodes that carry no force at any instant of `lambda` (the nodes a solve left out, and
+// open nodes of the zone).
+std::vector<int> unloadedNodes(const stc::ContactInterface& contact, const Eigen::MatrixXd& lambda) {
+  std::vector<int> nodes;
+  const int d = contact.dimension;
+  for (int i = 0; i < contact.size(); ++i)
+    if (lambda.middleRows(d * i, d).cwiseAbs().maxCoeff() == 0.0) nodes.push_back(i);
+  return nodes;
+}
+
+// The lifted result must be an equilibrated iterate of the whole problem: v = B u with
+// K_ff u = f + Bᵀ λ at every instant, on the zone's rows and on the rows left out alike (these come
+// from the separated displacement history, pgd::displacementTraces).
+double equilibriumMismatch(const stc::Problem& problem, const stc::SpdFactor& K, const stc::InterfaceHistory& s) {
+  const auto& B = problem.contact.B;
+  double worst = 0.0;
+  for (int k = 0; k < problem.numSteps(); k += 10) {
+    const Eigen::VectorXd u = K.solve(Eigen::MatrixXd(problem.load(k) + B.transpose() * s.lambda.col(k)));
+    const Eigen::VectorXd v = B * u;
+    worst = std::max(worst, (v - s.v.col(k)).norm() / std::max(v.norm(), 1e-300));
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(ErrorOnRows, MeasuresTheForcesOfTheRowsLeftOutAsZero) {
+  const auto& f = fixture();
+  const Eigen::MatrixXd& lambda = f.incremental.interface.lambda;
+  const std::vector<int> rows = {0, 1, 2, 3, 10, 11};
+  const stc::ErrorOnRows measure(f.reference, rows, f.problem.contact.rows());
+  Eigen::MatrixXd whole = Eigen::MatrixXd::Zero(lambda.rows(), lambda.cols());
+  whole(rows, Eigen::all) = lambda(rows, Eigen::all);
+  EXPECT_DOUBLE_EQ(measure.relativeError(lambda(rows, Eigen::all)), f.reference.relativeError(whole));
+  EXPECT_TRUE(measure.defined());
+}
+
+// The default path: the first relaxation's zone holds the contact nodes, the rest are left out and
+// found open. The answer is the whole problem's: true error at most the tolerance, nodes left out
+// unloaded and clear of the obstacle, the lifted iterate in equilibrium to the sparse solves' accuracy.
+TEST(ReducedInterface, SolvesTheWholeProblemOnItsContactZone) {
+  const auto& f = fixture();
+  stc::StrategyInputs inputs;
+  inputs.reference = &f.reference;
+  const stc::SolveResult r = stc::solveByName("fas-apriori", f.problem, specAt(1e-6, true), inputs);
+  ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("solved on"), std::string::npos) << r.summary.message;
+  ASSERT_TRUE(r.summary.error.has_value());
+  EXPECT_LE(*r.summary.error, 1e-6);
+  const stc::ContactInterface& contact = f.problem.contact;
+  const std::vector<int> unloaded = unloadedNodes(contact, r.interface.lambda);
+  EXPECT_GT(unloaded.size(), static_cast<size_t>(contact.size() / 3));  // measured: 21 of 31 left out or open
+  for (int i : unloaded)
+    EXPECT_GE((contact.initial_gap[i] + r.interface.v.row(contact.normalRow(i)).array()).minCoeff(), 0.0) << "node " << i;
+  EXPECT_LE(equilibriumMismatch(f.problem, f.K, r.interface), 1e-8);
+  // The history counts the first relaxation (on the whole interface), and the counts add up.
+  ASSERT_EQ(static_cast<int>(r.summary.history.size()), r.summary.iterations);
+  EXPECT_EQ(r.summary.history.front().iteration, 1);
+  EXPECT_EQ(r.summary.history[1].iteration, 2);
+  EXPECT_EQ(r.summary.history.back().relaxations, r.summary.relaxations);
+  EXPECT_EQ(r.interface_directions.rows(), contact.rows());
+}
+
+// A zone that misses contact nodes (the node nearest the obstacle alone): the nodes left out
+// penetrate after the first restricted solve, join the zone, and a later round ends at the whole
+// problem's solution.
+TEST(ReducedInterface, ACheckOfTheNodesLeftOutCompletesAZoneThatMissesContact) {
+  const auto& f = fixture();
+  stc::StrategyInputs inputs;
+  inputs.reference = &f.reference;
+  stc::ZoneStart from;
+  from.hat = stc::InterfaceHistory::zeros(f.problem.contact, f.problem.numSteps());
+  const int nearest = f.problem.contact.size() / 2;  // the half-disc's lowest arc node
+  const stc::SolveResult r = stc::solveAprioriOnZone(f.problem, specAt(1e-6, true), inputs, {nearest}, from);
+  ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("penetrating"), std::string::npos) << r.summary.message;
+  std::cout << "[ measured ] " << r.summary.message << "\n";
+  ASSERT_TRUE(r.summary.error.has_value());
+  EXPECT_LE(*r.summary.error, 1e-6);
+  EXPECT_LE(equilibriumMismatch(f.problem, f.K, r.interface), 1e-8);
+}
+
+// The reduction changes the iteration, not the answer: both paths end within the tolerance of the
+// same reference, so (triangle inequality in the energy norm) within about twice it of each other.
+TEST(ReducedInterface, AgreesWithTheWholeInterface) {
+  const auto& f = fixture();
+  stc::StrategyInputs inputs;
+  inputs.reference = &f.reference;
+  const stc::SolveResult reduced = stc::solveByName("fas-apriori", f.problem, specAt(1e-6, true), inputs);
+  const stc::SolveResult whole = stc::solveByName("fas-apriori", f.problem, specAt(1e-6, false), inputs);
+  ASSERT_TRUE(reduced.summary.converged() && whole.summary.converged());
+  EXPECT_EQ(whole.summary.message.find("solved on"), std::string::npos);
+  const stc::ErrorReference against_whole(f.problem, f.K, stc::CondensedInterface::build(f.problem, f.K).delassus,
+                                          whole.interface.lambda);
+  EXPECT_LE(against_whole.relativeError(reduced.interface.lambda), 2.1e-6);
+  EXPECT_LT(reduced.summary.relaxations, whole.summary.relaxations);  // measured: 12 against 16
+}
