@@ -15,7 +15,7 @@ void addNode(int d, int i, bool in_zone, CoarseZone& zone) {
 }  // namespace
 
 CoarseZone coarseZone(const ContactInterface& contact, const InterfaceHistory& s,
-                      const InterfaceHistory& hat) {
+                      const InterfaceHistory& hat, double delta_scale) {
   const int d = contact.dimension, n = contact.size();
   const Eigen::Index m = hat.v.cols();
   // Instant by instant: the fields are stored by column, a node's row is d n_C doubles apart from
@@ -23,6 +23,7 @@ CoarseZone coarseZone(const ContactInterface& contact, const InterfaceHistory& s
   double delta = 0.0;
   for (Eigen::Index j = 0; j < m; ++j)
     for (int i = 0; i < n; ++i) delta = std::max(delta, std::abs(s.v(d * i, j) - hat.v(d * i, j)));
+  delta *= delta_scale;
   std::vector<char> in_zone(static_cast<size_t>(n), 0);
   for (Eigen::Index j = 0; j < m; ++j)
     for (int i = 0; i < n; ++i) {

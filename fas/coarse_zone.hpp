@@ -19,10 +19,12 @@ struct CoarseZone {
 };
 
 /// From the global-stage iterate `s` (v, λ) and its local stage `hat` (v̂, λ̂): node i is in the
-/// zone when, at some instant, λ̂_n > 0 (closed) or its gap g0 + v̂_n is below δ, the largest
-/// |v_n − v̂_n| over the grid (how far apart the two iterates still are; 0 at convergence).
+/// zone when, at some instant, λ̂_n > 0 (closed) or its gap g0 + v̂_n is below δ, `delta_scale` times
+/// the largest |v_n − v̂_n| over the grid (how far apart the two iterates still are; 0 at
+/// convergence). The coarse step takes δ itself; the reduced interface half of it
+/// (src/strategies/reduced_interface.hpp).
 CoarseZone coarseZone(const ContactInterface& contact, const InterfaceHistory& s,
-                      const InterfaceHistory& hat);
+                      const InterfaceHistory& hat, double delta_scale = 1.0);
 
 /// Every node of the interface: nothing eliminated (the seed's coarse step).
 CoarseZone wholeInterface(const ContactInterface& contact);
