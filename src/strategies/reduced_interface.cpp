@@ -46,14 +46,6 @@ std::vector<int> otherNodes(int n, const std::vector<int>& nodes) {
   return others;
 }
 
-Eigen::SparseMatrix<double> rowsOf(const Eigen::SparseMatrix<double>& B, const std::vector<int>& rows) {
-  Eigen::SparseMatrix<double> S(static_cast<Eigen::Index>(rows.size()), B.rows());
-  std::vector<Eigen::Triplet<double>> ones;
-  for (size_t r = 0; r < rows.size(); ++r) ones.emplace_back(static_cast<int>(r), rows[r], 1.0);
-  S.setFromTriplets(ones.begin(), ones.end());
-  return S * B;
-}
-
 InterfaceHistory restricted(const InterfaceHistory& h, const std::vector<int>& rows) {
   return {h.v(rows, Eigen::all), h.lambda(rows, Eigen::all)};
 }
@@ -208,8 +200,13 @@ class ZoneRounds {
     const int d = contact.dimension;
     const std::vector<int> far = otherNodes(contact.size(), zone);
     const std::vector<int> rows = rowsOfNodes(d, zone), far_rows = rowsOfNodes(d, far);
-    Problem part = problem_;
-    part.contact = restrictToNodes(contact, zone);
+    // The whole interface needs no copy of the problem (restrictToNodes of every node is its interface).
+    const bool whole = far.empty();
+    Problem part;
+    if (!whole) {
+      part = problem_;
+      part.contact = restrictToNodes(contact, zone);
+    }
     if (inputs_.reference) measure_.emplace(*inputs_.reference, rows, contact.rows());
     const Offsets before = offsets_;
     std::optional<double> clock;  // the restricted solve's clock starts after its set-up
@@ -223,10 +220,12 @@ class ZoneRounds {
     // whole interface's from the start.
     SolverSpec budget = spec_;
     const int left = spec_.max_iterations - offsets_.relaxations;
-    budget.max_iterations = std::max(1, zone.size() < static_cast<size_t>(contact.size()) ? left / 2 : left);
+    budget.max_iterations = std::max(1, whole ? left : left / 2);
     Eigen::MatrixXd far_v;
-    SolveResult r = solveAprioriOn(part, budget, restricted(hat_, rows), seed_ ? &part_seed : nullptr,
-                                   measure_ ? &*measure_ : nullptr, shift, rowsOf(contact.B, far_rows), far_v);
+    // B of the nodes left out: the rows of their sub-interface.
+    SolveResult r = solveAprioriOn(whole ? problem_ : part, budget, restricted(hat_, rows),
+                                   seed_ ? &part_seed : nullptr, measure_ ? &*measure_ : nullptr, shift,
+                                   restrictToNodes(contact, far).B, far_v);
     count(r.summary, withClock(before, clock.value_or(clockOffset(r.summary.wall_s))));
     penetrating_nodes = penetrating(contact, far, far_v);
     return liftedResult(std::move(r), rows, far_rows, far_v);

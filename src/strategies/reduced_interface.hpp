@@ -6,8 +6,9 @@
 // 801 arc nodes, about two thirds), and every product of the separated global stage and every local
 // stage pays for their rows. So the solve
 //   1. runs one relaxation on the whole interface from the start and keeps the nodes of its contact
-//      zone (fas/coarse_zone.hpp: closed at some instant, or nearer the obstacle than the largest
-//      normal jump δ = max |v_n − v̂_n| of that relaxation);
+//      zone (fas/coarse_zone.hpp with half its margin: closed at some instant, or nearer the obstacle
+//      than δ/2, δ = max |v_n − v̂_n| the largest normal jump of that relaxation; δ when δ/2 leaves
+//      no node);
 //   2. solves the problem on those nodes alone (restrictToNodes: the same body and loads), its
 //      iterates' true error measured with zero forces on the other rows (ErrorOnRows), which is
 //      their force in the restricted problem;
@@ -15,7 +16,9 @@
 //      displacement history u = U_F G + X c, must keep g0 + v_n ≥ 0 at every instant. The solution
 //      then satisfies every condition of the whole problem (equilibrium with λ_F = 0, the contact
 //      law on the zone, open far nodes). Nodes that penetrate join the zone and the solve goes on from
-//      where it stopped; after kZoneRounds such rounds the whole interface is solved.
+//      where it stopped; after kZoneRounds such rounds the whole interface is solved. A restricted
+//      round gets half of the iterations left; one that does not converge gives way to the whole
+//      interface from the first start.
 // The result is lifted to the whole interface: λ = 0 and v = B_F u on the nodes left out. Counts and
 // times include the first relaxation and everything before the restricted solve's first iteration.
 #include <Eigen/SparseCore>

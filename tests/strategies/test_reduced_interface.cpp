@@ -76,7 +76,9 @@ TEST(ReducedInterface, SolvesTheWholeProblemOnItsContactZone) {
   EXPECT_LE(*r.summary.error, 1e-6);
   const stc::ContactInterface& contact = f.problem.contact;
   const std::vector<int> unloaded = unloadedNodes(contact, r.interface.lambda);
-  EXPECT_GT(unloaded.size(), static_cast<size_t>(contact.size() / 3));  // measured: 21 of 31 left out or open
+  EXPECT_GT(unloaded.size(), static_cast<size_t>(contact.size() / 3));
+  std::cout << "[ measured ] " << unloaded.size() << " of " << contact.size() << " nodes unloaded; "
+            << r.summary.message << "\n";
   for (int i : unloaded)
     EXPECT_GE((contact.initial_gap[i] + r.interface.v.row(contact.normalRow(i)).array()).minCoeff(), 0.0) << "node " << i;
   EXPECT_LE(equilibriumMismatch(f.problem, f.K, r.interface), 1e-8);
@@ -120,5 +122,7 @@ TEST(ReducedInterface, AgreesWithTheWholeInterface) {
   const stc::ErrorReference against_whole(f.problem, f.K, stc::CondensedInterface::build(f.problem, f.K).delassus,
                                           whole.interface.lambda);
   EXPECT_LE(against_whole.relativeError(reduced.interface.lambda), 2.1e-6);
-  EXPECT_LT(reduced.summary.relaxations, whole.summary.relaxations);  // measured: 12 against 16
+  EXPECT_LT(reduced.summary.relaxations, whole.summary.relaxations);
+  std::cout << "[ measured ] relaxations, reduced " << reduced.summary.relaxations << ", whole "
+            << whole.summary.relaxations << "\n";
 }
