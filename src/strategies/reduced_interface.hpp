@@ -5,10 +5,13 @@
 // obstacle. Far from the obstacle such nodes are most of a fine interface (on the half-disc with
 // 801 arc nodes, about two thirds), and every product of the separated global stage and every local
 // stage pays for their rows. So the solve
-//   1. runs one relaxation on the whole interface from the start and keeps the nodes of its contact
-//      zone (fas/coarse_zone.hpp with half its margin: closed at some instant, or nearer the obstacle
-//      than δ/2, δ = max |v_n − v̂_n| the largest normal jump of that relaxation; δ when δ/2 leaves
-//      no node);
+//   1. finds the zone: when the loading is a prescribed motion alone (no applied force), the nodes
+//      within its reach, before any solve (src/problem/prescribed_reach.hpp: gaps that the motion,
+//      carried rigidly, closes at some instant); otherwise, or when that set is empty or above
+//      three quarters of the nodes, one relaxation on the whole interface from the start and the
+//      nodes of its contact zone (fas/coarse_zone.hpp with half its margin: closed at some instant,
+//      or nearer the obstacle than δ/2, δ = max |v_n − v̂_n| the largest normal jump of that
+//      relaxation; δ when δ/2 leaves no node);
 //   2. solves the problem on those nodes alone (restrictToNodes: the same body and loads), its
 //      iterates' true error measured with zero forces on the other rows (ErrorOnRows), which is
 //      their force in the restricted problem;
@@ -20,11 +23,13 @@
 //      round gets half of the iterations left; one that does not converge gives way to the whole
 //      interface from the first start.
 // The result is lifted to the whole interface: λ = 0 and v = B_F u on the nodes left out. Counts and
-// times include the first relaxation and everything before the restricted solve's first iteration.
+// times include the first relaxation, when there is one, and everything before the restricted solve's
+// first iteration.
 #include <Eigen/SparseCore>
 #include <atomic>
 #include <chrono>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "src/solver/error_measure.hpp"
@@ -57,21 +62,24 @@ SolveResult solveAprioriOn(const Problem& problem, const SolverSpec& spec, const
                            const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v);
 
 /// `fas-apriori` with the interface reduced to its contact zone (the header's steps 1–3). Falls back
-/// to the whole interface when the zone holds more than three quarters of the nodes.
+/// to the whole interface when the first relaxation's zone holds more than three quarters of the
+/// nodes.
 SolveResult solveAprioriOnContactZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs);
 
-/// Where steps 2–3 start: ŝ on the whole interface, and what was spent before (counted in the result).
+/// Where steps 2–3 start: ŝ on the whole interface (the first start, or the first relaxation's local
+/// stage), and what was spent before (counted in the result).
 struct ZoneStart {
   InterfaceHistory hat;
   const InterfaceHistory* start = nullptr;  ///< the first start (null: s = 0), for a whole-interface restart
   std::optional<IterationRecord> first;     ///< the record of a first relaxation, counted in the result
   double measure_s = 0.0;                   ///< time spent measuring its true error (not the solve's)
+  std::string zone_origin;                  ///< where the zone came from, for the summary's message
   std::chrono::steady_clock::time_point clock = std::chrono::steady_clock::now();  ///< the result's time origin
 };
 
 /// Steps 2–3 from the contact nodes `zone` (indices, increasing): restricted solves, each followed by
-/// the check of the nodes left out, until none penetrates (solveAprioriOnContactZone after its first
-/// relaxation; a test may give a zone that misses nodes).
+/// the check of the nodes left out, until none penetrates (solveAprioriOnContactZone after step 1; a
+/// test may give a zone that misses nodes).
 SolveResult solveAprioriOnZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs,
                                std::vector<int> zone, const ZoneStart& from);
 

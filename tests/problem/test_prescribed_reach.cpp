@@ -1,0 +1,70 @@
+// The contact nodes within reach of the prescribed motion (src/problem/prescribed_reach.hpp), against
+// the motion read from the problem itself: the displacement of a driven node, w(t_k).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "solver/seed_scene.hpp"
+#include "src/problem/prescribed_reach.hpp"
+#include "src/problem/problem.hpp"
+
+namespace {
+
+// The nodes with g0_i + min_k n_i · w(t_k) ≤ 0, w(t_k) the prescribed displacement of the first
+// node of the top edge (every node of a driven edge moves the same way).
+std::vector<int> reachedByTheTopsMotion(const stc::Problem& p) {
+  const int top = p.mesh.group("top").nodes.front();
+  std::vector<int> nodes;
+  for (int i = 0; i < p.contact.size(); ++i) {
+    double closest = p.contact.initial_gap[i];
+    for (int k = 0; k < p.numSteps(); ++k) {
+      const Eigen::VectorXd u = p.fullDisplacement(Eigen::VectorXd::Zero(p.numFreeDofs()), k);
+      closest = std::min(closest, p.contact.initial_gap[i] + p.contact.normals.col(i).dot(u.segment<2>(2 * top)));
+    }
+    if (closest <= 0.0) nodes.push_back(i);
+  }
+  return nodes;
+}
+
+}  // namespace
+
+TEST(PrescribedReach, KeepsTheNodesWhoseGapTheDrivenMotionCloses) {
+  const stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 21));
+  const auto nodes = stc::nodesWithinPrescribedReach(p, 0.0);
+  ASSERT_TRUE(nodes.has_value());
+  EXPECT_EQ(*nodes, reachedByTheTopsMotion(p));
+  // The seed's top goes 0.11 down: some of the arc, not all of it.
+  EXPECT_GT(nodes->size(), 2u);
+  EXPECT_LT(nodes->size(), static_cast<size_t>(p.contact.size() / 2));
+  // A margin keeps the nodes that far short of the obstacle too.
+  EXPECT_GT(stc::nodesWithinPrescribedReach(p, 0.05)->size(), nodes->size());
+}
+
+// With obstacle normals off the vertical, both components of the motion count.
+TEST(PrescribedReach, ProjectsBothComponentsOfTheMotionOnEachNormal) {
+  stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 21));
+  for (int i = 0; i < p.contact.size(); ++i) p.contact.normals.col(i) = Eigen::Vector2d(-std::sin(0.4), std::cos(0.4));
+  const auto nodes = stc::nodesWithinPrescribedReach(p, 0.0);
+  ASSERT_TRUE(nodes.has_value());
+  EXPECT_EQ(*nodes, reachedByTheTopsMotion(p));
+  EXPECT_FALSE(nodes->empty());
+}
+
+TEST(PrescribedReach, HasNoAnswerForAnAppliedForce) {
+  stc::Scene scene = stc::test::seedScene(31, 21);
+  scene.loads.push_back({"arc", stc::Component::Y, {{0.0, 1.0}, {0.0, -5.0}}});
+  EXPECT_FALSE(stc::nodesWithinPrescribedReach(stc::buildProblem(scene), 0.0).has_value());
+  // A force that is zero at every instant moves nothing.
+  scene.loads.back().history = {{0.0, 1.0}, {0.0, 0.0}};
+  EXPECT_TRUE(stc::nodesWithinPrescribedReach(stc::buildProblem(scene), 0.0).has_value());
+}
+
+TEST(PrescribedReach, HasNoAnswerForAHistoryAlongTwoAxes) {
+  stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 21));
+  stc::SeparatedLoad& load = p.loads.front();
+  Eigen::Index first = 0;
+  load.prescribed.maxCoeff(&first);
+  load.prescribed[first % 2 == 0 ? first + 1 : first - 1] = 1.0;  // the same node's other axis
+  EXPECT_FALSE(stc::nodesWithinPrescribedReach(p, 0.0).has_value());
+}
