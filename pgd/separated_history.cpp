@@ -10,6 +10,7 @@ namespace {
 
 constexpr int kOversampling = 10;
 constexpr int kSubspaceIterations = 2;
+constexpr Eigen::Index kJacobiRows = 64;  ///< leadingSingularVectors: Jacobi up to this many samples
 
 constexpr unsigned kSketchSeed = 20160101u;
 
@@ -47,10 +48,12 @@ Eigen::MatrixXd leadingSingularVectors(const Eigen::MatrixXd& coordinates, int c
   const Eigen::MatrixXd Q = rangeFinder(coordinates, samples);
   // The SVD of the small projected matrix itself (not of its Gram matrix, whose eigenvalues would resolve σ only
   // down to √ε σ_1): singular values to ε σ_1, so `drop` means what it says. Jacobi (after its column-pivoting
-  // QR of the m columns) rather than divide and conquer: these are at most 40 × m, and on the seed scene's
-  // coarse spaces it took 26–38 ms over 77 calls against 36–41 ms (11 fas-apriori solves, three runs each).
-  const linalg::Svd svd =
-      linalg::singularValueDecomposition(Q.transpose() * coordinates, linalg::SvdMethod::jacobi, linalg::kThinU);
+  // QR of the m columns) for the coarse spaces' at most 40 rows: on the seed scene it took 26–38 ms over 77
+  // calls against 36–41 ms for divide and conquer; divide and conquer above kJacobiRows rows (energyModes
+  // at the end of a solve asks for every mode: at 1601 contact nodes Jacobi took 4 % of the solve).
+  const linalg::SvdMethod method =
+      samples <= kJacobiRows ? linalg::SvdMethod::jacobi : linalg::SvdMethod::divide_and_conquer;
+  const linalg::Svd svd = linalg::singularValueDecomposition(Q.transpose() * coordinates, method, linalg::kThinU);
   const Eigen::VectorXd& sigma = svd.values;  // decreasing
   int keep = 0;
   while (keep < count && keep < sigma.size() && sigma[keep] > drop * sigma[0]) ++keep;
