@@ -9,6 +9,7 @@ namespace stc::pgd {
 struct LatinPgdOptions {
   latin::LatinOptions latin;       ///< tolerance, iteration limit, stagnation, relaxation
   ControlledStageOptions stage;    ///< the control of the separated global stage
+  bool spatial_modes = true;       ///< return SolveResult::spatial_modes (one product after the last iteration)
 
   void validate() const {
     latin.validate();

@@ -15,7 +15,7 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
   SolveResult result =
       latin::solveLatin(problem, stage, start ? *start : zero, options.latin, reference, callback, "latin-pgd");
   result.interface_directions = stage.basis().directions();
-  result.spatial_modes = energyModes(stage.basis(), stage.coordinates());
+  if (options.spatial_modes) result.spatial_modes = energyModes(stage.basis(), stage.coordinates());
   return result;
 }
 

@@ -50,6 +50,7 @@ RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool meas
   StrategyInputs inputs;
   inputs.reference = measure_error ? c.reference.reference.get() : nullptr;
   inputs.converged_lambda = &c.reference.reference->referenceForces();
+  inputs.spatial_modes = false;  // not reported
   std::optional<double> setup_s;
   const auto start = Clock::now();
   inputs.callback = [&](const IterationRecord& r) {

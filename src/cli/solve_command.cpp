@@ -33,6 +33,7 @@ SolveResult runSolver(const std::string& name, const Problem& problem, const Sce
   inputs.reference = reference;
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
   inputs.callback = progress.callback();
+  inputs.spatial_modes = false;  // not written
   SolveResult result = solveByName(name, problem, scene.solver, inputs);
   progress.done();
   return result;

@@ -29,6 +29,7 @@ TimedSolve timedSolve(const Problem& problem, const Scene& scene, const Strategy
   StrategyInputs inputs = base;
   inputs.converged_lambda = &reference.reference->referenceForces();  // fas-aposteriori's modes, not timed
   inputs.callback = progress.callback();
+  inputs.spatial_modes = false;  // the next point starts from the interface directions
   const auto start = Clock::now();
   TimedSolve out;
   out.result = solveByName(settings.solver, problem, scene.solver, inputs);

@@ -157,13 +157,13 @@ double ErrorOnRows::relativeError(const Eigen::MatrixXd& lambda) const {
 
 SolveResult solveAprioriOn(const Problem& problem, const SolverSpec& spec, const InterfaceHistory& start,
                            const Eigen::MatrixXd* seed, const ErrorMeasure* reference, const IterationCallback& callback,
-                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v) {
+                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v, bool spatial_modes) {
   pgd::ControlledGlobalStage stage(problem, stageOptions(spec));
   if (seed) stage.seed(*seed);
   fas::AprioriBasisProvider provider(stage, aprioriOptions(spec));
   SolveResult result = fas::solveFas(problem, stage, provider, start, fasOptions(spec), "fas-apriori", reference, callback);
   result.interface_directions = stage.basis().directions();
-  result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
+  if (spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
   far_v = pgd::displacementTraces(stage.basis(), stage.coordinates(), B_far);
   return result;
 }
@@ -240,7 +240,7 @@ class ZoneRounds {
     // B of the nodes left out: the rows of their sub-interface.
     SolveResult r = solveAprioriOn(whole ? problem_ : part, budget, restricted(hat_, rows),
                                    seed_ ? &part_seed : nullptr, measure_ ? &*measure_ : nullptr, shift,
-                                   restrictToNodes(contact, far).B, far_v);
+                                   restrictToNodes(contact, far).B, far_v, inputs_.spatial_modes);
     count(r.summary, withClock(before, clock.value_or(clockOffset(r.summary.wall_s))));
     penetrating_nodes = penetrating(contact, far, far_v);
     return liftedResult(std::move(r), rows, far_rows, far_v);

@@ -56,10 +56,11 @@ class ErrorOnRows : public ErrorMeasure {
 
 /// One `fas-apriori` solve of `problem` (its separated stage, a priori basis and FAS cycle) from
 /// `start`, with the directions started from `seed` when given; `far_v` receives B_far u of the
-/// last iterate's displacement history (B_far: rows × n_free, e.g. the rows of nodes left out).
+/// last iterate's displacement history (B_far: rows × n_free, e.g. the rows of nodes left out);
+/// the result's spatial modes are left empty unless `spatial_modes`.
 SolveResult solveAprioriOn(const Problem& problem, const SolverSpec& spec, const InterfaceHistory& start,
                            const Eigen::MatrixXd* seed, const ErrorMeasure* reference, const IterationCallback& callback,
-                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v);
+                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v, bool spatial_modes = true);
 
 /// `fas-apriori` with the interface reduced to its contact zone (the header's steps 1–3). Falls back
 /// to the whole interface when the first relaxation's zone holds more than three quarters of the

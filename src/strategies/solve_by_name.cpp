@@ -68,7 +68,7 @@ SolveResult solveApriori(const Problem& problem, const SolverSpec& spec, const S
   if (spec.fas.reduce_interface && problem.contact.size() > 0) return solveAprioriOnContactZone(problem, spec, inputs);
   Eigen::MatrixXd none;
   return solveAprioriOn(problem, spec, startOf(problem, inputs), inputs.basis_seed, inputs.reference, inputs.callback,
-                        Eigen::SparseMatrix<double>(0, problem.numFreeDofs()), none);
+                        Eigen::SparseMatrix<double>(0, problem.numFreeDofs()), none, inputs.spatial_modes);
 }
 
 SolveResult solveLatinPgd(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
@@ -77,6 +77,7 @@ SolveResult solveLatinPgd(const Problem& problem, const SolverSpec& spec, const 
   options.latin.tolerance = spec.tolerance;
   options.latin.max_iterations = spec.max_iterations;
   options.latin.relaxation = spec.relaxation;
+  options.spatial_modes = inputs.spatial_modes;
   const InterfaceHistory start = startOf(problem, inputs);
   return pgd::solveLatinPgd(problem, options, &start, inputs.basis_seed, inputs.reference, inputs.callback);
 }

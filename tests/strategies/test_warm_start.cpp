@@ -138,3 +138,20 @@ TEST(WarmStart, AStartOfTheWrongSizeIsRefused) {
   inputs.basis_seed = &wrong_modes;
   EXPECT_THROW(stc::solveByName("fas-apriori", v.problem, v.scene.solver, inputs), std::invalid_argument);
 }
+
+// Spatial modes are rebuilt after the last iteration only when asked for: without them the solve is
+// the same (iterates, directions, counts), its modes empty.
+TEST(WarmStart, SpatialModesOnlyWhenAskedFor) {
+  const Value& v = value(0.15);
+  for (const std::string solver : {"latin-pgd", "fas-apriori"}) {
+    stc::StrategyInputs without;
+    without.spatial_modes = false;
+    const stc::SolveResult bare = stc::solveByName(solver, v.problem, v.scene.solver, without);
+    const stc::SolveResult full = stc::solveByName(solver, v.problem, v.scene.solver);
+    EXPECT_EQ(bare.spatial_modes.size(), 0) << solver;
+    EXPECT_GT(full.spatial_modes.cols(), 0) << solver;
+    EXPECT_EQ(bare.summary.relaxations, full.summary.relaxations) << solver;
+    EXPECT_EQ(bare.interface.lambda, full.interface.lambda) << solver;
+    EXPECT_EQ(bare.interface_directions, full.interface_directions) << solver;
+  }
+}
