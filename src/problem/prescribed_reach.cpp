@@ -25,10 +25,8 @@ int translationAxis(const SeparatedLoad& load, int d) {
 
 }  // namespace
 
-std::optional<std::vector<int>> nodesWithinPrescribedReach(const Problem& problem, double margin) {
-  const ContactInterface& contact = problem.contact;
-  const int d = contact.dimension, m = problem.numSteps();
-  // W(a, k): component a of the translation w(t_k).
+std::optional<Eigen::MatrixXd> prescribedTranslation(const Problem& problem) {
+  const int d = problem.dimension, m = problem.numSteps();
   Eigen::MatrixXd W = Eigen::MatrixXd::Zero(d, m);
   for (const SeparatedLoad& load : problem.loads) {
     if (allZero(load.values)) continue;
@@ -36,12 +34,33 @@ std::optional<std::vector<int>> nodesWithinPrescribedReach(const Problem& proble
     if (axis < 0) return std::nullopt;
     W.row(axis) += Eigen::Map<const Eigen::RowVectorXd>(load.values.data(), m);
   }
-  // Row i: n_i · w(t_k) over k.
-  const Eigen::MatrixXd approach = contact.normals.transpose() * W;
+  return W;
+}
+
+std::vector<int> nodesWithinReach(const ContactInterface& contact, const Eigen::MatrixXd& W, double margin) {
+  const Eigen::MatrixXd approach = contact.normals.transpose() * W;  // row i: n_i · w(t_k) over k
   std::vector<int> nodes;
   for (int i = 0; i < contact.size(); ++i)
     if (contact.initial_gap[i] + approach.row(i).minCoeff() <= margin) nodes.push_back(i);
   return nodes;
+}
+
+std::optional<std::vector<int>> nodesWithinPrescribedReach(const Problem& problem, double margin) {
+  const std::optional<Eigen::MatrixXd> W = prescribedTranslation(problem);
+  if (!W) return std::nullopt;
+  return nodesWithinReach(problem.contact, *W, margin);
+}
+
+InterfaceHistory rigidMotionHistory(const ContactInterface& contact, const Eigen::MatrixXd& W) {
+  const int d = contact.dimension;
+  InterfaceHistory h = InterfaceHistory::zeros(contact, static_cast<int>(W.cols()));
+  for (int i = 0; i < contact.size(); ++i) {
+    h.v.row(contact.normalRow(i)) = contact.normals.col(i).transpose() * W;
+    for (int a = 1; a < d; ++a)
+      h.v.row(contact.normalRow(i) + a) = contact.tangents.col((d - 1) * i + a - 1).transpose() * W;
+  }
+  for (int row : contact.held_rows) h.v.row(row).setZero();
+  return h;
 }
 
 }  // namespace stc

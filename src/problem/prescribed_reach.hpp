@@ -1,23 +1,37 @@
 #pragma once
-// The potential contact nodes within reach of the prescribed motion: a contact search done before any
-// solve (docs/method.md §5, "The reduced interface"). Each [[dirichlet]] history moves its dofs
-// along one axis by the same amount (src/problem/problem.hpp, SeparatedLoad), so the prescribed
-// motion is a translation w(t) = Σ_l values_l(t) a_l, a_l the axis of history l. A body that followed
-// it rigidly would bring node i to the gap g0_i + n_i · w(t); the nodes whose gap it closes to within
-// `margin` at some instant are those the contact can reach. Elastic deformation moves the nodes near
-// the contact less than the rigid motion (the body is compressed there), so the set is usually a
-// superset of the contact zone; it is a prediction, and the reduced interface checks the nodes it
-// leaves out (src/strategies/reduced_interface.hpp).
+// What the prescribed motion tells before any solve (docs/method.md §5, "The reduced interface").
+// Each [[dirichlet]] history moves its dofs along one axis by the same amount (src/problem/problem.hpp,
+// SeparatedLoad), so when the loading is prescribed motion alone it is a translation
+// w(t) = Σ_l values_l(t) a_l, a_l the axis of history l. A body that followed it rigidly would
+// bring contact node i to the gap g0_i + n_i · w(t):
+//  - the nodes whose gap it closes at some instant are those the contact can reach. Elastic
+//    deformation moves the nodes near the contact less than the rigid motion (the body is
+//    compressed there), so the set is usually a superset of the contact zone; it is a prediction,
+//    and the reduced interface checks the nodes it leaves out (src/strategies/reduced_interface.hpp);
+//  - the interface displacement of that rigid motion is a start for the iteration closer to the
+//    solution than s = 0: its first local stage already presses the reached nodes on the obstacle.
+#include <Eigen/Core>
 #include <optional>
 #include <vector>
 
 #include "src/problem/problem.hpp"
+#include "src/spacetime/interface_history.hpp"
 
 namespace stc {
 
-/// The nodes i (increasing) with g0_i + min_k n_i · w(t_k) ≤ margin. None (nullopt) when the loading
-/// is not a prescribed translation alone: an applied force (whose reach needs a solve) or a history
-/// whose prescribed dofs lie along more than one axis.
+/// w(t_k), d × m (column k), when the loading is a prescribed translation alone. None (nullopt) for
+/// an applied force (whose reach needs a solve) or a history whose prescribed dofs lie along more
+/// than one axis. Histories and forces that are zero at every instant are left out.
+std::optional<Eigen::MatrixXd> prescribedTranslation(const Problem& problem);
+
+/// The nodes i (increasing) with g0_i + min_k n_i · w(t_k) ≤ margin, w = W's columns.
+std::vector<int> nodesWithinReach(const ContactInterface& contact, const Eigen::MatrixXd& W, double margin);
+
+/// The same for the problem's own prescribed translation; none when it has none.
 std::optional<std::vector<int>> nodesWithinPrescribedReach(const Problem& problem, double margin);
+
+/// The interface history of the body carried rigidly by w: v_n = n_i · w(t_k), v_τ = τ_i · w(t_k)
+/// (0 on held rows), λ = 0.
+InterfaceHistory rigidMotionHistory(const ContactInterface& contact, const Eigen::MatrixXd& W);
 
 }  // namespace stc

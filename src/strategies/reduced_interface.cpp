@@ -176,12 +176,17 @@ SolveResult solveAprioriOnContactZone(const Problem& problem, const SolverSpec& 
   ZoneStart from;
   from.start = inputs.start;
   from.clock = start;
-  // Step 1 without a solve when the loading is a prescribed motion alone.
-  const std::optional<std::vector<int>> reach = nodesWithinPrescribedReach(problem, kReachMargin);
-  if (reach && !reach->empty() && reach->size() <= kWholeShare * n) {
-    from.hat = inputs.start ? *inputs.start : InterfaceHistory::zeros(problem.contact, problem.numSteps());
-    from.zone_origin = "the zone within reach of the prescribed motion";
-    return solveAprioriOnZone(problem, spec, inputs, *reach, from);
+  // Step 1 without a solve when the loading is a prescribed motion alone; without a warm start the
+  // iteration then starts from that motion carried rigidly.
+  const std::optional<Eigen::MatrixXd> W = prescribedTranslation(problem);
+  std::vector<int> reach = W ? nodesWithinReach(problem.contact, *W, kReachMargin) : std::vector<int>();
+  if (!reach.empty() && reach.size() <= kWholeShare * n) {
+    const InterfaceHistory rigid = rigidMotionHistory(problem.contact, *W);
+    if (!inputs.start) from.start = &rigid;
+    from.hat = *from.start;
+    from.zone_origin = inputs.start ? "the zone within reach of the prescribed motion"
+                                    : "the zone within reach of the prescribed motion, started from it carried rigidly";
+    return solveAprioriOnZone(problem, spec, inputs, std::move(reach), from);
   }
   const FirstRelaxation first = firstRelaxation(problem, spec, inputs, start);
   if (inputs.callback && !inputs.callback(first.record)) return stoppedAtFirst(first);

@@ -7,7 +7,8 @@
 // stage pays for their rows. So the solve
 //   1. finds the zone: when the loading is a prescribed motion alone (no applied force), the nodes
 //      within its reach, before any solve (src/problem/prescribed_reach.hpp: gaps that the motion,
-//      carried rigidly, closes at some instant); otherwise, or when that set is empty or above
+//      carried rigidly, closes at some instant), and without a warm start the iteration starts from
+//      the interface history of that rigid motion; otherwise, or when that set is empty or above
 //      three quarters of the nodes, one relaxation on the whole interface from the start and the
 //      nodes of its contact zone (fas/coarse_zone.hpp with half its margin: closed at some instant,
 //      or nearer the obstacle than δ/2, δ = max |v_n − v̂_n| the largest normal jump of that

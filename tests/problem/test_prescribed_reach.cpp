@@ -1,5 +1,6 @@
-// The contact nodes within reach of the prescribed motion (src/problem/prescribed_reach.hpp), against
-// the motion read from the problem itself: the displacement of a driven node, w(t_k).
+// The prescribed translation, the contact nodes within its reach and its rigid interface history
+// (src/problem/prescribed_reach.hpp), against the motion read from the problem itself: the
+// displacement of a driven node, w(t_k).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -67,4 +68,23 @@ TEST(PrescribedReach, HasNoAnswerForAHistoryAlongTwoAxes) {
   load.prescribed.maxCoeff(&first);
   load.prescribed[first % 2 == 0 ? first + 1 : first - 1] = 1.0;  // the same node's other axis
   EXPECT_FALSE(stc::nodesWithinPrescribedReach(p, 0.0).has_value());
+}
+
+// The rigid start is the interface displacement of the whole body translated by w(t_k): B applied to
+// that translation's free dofs, with w read from a driven node.
+TEST(PrescribedReach, TheRigidMotionHistoryIsTheTranslatedBodysInterfaceDisplacement) {
+  const stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 21));
+  const auto W = stc::prescribedTranslation(p);
+  ASSERT_TRUE(W.has_value());
+  const stc::InterfaceHistory h = stc::rigidMotionHistory(p.contact, *W);
+  const int top = p.mesh.group("top").nodes.front();
+  for (int k = 0; k < p.numSteps(); ++k) {
+    const Eigen::Vector2d w = p.fullDisplacement(Eigen::VectorXd::Zero(p.numFreeDofs()), k).segment<2>(2 * top);
+    EXPECT_LT((W->col(k) - w).norm(), 1e-15) << "instant " << k;
+    Eigen::VectorXd u_free(p.numFreeDofs());
+    for (int i = 0; i < p.numFreeDofs(); ++i) u_free[i] = w[p.free_dofs[i] % 2];
+    EXPECT_LT((h.v.col(k) - p.contact.B * u_free).cwiseAbs().maxCoeff(), 1e-14) << "instant " << k;
+  }
+  EXPECT_EQ(h.lambda.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT(h.v.cwiseAbs().maxCoeff(), 0.1);  // the seed's top goes 0.11 down
 }
