@@ -168,28 +168,37 @@ SolveResult solveAprioriOn(const Problem& problem, const SolverSpec& spec, const
   return result;
 }
 
+namespace {
+
+// Step 1 from the prescribed motion, when the loading is one: the nodes within its reach and, without
+// a warm start, its rigid motion as the start. None when it gives no zone to solve on.
+std::optional<SolveResult> solveWithinPrescribedReach(const Problem& problem, const SolverSpec& spec,
+                                                      const StrategyInputs& inputs, ZoneStart from) {
+  const std::optional<Eigen::MatrixXd> W = prescribedTranslation(problem);
+  if (!W) return std::nullopt;
+  std::vector<int> reach = nodesWithinReach(problem.contact, *W, kReachMargin);
+  if (reach.empty() || reach.size() > kWholeShare * problem.contact.size()) return std::nullopt;
+  const InterfaceHistory rigid = rigidMotionHistory(problem.contact, *W);
+  if (!from.start) from.start = &rigid;
+  from.hat = *from.start;
+  from.zone_origin = inputs.start ? "the zone within reach of the prescribed motion"
+                                  : "the zone within reach of the prescribed motion, started from it carried rigidly";
+  return solveAprioriOnZone(problem, spec, inputs, std::move(reach), from);
+}
+
+}  // namespace
+
 SolveResult solveAprioriOnContactZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
   const auto start = Clock::now();
   if (inputs.start) requireFits(*inputs.start, problem);
   if (inputs.basis_seed) requireFits(*inputs.basis_seed, problem);
-  const int n = problem.contact.size();
   ZoneStart from;
   from.start = inputs.start;
   from.clock = start;
-  // Step 1 without a solve when the loading is a prescribed motion alone; without a warm start the
-  // iteration then starts from that motion carried rigidly.
-  const std::optional<Eigen::MatrixXd> W = prescribedTranslation(problem);
-  std::vector<int> reach = W ? nodesWithinReach(problem.contact, *W, kReachMargin) : std::vector<int>();
-  if (!reach.empty() && reach.size() <= kWholeShare * n) {
-    const InterfaceHistory rigid = rigidMotionHistory(problem.contact, *W);
-    if (!inputs.start) from.start = &rigid;
-    from.hat = *from.start;
-    from.zone_origin = inputs.start ? "the zone within reach of the prescribed motion"
-                                    : "the zone within reach of the prescribed motion, started from it carried rigidly";
-    return solveAprioriOnZone(problem, spec, inputs, std::move(reach), from);
-  }
+  if (std::optional<SolveResult> out = solveWithinPrescribedReach(problem, spec, inputs, from)) return std::move(*out);
   const FirstRelaxation first = firstRelaxation(problem, spec, inputs, start);
   if (inputs.callback && !inputs.callback(first.record)) return stoppedAtFirst(first);
+  const int n = problem.contact.size();
   std::vector<int> zone = first.zone;
   if (zone.empty() || zone.size() > kWholeShare * n) zone = otherNodes(n, {});
   from.hat = first.hat;
