@@ -45,12 +45,6 @@ std::vector<int> nodesWithinReach(const ContactInterface& contact, const Eigen::
   return nodes;
 }
 
-std::optional<std::vector<int>> nodesWithinPrescribedReach(const Problem& problem, double margin) {
-  const std::optional<Eigen::MatrixXd> W = prescribedTranslation(problem);
-  if (!W) return std::nullopt;
-  return nodesWithinReach(problem.contact, *W, margin);
-}
-
 InterfaceHistory rigidMotionHistory(const ContactInterface& contact, const Eigen::MatrixXd& W) {
   const int d = contact.dimension;
   InterfaceHistory h = InterfaceHistory::zeros(contact, static_cast<int>(W.cols()));

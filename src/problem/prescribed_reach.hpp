@@ -27,9 +27,6 @@ std::optional<Eigen::MatrixXd> prescribedTranslation(const Problem& problem);
 /// The nodes i (increasing) with g0_i + min_k n_i · w(t_k) ≤ margin, w = W's columns.
 std::vector<int> nodesWithinReach(const ContactInterface& contact, const Eigen::MatrixXd& W, double margin);
 
-/// The same for the problem's own prescribed translation; none when it has none.
-std::optional<std::vector<int>> nodesWithinPrescribedReach(const Problem& problem, double margin);
-
 /// The interface history of the body carried rigidly by w: v_n = n_i · w(t_k), v_τ = τ_i · w(t_k)
 /// (0 on held rows), λ = 0.
 InterfaceHistory rigidMotionHistory(const ContactInterface& contact, const Eigen::MatrixXd& W);

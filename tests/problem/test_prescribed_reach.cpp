@@ -32,33 +32,35 @@ std::vector<int> reachedByTheTopsMotion(const stc::Problem& p) {
 
 TEST(PrescribedReach, KeepsTheNodesWhoseGapTheDrivenMotionCloses) {
   const stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 21));
-  const auto nodes = stc::nodesWithinPrescribedReach(p, 0.0);
-  ASSERT_TRUE(nodes.has_value());
-  EXPECT_EQ(*nodes, reachedByTheTopsMotion(p));
+  const auto W = stc::prescribedTranslation(p);
+  ASSERT_TRUE(W.has_value());
+  const std::vector<int> nodes = stc::nodesWithinReach(p.contact, *W, 0.0);
+  EXPECT_EQ(nodes, reachedByTheTopsMotion(p));
   // The seed's top goes 0.11 down: some of the arc, not all of it.
-  EXPECT_GT(nodes->size(), 2u);
-  EXPECT_LT(nodes->size(), static_cast<size_t>(p.contact.size() / 2));
+  EXPECT_GT(nodes.size(), 2u);
+  EXPECT_LT(nodes.size(), static_cast<size_t>(p.contact.size() / 2));
   // A margin keeps the nodes that far short of the obstacle too.
-  EXPECT_GT(stc::nodesWithinPrescribedReach(p, 0.05)->size(), nodes->size());
+  EXPECT_GT(stc::nodesWithinReach(p.contact, *W, 0.05).size(), nodes.size());
 }
 
 // With obstacle normals off the vertical, both components of the motion count.
 TEST(PrescribedReach, ProjectsBothComponentsOfTheMotionOnEachNormal) {
   stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 21));
   for (int i = 0; i < p.contact.size(); ++i) p.contact.normals.col(i) = Eigen::Vector2d(-std::sin(0.4), std::cos(0.4));
-  const auto nodes = stc::nodesWithinPrescribedReach(p, 0.0);
-  ASSERT_TRUE(nodes.has_value());
-  EXPECT_EQ(*nodes, reachedByTheTopsMotion(p));
-  EXPECT_FALSE(nodes->empty());
+  const auto W = stc::prescribedTranslation(p);
+  ASSERT_TRUE(W.has_value());
+  const std::vector<int> nodes = stc::nodesWithinReach(p.contact, *W, 0.0);
+  EXPECT_EQ(nodes, reachedByTheTopsMotion(p));
+  EXPECT_FALSE(nodes.empty());
 }
 
 TEST(PrescribedReach, HasNoAnswerForAnAppliedForce) {
   stc::Scene scene = stc::test::seedScene(31, 21);
   scene.loads.push_back({"arc", stc::Component::Y, {{0.0, 1.0}, {0.0, -5.0}}});
-  EXPECT_FALSE(stc::nodesWithinPrescribedReach(stc::buildProblem(scene), 0.0).has_value());
+  EXPECT_FALSE(stc::prescribedTranslation(stc::buildProblem(scene)).has_value());
   // A force that is zero at every instant moves nothing.
   scene.loads.back().history = {{0.0, 1.0}, {0.0, 0.0}};
-  EXPECT_TRUE(stc::nodesWithinPrescribedReach(stc::buildProblem(scene), 0.0).has_value());
+  EXPECT_TRUE(stc::prescribedTranslation(stc::buildProblem(scene)).has_value());
 }
 
 TEST(PrescribedReach, HasNoAnswerForAHistoryAlongTwoAxes) {
@@ -67,7 +69,7 @@ TEST(PrescribedReach, HasNoAnswerForAHistoryAlongTwoAxes) {
   Eigen::Index first = 0;
   load.prescribed.maxCoeff(&first);
   load.prescribed[first % 2 == 0 ? first + 1 : first - 1] = 1.0;  // the same node's other axis
-  EXPECT_FALSE(stc::nodesWithinPrescribedReach(p, 0.0).has_value());
+  EXPECT_FALSE(stc::prescribedTranslation(p).has_value());
 }
 
 // The rigid start is the interface displacement of the whole body translated by w(t_k): B applied to

@@ -96,17 +96,18 @@ TEST(ReducedInterface, SolvesTheWholeProblemOnItsContactZone) {
 // solver) closes at some instant is within reach of the prescribed motion.
 TEST(ReducedInterface, TheZoneWithinReachHoldsEveryNodeTheReferenceCloses) {
   const auto& f = fixture();
-  const auto reach = stc::nodesWithinPrescribedReach(f.problem, 0.0);
-  ASSERT_TRUE(reach.has_value());
+  const auto W = stc::prescribedTranslation(f.problem);
+  ASSERT_TRUE(W.has_value());
+  const std::vector<int> reach = stc::nodesWithinReach(f.problem.contact, *W, 0.0);
   const stc::ContactInterface& contact = f.problem.contact;
   int closed = 0;
   for (int i = 0; i < contact.size(); ++i) {
     if (f.incremental.interface.lambda.row(contact.normalRow(i)).maxCoeff() <= 0.0) continue;
     ++closed;
-    EXPECT_TRUE(std::binary_search(reach->begin(), reach->end(), i)) << "node " << i << " closes";
+    EXPECT_TRUE(std::binary_search(reach.begin(), reach.end(), i)) << "node " << i << " closes";
   }
   EXPECT_GT(closed, 0);
-  std::cout << "[ measured ] " << closed << " nodes close, " << reach->size() << " within reach, of "
+  std::cout << "[ measured ] " << closed << " nodes close, " << reach.size() << " within reach, of "
             << contact.size() << "\n";
 }
 
