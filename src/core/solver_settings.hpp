@@ -47,6 +47,10 @@ inline constexpr bool coarse_zone = true;
 /// fas-apriori solves on the contact nodes that can touch, the others checked open afterwards
 /// (src/strategies/reduced_interface.hpp; docs/method.md §5).
 inline constexpr bool reduce_interface = true;
+/// fas-apriori on a grid of m instants starts from its own solution on every q-th instant,
+/// q = ⌊(m − 1) / 200⌋, when q ≥ 2: a sub-grid of about 201 instants, the seed scene's grid
+/// (src/strategies/nested_in_time.hpp; docs/method.md §5). 0: never.
+inline constexpr int nested_instants = 201;
 /// θ of the FAS safeguard: a correction is rejected when the next indicator exceeds θ times the one
 /// before the coarse step (fas/fas_options.hpp). It depends on the dimension and on the coarse space
 /// (docs/method.md §4): on the plane meshes corrections that raise the indicator up to 1.8 times

@@ -90,6 +90,8 @@ struct FasSpec {
   int coarse_anderson = defaults::coarse_anderson;          ///< Anderson depth of the coarse step, >= 0 (0: off)
   bool coarse_zone = defaults::coarse_zone;                 ///< the coarse step on its contact zone only
   bool reduce_interface = defaults::reduce_interface;       ///< fas-apriori on the nodes that can touch
+  /// fas-apriori: instants of the sub-grid it starts from on long grids (0: none; otherwise >= 2)
+  int nested_instants = defaults::nested_instants;
   int residual_vectors = defaults::residual_vectors;        ///< N_res >= 0
   int svd_modes = defaults::svd_modes;                      ///< fas-aposteriori: leading energy-SVD modes (>= 0)
   /// fas-apriori: leading energy modes of the a priori expansion in the coarse space (>= 0; 0:

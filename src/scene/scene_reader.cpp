@@ -320,6 +320,9 @@ FasSpec readFas(const TableView& solver) {
                  *fas.safeguard_growth >= 1.0 && std::isfinite(*fas.safeguard_growth), "must be >= 1");
   fas.coarse_zone = solver.optionalBool("coarse_zone").value_or(fas.coarse_zone);
   fas.reduce_interface = solver.optionalBool("reduce_interface").value_or(fas.reduce_interface);
+  fas.nested_instants = solver.optionalInt("nested_instants").value_or(fas.nested_instants);
+  requireRange(solver, "nested_instants", fas.nested_instants, fas.nested_instants == 0 || fas.nested_instants >= 2,
+               "must be 0 (off) or >= 2");
   fas.adapt_coarse_iterations =
       solver.optionalBool("adapt_coarse_iterations").value_or(fas.adapt_coarse_iterations);
   if (solver.has("coarse_start"))
@@ -334,7 +337,7 @@ SolverSpec readSolver(const TableView& root, std::vector<std::string>& warnings)
   const auto solver = root.optionalTable(
       "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
                  "post_relaxations", "coarse_iterations", "coarse_anderson", "coarse_zone", "reduce_interface",
-                 "adapt_coarse_iterations",
+                 "nested_instants", "adapt_coarse_iterations",
                  "safeguard_growth", "residual_vectors", "svd_modes", "coarse_start", "pgd_max_modes",
                  "pgd_increment_modes", "pgd_anticipate", "pgd_gap_share", "pgd_modes_per_cycle", "pgd_seed_share"});
   if (!solver) return spec;

@@ -342,7 +342,8 @@ TEST(SceneReader, FasKeysAreRead) {
                                      "residual_vectors = 5\nsvd_modes = 4\npgd_max_modes = 12\n"
                                      "pgd_increment_modes = 7\npgd_gap_share = 0.2\ncoarse_start = \"mismatch\"\n"
                                      "adapt_coarse_iterations = false\ncoarse_anderson = 0\nsafeguard_growth = 1\n"
-                                     "pgd_anticipate = false\ncoarse_zone = false\nreduce_interface = false\n",
+                                     "pgd_anticipate = false\ncoarse_zone = false\nreduce_interface = false\n"
+                                     "nested_instants = 0\n",
                              kSource);
   EXPECT_EQ(s.solver.fas.pre_relaxations, 2);
   EXPECT_EQ(s.solver.fas.post_relaxations, 0);
@@ -361,6 +362,9 @@ TEST(SceneReader, FasKeysAreRead) {
   EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.coarse_zone);  // the default
   EXPECT_FALSE(s.solver.fas.reduce_interface);
   EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.reduce_interface);  // the default
+  EXPECT_EQ(s.solver.fas.nested_instants, 0);
+  EXPECT_EQ(parseScene(kSeed, kSource).solver.fas.nested_instants, 201);  // the default
+  EXPECT_EQ(parseScene(kSeed + "nested_instants = 51\n", kSource).solver.fas.nested_instants, 51);
   EXPECT_EQ(s.solver.fas.coarse_anderson, 0);
   EXPECT_EQ(s.solver.fas.safeguard_growth, 1.0);
   EXPECT_EQ(parseScene(kSeed, kSource).solver.fas.coarse_anderson, 2);        // the defaults
@@ -392,6 +396,8 @@ TEST(SceneReaderErrors, FasRangesAreChecked) {
   EXPECT_THAT(errorOf(kSeed + "pgd_anticipate = \"yes\"\n"), HasSubstr("solver.pgd_anticipate"));
   EXPECT_THAT(errorOf(kSeed + "coarse_zone = 0\n"), HasSubstr("solver.coarse_zone"));
   EXPECT_THAT(errorOf(kSeed + "reduce_interface = 1\n"), HasSubstr("solver.reduce_interface"));
+  EXPECT_THAT(errorOf(kSeed + "nested_instants = 1\n"), HasSubstr("'solver.nested_instants' = 1"));
+  EXPECT_THAT(errorOf(kSeed + "nested_instants = -2\n"), HasSubstr("'solver.nested_instants' = -2"));
   EXPECT_THAT(errorOf(kSeed + "coarse_anderson = -1\n"), HasSubstr("'solver.coarse_anderson' = -1"));
   EXPECT_THAT(errorOf(kSeed + "safeguard_growth = 0.5\n"), HasSubstr("'solver.safeguard_growth' = 0.5"));
 }

@@ -1,0 +1,99 @@
+// Nested iteration in time (src/strategies/nested_in_time.hpp): `fas-apriori` on a long grid starts
+// from its own solution on every q-th instant, and still stops at the tolerance of the whole grid,
+// measured against the incremental reference on the whole grid.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "solver/seed_scene.hpp"
+#include "src/strategies/nested_in_time.hpp"
+#include "strategies/strategy_fixture.hpp"
+
+namespace {
+
+// The seed scene on 401 instants; a sub-grid of 101 instants is every 4th.
+const stc::test::StrategyFixture& fixture() {
+  static const stc::test::StrategyFixture f(stc::test::seedScene(31, 401));
+  return f;
+}
+
+stc::SolveResult solveApriori(int nested_instants, const stc::StrategyInputs& given = {}, int max_iterations = 0) {
+  stc::SolverSpec spec = fixture().scene.solver;
+  spec.tolerance = 1e-6;
+  spec.fas.nested_instants = nested_instants;
+  if (max_iterations > 0) spec.max_iterations = max_iterations;
+  stc::StrategyInputs inputs = given;
+  inputs.reference = &fixture().reference;
+  return stc::solveByName("fas-apriori", fixture().problem, spec, inputs);
+}
+
+bool says(const stc::SolveResult& r, const std::string& words) {
+  return r.summary.message.find(words) != std::string::npos;
+}
+
+}  // namespace
+
+TEST(NestedInTime, StrideKeepsAtLeastTheSubgridsInstants) {
+  EXPECT_EQ(stc::nestedStride(2001, 201), 10);
+  EXPECT_EQ(stc::nestedStride(1001, 201), 5);
+  EXPECT_EQ(stc::nestedStride(401, 201), 2);
+  EXPECT_EQ(stc::nestedStride(400, 201), 0);  // every instant: nothing to nest
+  EXPECT_EQ(stc::nestedStride(201, 201), 0);
+  EXPECT_EQ(stc::nestedStride(2001, 0), 0);   // off
+  EXPECT_EQ(stc::nestedStride(2001, 2), 2000);
+}
+
+// The true error on the whole grid is below the tolerance, as without the sub-grid; the first
+// record already counts the sub-grid's sparse solves and time.
+TEST(NestedInTime, StartsFromTheSubgridAndMeetsTheWholeGridsTolerance) {
+  const stc::SolveResult nested = solveApriori(101);
+  const stc::SolveResult plain = solveApriori(0);
+  ASSERT_TRUE(nested.summary.converged()) << nested.summary.message;
+  ASSERT_TRUE(plain.summary.converged()) << plain.summary.message;
+  EXPECT_TRUE(says(nested, "started from the solve on every 4th instant (101 instants, ")) << nested.summary.message;
+  EXPECT_FALSE(says(plain, "every"));
+  ASSERT_TRUE(nested.summary.error.has_value());
+  EXPECT_LE(*nested.summary.error, 1e-6);
+  EXPECT_LE(*plain.summary.error, 1e-6);
+  const stc::IterationRecord& first = nested.summary.history.front();
+  EXPECT_GT(first.sparse_solves, 0);
+  EXPECT_EQ(first.relaxations, 1);
+  // The start is the shape of the solution: the first relaxation is closer to it than the plain
+  // solve's first one.
+  ASSERT_TRUE(first.error && plain.summary.history.front().error);
+  EXPECT_LT(*first.error, 0.1 * *plain.summary.history.front().error);
+}
+
+TEST(NestedInTime, AWarmStartTurnsItOff) {
+  stc::StrategyInputs inputs;
+  inputs.start = &fixture().incremental.interface;
+  const stc::SolveResult r = solveApriori(101, inputs);
+  EXPECT_FALSE(says(r, "every")) << r.summary.message;
+}
+
+// The callback sees the records of the result (all but the one the solve stops on, as without the
+// sub-grid): the sub-grid's sparse solves and time included.
+TEST(NestedInTime, TheCallbackSeesTheRecordsOfTheResult) {
+  std::vector<stc::IterationRecord> seen;
+  stc::StrategyInputs inputs;
+  inputs.callback = [&](const stc::IterationRecord& r) {
+    seen.push_back(r);
+    return true;
+  };
+  const stc::SolveResult r = solveApriori(101, inputs);
+  ASSERT_FALSE(seen.empty());
+  ASSERT_LE(seen.size(), r.summary.history.size());
+  for (size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i].sparse_solves, r.summary.history[i].sparse_solves);
+    EXPECT_EQ(seen[i].relaxations, r.summary.history[i].relaxations);
+    EXPECT_DOUBLE_EQ(seen[i].wall_s, r.summary.history[i].wall_s);
+  }
+}
+
+TEST(NestedInTime, ASubgridSolveThatDoesNotConvergeIsSaidAndLeftOut) {
+  const stc::SolveResult r = solveApriori(101, {}, 3);
+  EXPECT_TRUE(says(r, "(101 instants, 3 relaxations, ")) << r.summary.message;
+  EXPECT_TRUE(says(r, "did not converge: the whole grid solved without it")) << r.summary.message;
+  EXPECT_EQ(r.summary.relaxations, 3);
+}
