@@ -178,9 +178,12 @@ std::optional<SolveResult> solveWithinPrescribedReach(const Problem& problem, co
   if (!W) return std::nullopt;
   std::vector<int> reach = nodesWithinReach(problem.contact, *W, kReachMargin);
   if (reach.empty() || reach.size() > kWholeShare * problem.contact.size()) return std::nullopt;
-  const InterfaceHistory rigid = rigidMotionHistory(problem.contact, *W);
-  if (!from.start) from.start = &rigid;
-  from.hat = *from.start;
+  InterfaceHistory rigid;
+  if (!from.start) {
+    rigid = rigidMotionHistory(problem.contact, *W);
+    from.start = &rigid;
+  }
+  from.hat = from.start;
   from.zone_origin = inputs.start ? "the zone within reach of the prescribed motion"
                                   : "the zone within reach of the prescribed motion, started from it carried rigidly";
   return solveAprioriOnZone(problem, spec, inputs, std::move(reach), from);
@@ -201,7 +204,7 @@ SolveResult solveAprioriOnContactZone(const Problem& problem, const SolverSpec& 
   const int n = problem.contact.size();
   std::vector<int> zone = first.zone;
   if (zone.empty() || zone.size() > kWholeShare * n) zone = otherNodes(n, {});
-  from.hat = first.hat;
+  from.hat = &first.hat;
   from.first = first.record;
   from.measure_s = first.measure_s;
   from.zone_origin = "first relaxation on all " + std::to_string(n);
@@ -214,7 +217,7 @@ namespace {
 class ZoneRounds {
  public:
   ZoneRounds(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs, const ZoneStart& from)
-      : problem_(problem), spec_(spec), inputs_(inputs), from_(from), hat_(from.hat), measure_s_(from.measure_s) {
+      : problem_(problem), spec_(spec), inputs_(inputs), from_(from), first_hat_(from.hat), measure_s_(from.measure_s) {
     if (from.first) {
       history_.push_back(*from.first);
       offsets_ = {from.first->iteration, from.first->relaxations, from.first->sparse_solves, 0.0};
@@ -252,7 +255,7 @@ class ZoneRounds {
     budget.max_iterations = std::max(1, whole ? left : left / 2);
     Eigen::MatrixXd far_v;
     // B of the nodes left out: the rows of their sub-interface.
-    SolveResult r = solveAprioriOn(whole ? problem_ : part, budget, restricted(hat_, rows),
+    SolveResult r = solveAprioriOn(whole ? problem_ : part, budget, startOn(rows),
                                    seed_ ? &part_seed : nullptr, measure_ ? &*measure_ : nullptr, shift,
                                    restrictToNodes(contact, far).B, far_v, inputs_.spatial_modes);
     count(r.summary, withClock(before, clock.value_or(clockOffset(r.summary.wall_s))));
@@ -265,17 +268,18 @@ class ZoneRounds {
     return last.termination == Termination::StoppedByCallback || offsets_.relaxations >= spec_.max_iterations;
   }
 
-  /// The next round starts from `last`, or from the first start when it did not converge (it
-  /// stagnated: κ = 0.01 of the hard cases), as a solve without the reduction would.
-  void startNext(const SolveResult& last) {
+  /// The next round starts from `last` (its ŝ and directions taken), or from the first start when it
+  /// did not converge (it stagnated: κ = 0.01 of the hard cases), as a solve without the reduction would.
+  void startNext(SolveResult&& last) {
     if (measure_) measure_s_ += measure_->secondsSpent();
     measure_.reset();
     if (last.summary.converged()) {
-      hat_ = *last.contact_admissible;
-      seed_ = last.interface_directions;
+      hat_ = std::move(*last.contact_admissible);
+      seed_ = std::move(last.interface_directions);
       return;
     }
-    hat_ = from_.start ? *from_.start : InterfaceHistory::zeros(problem_.contact, problem_.numSteps());
+    hat_.reset();
+    first_hat_ = from_.start;
     seed_.reset();
     if (inputs_.basis_seed) seed_ = *inputs_.basis_seed;
   }
@@ -295,6 +299,12 @@ class ZoneRounds {
   }
 
  private:
+  // The rows `rows` of the next round's start: the last round's ŝ, or the first start (s = 0 when none).
+  InterfaceHistory startOn(const std::vector<int>& rows) const {
+    const InterfaceHistory* hat = hat_ ? &*hat_ : first_hat_;
+    if (hat) return restricted(*hat, rows);
+    return InterfaceHistory::zerosWithRows(static_cast<int>(rows.size()), problem_.numSteps());
+  }
   // Seconds on this solve's clock (from from_.clock, the true-error measure left out as the
   // monitor leaves it out) less `wall_s`.
   double clockOffset(double wall_s) const {
@@ -328,7 +338,8 @@ class ZoneRounds {
   const SolverSpec& spec_;
   const StrategyInputs& inputs_;
   const ZoneStart& from_;
-  InterfaceHistory hat_;
+  const InterfaceHistory* first_hat_;     ///< where the first round starts (null: s = 0)
+  std::optional<InterfaceHistory> hat_;  ///< where a later round starts, when not from first_hat_
   std::optional<Eigen::MatrixXd> seed_;
   Offsets offsets_;
   std::vector<IterationRecord> history_;
@@ -361,10 +372,11 @@ SolveResult solveAprioriOnZone(const Problem& problem, const SolverSpec& spec, c
     log += zoneSize(zone, n) + ", then " +
            (sum.converged() ? "(" + std::to_string(wrong.size()) + " nodes left out penetrating) "
                             : "(that solve " + std::string(toString(sum.termination)) + ", from the start) ");
-    rounds.startNext(out);
+    const bool converged = sum.converged();
+    rounds.startNext(std::move(out));
     zone.insert(zone.end(), wrong.begin(), wrong.end());
     std::sort(zone.begin(), zone.end());
-    if (!sum.converged() || round >= kZoneRounds) zone = otherNodes(n, {});
+    if (!converged || round >= kZoneRounds) zone = otherNodes(n, {});
   }
 }
 

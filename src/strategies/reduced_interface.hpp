@@ -69,9 +69,10 @@ SolveResult solveAprioriOn(const Problem& problem, const SolverSpec& spec, const
 SolveResult solveAprioriOnContactZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs);
 
 /// Where steps 2–3 start: ŝ on the whole interface (the first start, or the first relaxation's local
-/// stage), and what was spent before (counted in the result).
+/// stage), and what was spent before (counted in the result). The histories pointed to must outlive
+/// the solve; each round copies the rows of its zone alone.
 struct ZoneStart {
-  InterfaceHistory hat;
+  const InterfaceHistory* hat = nullptr;    ///< ŝ of the first round (null: s = 0)
   const InterfaceHistory* start = nullptr;  ///< the first start (null: s = 0), for a whole-interface restart
   std::optional<IterationRecord> first;     ///< the record of a first relaxation, counted in the result
   double measure_s = 0.0;                   ///< time spent measuring its true error (not the solve's)

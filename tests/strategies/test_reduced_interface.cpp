@@ -141,8 +141,7 @@ TEST(ReducedInterface, ACheckOfTheNodesLeftOutCompletesAZoneThatMissesContact) {
   const auto& f = fixture();
   stc::StrategyInputs inputs;
   inputs.reference = &f.reference;
-  stc::ZoneStart from;
-  from.hat = stc::InterfaceHistory::zeros(f.problem.contact, f.problem.numSteps());
+  stc::ZoneStart from;  // from s = 0
   const int nearest = f.problem.contact.size() / 2;  // the half-disc's lowest arc node
   const stc::SolveResult r = stc::solveAprioriOnZone(f.problem, specAt(1e-6, true), inputs, {nearest}, from);
   ASSERT_TRUE(r.summary.converged()) << r.summary.message;
