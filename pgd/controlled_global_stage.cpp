@@ -48,6 +48,12 @@ ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledS
   options_.validate();
 }
 
+void ControlledGlobalStage::retime(const Problem& grid) {
+  basis_.retime(grid);
+  c_.resize(0, 0);
+  target_ = -1.0;
+}
+
 int ControlledGlobalStage::seed(const Eigen::MatrixXd& directions) {
   requireFits(directions, problem_);
   return basis_.append(directions);

@@ -54,6 +54,11 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// start), k⁻¹-orthonormalised in order, dependent ones dropped. Returns the number kept.
   int seed(const Eigen::MatrixXd& directions);
 
+  /// The stage on another time grid of the same problem (ResponseBasis::retime): the factor and the
+  /// directions are kept, the coordinates of the last solve and the observed gap are dropped (the
+  /// next solve's bound is a share of its right-hand side, as for a first solve). What nested
+  /// iteration in time uses to solve on a sub-grid and then on the whole grid with one basis.
+  void retime(const Problem& grid);
   const ResponseBasis& basis() const { return basis_; }
   const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
   /// c of the last solve (p × m): the displacement history is u_k = U_F g_k + X c_k.

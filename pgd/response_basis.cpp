@@ -1,5 +1,7 @@
 #include "pgd/response_basis.hpp"
 
+#include <stdexcept>
+
 #include "pgd/separated_loads.hpp"
 
 namespace stc::pgd {
@@ -29,6 +31,16 @@ ResponseBasis::ResponseBasis(const Problem& problem, const SpdFactor& factor)
   const Eigen::MatrixXd load_energy = UF_.transpose() * loads.F;
   for (Eigen::Index j = 0; j < UF_.cols(); ++j)
     energy_.append(0.5 * (load_energy.col(j).head(j + 1) + load_energy.row(j).head(j + 1).transpose()));
+}
+
+void ResponseBasis::retime(const Problem& grid) {
+  bool same = grid.numFreeDofs() == problem_.numFreeDofs() && grid.contact.rows() == problem_.contact.rows() &&
+              grid.loads.size() == problem_.loads.size();
+  for (size_t i = 0; same && i < grid.loads.size(); ++i)
+    same = grid.loads[i].free_force == problem_.loads[i].free_force;
+  if (!same) throw std::invalid_argument("ResponseBasis::retime: not the same problem on another time grid");
+  G_ = separatedLoads(grid).G;
+  v0_ = VF_ * G_;
 }
 
 Eigen::MatrixXd ResponseBasis::orthonormalised(const Eigen::MatrixXd& candidates, double drop) const {

@@ -48,6 +48,11 @@ class ResponseBasis {
   /// than `drop` of their norm, and solves for their responses (one multi-right-hand-side solve).
   /// Returns the number appended.
   int append(const Eigen::MatrixXd& candidates, double drop = 1e-8);
+  /// The same basis on another time grid of the same problem (`grid`: stc::onInstants of it, or the
+  /// problem itself again): the load histories G and the free response V_F G are taken on its
+  /// instants, everything else (directions, responses, energy factor) is spatial and kept. Throws
+  /// std::invalid_argument when `grid` has other load vectors, free dofs or interface rows.
+  void retime(const Problem& grid);
   /// Right-hand sides solved so far (loads included).
   long sparseSolves() const { return sparse_solves_; }
 

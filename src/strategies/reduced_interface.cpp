@@ -7,12 +7,12 @@
 #include <string>
 
 #include "fas/coarse_zone.hpp"
-#include "fas/fas_solver.hpp"
 #include "latin/indicator.hpp"
 #include "latin/local_stage.hpp"
 #include "pgd/separated_history.hpp"
 #include "src/problem/prescribed_reach.hpp"
 #include "src/solver/warm_start.hpp"
+#include "src/strategies/nested_in_time.hpp"
 
 namespace stc {
 namespace {
@@ -160,8 +160,7 @@ SolveResult solveAprioriOn(const Problem& problem, const SolverSpec& spec, const
                            const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v, bool spatial_modes) {
   pgd::ControlledGlobalStage stage(problem, stageOptions(spec));
   if (seed) stage.seed(*seed);
-  fas::AprioriBasisProvider provider(stage, aprioriOptions(spec));
-  SolveResult result = fas::solveFas(problem, stage, provider, start, fasOptions(spec), "fas-apriori", reference, callback);
+  SolveResult result = solveFasNestedInTime(problem, stage, spec, start, reference, callback);
   result.interface_directions = stage.basis().directions();
   if (spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
   far_v = pgd::displacementTraces(stage.basis(), stage.coordinates(), B_far);
@@ -253,6 +252,9 @@ class ZoneRounds {
     SolverSpec budget = spec_;
     const int left = spec_.max_iterations - offsets_.relaxations;
     budget.max_iterations = std::max(1, whole ? left : left / 2);
+    // Nested iteration in time (nested_in_time.hpp) begins a solve from scratch: not from a warm
+    // start, nor in a later round, which starts from the last one.
+    if (inputs_.start || rounds_++ > 0) budget.fas.nested_instants = 0;
     Eigen::MatrixXd far_v;
     // B of the nodes left out: the rows of their sub-interface.
     SolveResult r = solveAprioriOn(whole ? problem_ : part, budget, startOn(rows),
@@ -345,6 +347,7 @@ class ZoneRounds {
   std::vector<IterationRecord> history_;
   std::optional<ErrorOnRows> measure_;
   double measure_s_ = 0.0;  ///< true-error measures of earlier rounds
+  int rounds_ = 0;          ///< restricted solves so far
 };
 
 std::string zoneSize(const std::vector<int>& zone, int n) {

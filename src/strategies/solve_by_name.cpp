@@ -10,7 +10,6 @@
 #include "pgd/separated_history.hpp"
 #include "src/core/input_error.hpp"
 #include "src/solver/incremental_solver.hpp"
-#include "src/strategies/nested_in_time.hpp"
 #include "src/strategies/reduced_interface.hpp"
 
 namespace stc {
@@ -65,17 +64,13 @@ SolveResult solveAposteriori(const Problem& problem, const SolverSpec& spec, con
                        inputs.reference, inputs.callback);
 }
 
-// fas-apriori on one time grid: on its contact zone (the default) or on every node.
-SolveResult solveAprioriOnGrid(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+SolveResult solveApriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
   if (spec.fas.reduce_interface && problem.contact.size() > 0) return solveAprioriOnContactZone(problem, spec, inputs);
   Eigen::MatrixXd none;
-  return solveAprioriOn(problem, spec, startOf(problem, inputs), inputs.basis_seed, inputs.reference, inputs.callback,
+  SolverSpec own = spec;
+  if (inputs.start) own.fas.nested_instants = 0;  // nested iteration in time begins from scratch
+  return solveAprioriOn(problem, own, startOf(problem, inputs), inputs.basis_seed, inputs.reference, inputs.callback,
                         Eigen::SparseMatrix<double>(0, problem.numFreeDofs()), none, inputs.spatial_modes);
-}
-
-// fas-apriori, started on long grids from its own solution on every q-th instant.
-SolveResult solveApriori(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
-  return solveNestedInTime(problem, spec, inputs, solveAprioriOnGrid);
 }
 
 SolveResult solveLatinPgd(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {

@@ -5,11 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 #include "latin/global_stage.hpp"
 #include "latin/indicator.hpp"
 #include "latin/local_stage.hpp"
 #include "pgd/controlled_global_stage.hpp"
+#include "src/problem/time_subgrid.hpp"
 #include "src/solver/incremental_solver.hpp"
 #include "solver/seed_scene.hpp"
 
@@ -137,4 +140,35 @@ TEST(ControlledGlobalStage, AnticipatesTheCoordinatesOfItsNextSolve) {
   // The solve projects w on all directions at once, the anticipation on the old ones and then the
   // new ones on what the old left (k⁻¹-orthogonal to the old: equal up to round-off).
   EXPECT_LE((stage.coordinates() - anticipated).norm(), 1e-10 * anticipated.norm());
+}
+
+// Retimed to every 4th instant, the stage is the sub-grid's own (the same free response, the same
+// iterate from the same local stage, the directions kept); retimed back, the whole grid's. A problem
+// with other load vectors is refused.
+TEST(ControlledGlobalStage, RetimedIsTheStageOfTheOtherGrid) {
+  const auto& f = fixture();
+  const std::vector<int> kept = stc::everyNthInstant(f.problem.numSteps(), 4);
+  const stc::Problem sub = stc::onInstants(f.problem, kept);
+  stc::pgd::ControlledGlobalStage stage(f.problem, {});
+  stc::InterfaceHistory s;
+  stage.solve(f.hat(), s);
+  const int directions = stage.rank();
+  const Eigen::MatrixXd whole_free = stage.basis().freeResponse();
+  stage.retime(sub);
+  EXPECT_EQ(stage.rank(), directions);
+  stc::pgd::ControlledGlobalStage own(sub, {});
+  ASSERT_EQ(stage.basis().freeResponse().cols(), sub.numSteps());
+  EXPECT_LE((stage.basis().freeResponse() - own.basis().freeResponse()).norm(), 1e-12 * whole_free.norm());
+  EXPECT_EQ(stage.basis().freeResponse(), whole_free(Eigen::all, kept));
+  // The same directions in `own`: both give the same iterate from a sub-grid local stage.
+  own.seed(stage.basis().directions());
+  const stc::InterfaceHistory h = f.hat(), h_sub{h.v(Eigen::all, kept), h.lambda(Eigen::all, kept)};
+  stc::InterfaceHistory a, b;
+  stage.solve(h_sub, a);
+  own.solve(h_sub, b);
+  EXPECT_LE(distance(sub, a, b), 1e-9 * std::sqrt(stc::latin::searchNormSquared(sub.contact.search_direction, b.v, b.lambda)));
+  stage.retime(f.problem);
+  EXPECT_EQ(stage.basis().freeResponse(), whole_free);
+  const stc::Problem other = stc::buildProblem(stc::test::seedScene(21, 41));
+  EXPECT_THROW(stage.retime(other), std::invalid_argument);
 }
