@@ -13,8 +13,8 @@
 #include <Eigen/CholmodSupport>
 #include <thread>
 
-#include "latin/global_stage.hpp"
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Wall time of the incremental reference solver (src/solver/incremental_solver.hpp) on the seed
+// Wall time of the incremental reference solver (src/incremental/incremental_solver.hpp) on the seed
 // scene (arc_nodes 101, steps 201), with the set-up (factorisation, W, v_0 and instant 0) and the
 // Newton iterations as counters.
 //   cmake -B build -DSTC_BUILD_BENCHMARKS=ON && cmake --build build --target bench_incremental
@@ -8,8 +8,8 @@
 #include <regex>
 #include <string>
 
-#include "src/scene/scene_reader.hpp"
-#include "src/solver/incremental_solver.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace {
 

@@ -5,11 +5,11 @@
 //   build/bench/bench_latin --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
-#include "latin/global_stage.hpp"
-#include "latin/indicator.hpp"
-#include "latin/local_stage.hpp"
-#include "src/core/threads.hpp"
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/core/threads.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/latin/indicator.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace {
 

@@ -21,14 +21,14 @@
 #include <memory>
 #include <string>
 
-#include "fas/apriori_basis.hpp"
-#include "fas/coarse_step.hpp"
-#include "latin/global_stage.hpp"
-#include "latin/indicator.hpp"
-#include "latin/local_stage.hpp"
-#include "pgd/controlled_global_stage.hpp"
-#include "src/core/threads.hpp"
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/core/threads.hpp"
+#include "stcontact/fas/apriori/apriori_basis.hpp"
+#include "stcontact/fas/coarse_step.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/latin/indicator.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace {
 

@@ -1,9 +1,9 @@
 // stcontact check SCENE: validate and print the model's sizes.
 #include <iostream>
 
-#include "src/cli/commands.hpp"
-#include "src/problem/problem.hpp"
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/cli/commands.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace stc::cli {
 

@@ -2,32 +2,26 @@
 // scene `--repeats` times; the incremental reference, computed once, gives every iteration its true
 // error. Writes, each atomically, into --out: work_precision.csv, summary.csv, summary.md and, through
 // gnuplot, three PNG plots. docs/compare.md describes every file and how time and memory are measured.
-#include "src/cli/compare_command.hpp"
+#include "stcontact/cli/compare_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
 #include <sstream>
 
-#include "src/cli/commands.hpp"
-#include "src/cli/compare_plots.hpp"
-#include "src/cli/compare_runs.hpp"
-#include "src/core/input_error.hpp"
-#include "src/io/atomic_file.hpp"
-#include "src/report/comparison_writer.hpp"
-#include "src/report/number_format.hpp"
-#include "src/scene/scene_reader.hpp"
-#include "src/strategies/solve_by_name.hpp"
-#include "stc_git_commit.hpp"  // STC_GIT_COMMIT, generated at build time
+#include "stcontact/cli/commands.hpp"
+#include "stcontact/cli/terminal_progress.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/scene/scene_reader.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/studies/compare_plots.hpp"
+#include "stcontact/studies/compare_runs.hpp"
+#include "stcontact/studies/comparison_writer.hpp"
+#include "stcontact/studies/number_format.hpp"
 
 namespace stc::cli {
 namespace {
-
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
 
 std::string commandLine(const CompareArgs& a, const std::vector<std::string>& solvers,
                         const std::filesystem::path& out) {
@@ -40,50 +34,15 @@ std::string commandLine(const CompareArgs& a, const std::vector<std::string>& so
   return line;
 }
 
-void printStrategy(const StrategyMeasurement& m) {
+std::string strategyLine(const StrategyMeasurement& m) {
   const StrategySummary s = summarize(m);
-  std::cout << "  " << m.solver << ": " << toString(m.termination) << ", median " << shortNumber(s.median_total_s, 3)
-            << " s";
+  std::string line = "  " + m.solver + ": " + toString(m.termination) + ", median " + shortNumber(s.median_total_s, 3) + " s";
   for (const Reach& r : s.reaches)
-    std::cout << ", " << targetLabel(r.target) << " " << (r.wall_s ? shortNumber(*r.wall_s, 3) + " s" : "not reached");
-  std::cout << std::endl;
+    line += ", " + targetLabel(r.target) + " " + (r.wall_s ? shortNumber(*r.wall_s, 3) + " s" : "not reached");
+  return line;
 }
 
 }  // namespace
-
-// Split here rather than by CLI11's ->delimiter(','): CLI11 2.1.2 (Debian 12) drops empty items, so
-// "--solvers latin,,incremental" would pass as two names instead of the documented refusal
-// "--solvers: empty name" (docs/compare.md; the ctest case cli.compare_empty_solver_name).
-std::vector<std::string> solverList(const std::string& list) {
-  if (trimmed(list).empty()) return availableSolvers();
-  std::vector<std::string> names;
-  std::stringstream items(list);
-  std::string item;
-  while (std::getline(items, item, ',')) {
-    const std::string name = trimmed(item);
-    if (name.empty()) throw InputError("--solvers: empty name in '" + list + "'");
-    requireAvailable(name);
-    if (std::find(names.begin(), names.end(), name) != names.end())
-      throw InputError("--solvers: '" + name + "' is listed twice");
-    names.push_back(name);
-  }
-  return names;
-}
-
-Comparison describeComparison(const std::string& scene_file, const std::string& command, const Scene& scene,
-                              const Problem& problem, int repeats) {
-  Comparison c;
-  c.scene_name = scene.name;
-  c.scene_file = scene_file;
-  c.command = command;
-  c.n_dofs = problem.numDofs();
-  c.n_contact_nodes = problem.contact.size();
-  c.n_steps = problem.numSteps();
-  c.tolerance = scene.solver.tolerance;
-  c.repeats = repeats;
-  c.environment = describeRunEnvironment(STC_BUILD_TYPE, STC_GIT_COMMIT);
-  return c;
-}
 
 CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args) {
   auto* cmd = app.add_subcommand("compare", "work-precision comparison of strategies (docs/compare.md)");
@@ -111,12 +70,13 @@ int runCompare(const CompareArgs& args) {
   const Problem problem = buildProblem(scene);
   Comparison comparison = describeComparison(args.scene, commandLine(args, solvers, out), scene, problem, args.repeats);
 
-  const ReferenceSolution reference = computeReference(problem, args.quiet);
+  TerminalProgress progress(args.quiet);
+  const ReferenceSolution reference = computeReference(problem, &progress);
   comparison.reference_s = reference.total_s;
-  const CompareContext context{problem, scene.solver, reference, args.repeats, args.quiet};
+  const CompareContext context{problem, scene.solver, reference, args.repeats, &progress};
   for (const std::string& solver : solvers) {
     comparison.strategies.push_back(measureStrategy(solver, context));
-    if (!args.quiet) printStrategy(comparison.strategies.back());
+    progress.note(strategyLine(comparison.strategies.back()));
   }
   comparison.memory_method = describeMemoryMethod(comparison.strategies.front().memory.since_reset);
   comparison.load_after = loadAverage();

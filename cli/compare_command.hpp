@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "src/problem/problem.hpp"
-#include "src/report/comparison.hpp"
-#include "src/scene/scene.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene.hpp"
+#include "stcontact/studies/compare_runs.hpp"
 
 namespace CLI {
 class App;
@@ -23,14 +23,6 @@ struct CompareArgs {
   std::optional<double> tolerance;     ///< on the error estimate; default the scene's
   bool quiet = false;
 };
-
-/// The comma-separated strategy names of --solvers (empty: availableSolvers()); InputError for
-/// an empty, unknown, unavailable or repeated name.
-std::vector<std::string> solverList(const std::string& list);
-
-/// The comparison's description before its runs: scene, sizes, command, machine and build.
-Comparison describeComparison(const std::string& scene_file, const std::string& command, const Scene& scene,
-                              const Problem& problem, int repeats);
 
 /// Declares the sub-command and its options on `app`, filling `args`.
 CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args);

@@ -1,8 +1,8 @@
 #include <iostream>
 #include <set>
 
-#include "src/cli/commands.hpp"
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/cli/commands.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace stc::cli {
 

@@ -5,14 +5,15 @@
 
 #include <iostream>
 
-#include "src/cli/commands.hpp"
-#include "src/cli/compare_command.hpp"
-#include "src/cli/sweep_command.hpp"
-#include "src/cli/scaling_command.hpp"
-#include "src/cli/threads_option.hpp"
-#include "src/core/input_error.hpp"
-#include "src/io/output_error.hpp"
-#include "src/linalg/blas_kernels.hpp"
+#include "stcontact/cli/commands.hpp"
+#include "stcontact/cli/compare_command.hpp"
+#include "stcontact/cli/scaling_command.hpp"
+#include "stcontact/cli/sweep_command.hpp"
+#include "stcontact/cli/threads_option.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/io/output_error.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/version.hpp"
 
 namespace {
 

@@ -1,25 +1,25 @@
 // stcontact scaling SCENE: for every size of a mesh series (arc nodes, at the scene's instants) and
 // a time series (instants, at the scene's mesh), the comparison of `stcontact compare` (same runs,
 // compare_runs.hpp) with every iterative run stopped at the target true error; then growth
-// exponents, crossover against incremental and memory (src/report/scaling_study.hpp). Writes
+// exponents, crossover against incremental and memory (studies/scaling_study.hpp). Writes
 // scaling.csv, summary.md, sizes/<size>/ and, through gnuplot, the plots. docs/scaling.md.
-#include "src/cli/scaling_command.hpp"
+#include "stcontact/cli/scaling_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <iostream>
 
-#include "src/cli/commands.hpp"
-#include "src/cli/compare_command.hpp"
-#include "src/cli/compare_runs.hpp"
-#include "src/cli/scaling_plots.hpp"
-#include "src/core/input_error.hpp"
-#include "src/io/atomic_file.hpp"
-#include "src/report/number_format.hpp"
-#include "src/report/scaling_writer.hpp"
-#include "src/scene/scene_reader.hpp"
-#include "stc_git_commit.hpp"  // STC_GIT_COMMIT, generated at build time
+#include "stcontact/cli/commands.hpp"
+#include "stcontact/cli/compare_command.hpp"
+#include "stcontact/cli/terminal_progress.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/scene/scene_reader.hpp"
+#include "stcontact/studies/compare_runs.hpp"
+#include "stcontact/studies/number_format.hpp"
+#include "stcontact/studies/scaling_plots.hpp"
+#include "stcontact/studies/scaling_writer.hpp"
 
 namespace stc::cli {
 namespace {
@@ -160,11 +160,12 @@ ScalingPoint measureSize(const ScalingArgs& a, const ScalingStudy& study, const 
   if (!a.quiet)
     std::cout << "  " << p.comparison.n_dofs << " dofs, " << p.comparison.n_contact_nodes << " contact nodes, "
               << p.comparison.n_steps << " instants" << std::endl;
-  const ReferenceSolution reference = computeReference(problem, a.quiet);
+  TerminalProgress progress(a.quiet);
+  const ReferenceSolution reference = computeReference(problem, &progress);
   p.comparison.reference_s = reference.total_s;
   p.factor_nonzeros = reference.factor_nonzeros;
   if (!a.quiet) std::cout << "    reference: " << shortNumber(reference.total_s, 3) << " s" << std::endl;
-  CompareContext context{problem, scene.solver, reference, a.repeats, a.quiet};
+  CompareContext context{problem, scene.solver, reference, a.repeats, &progress};
   context.stop.target_error = a.target_error;
   context.stop.time_cap_s = a.time_cap_s;
   for (const std::string& solver : study.solvers) {
@@ -233,7 +234,7 @@ int runScaling(const ScalingArgs& a) {
   study.tolerance = a.tolerance;
   study.repeats = a.repeats;
   study.time_cap_s = a.time_cap_s;
-  study.environment = describeRunEnvironment(STC_BUILD_TYPE, STC_GIT_COMMIT);
+  study.environment = describeRunEnvironment();
   for (std::size_t i = 0; i < plan.size(); ++i) {
     if (!a.quiet)
       std::cout << "[" << i + 1 << "/" << plan.size() << "] " << mesh.parameter << " " << plan[i].mesh_size

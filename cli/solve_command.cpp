@@ -1,78 +1,45 @@
 // stcontact solve SCENE: choose the solver, compute the incremental reference for the true error
 // (scenes small enough, unless --no-reference), solve, write every output file.
 #include <iostream>
-#include <iomanip>
 #include <memory>
-#include <sstream>
 
-#include "src/cli/commands.hpp"
-#include "src/cli/progress.hpp"
-#include "src/core/input_error.hpp"
-#include "src/io/atomic_file.hpp"
-#include "src/io/run_writer.hpp"
-#include "src/scene/scene_reader.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/cli/commands.hpp"
+#include "stcontact/cli/terminal_progress.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/io/run_writer.hpp"
+#include "stcontact/scene/scene_reader.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/studies/reference.hpp"
+#include "stcontact/studies/solve_options.hpp"
+#include "stcontact/version.hpp"
 
 namespace stc::cli {
 namespace {
 
-std::unique_ptr<ErrorReference> computeReference(const Problem& problem, bool quiet) {
-  Progress progress("reference (incremental)", !quiet);
+std::unique_ptr<ErrorReference> referenceOrWarning(const Problem& problem, TerminalProgress& progress) {
   std::string warning;
-  std::unique_ptr<ErrorReference> reference = solveReference(problem, progress.callback(), warning);
-  progress.done();
+  std::unique_ptr<ErrorReference> reference;
+  {
+    const RunProgress run(&progress, "reference (incremental)");
+    reference = solveReference(problem, run.callback(), warning);
+  }
   if (!warning.empty()) std::cerr << "warning: " << warning << std::endl;
   return reference;
 }
 
 SolveResult runSolver(const std::string& name, const Problem& problem, const Scene& scene,
-                      const ErrorReference* reference, bool quiet) {
-  Progress progress(name, !quiet);
+                      const ErrorReference* reference, TerminalProgress& progress) {
+  const RunProgress run(&progress, name);
   StrategyInputs inputs;
   inputs.reference = reference;
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
-  inputs.callback = progress.callback();
+  inputs.callback = run.callback();
   inputs.spatial_modes = false;  // not written
-  SolveResult result = solveByName(name, problem, scene.solver, inputs);
-  progress.done();
-  return result;
+  return solveByName(name, problem, scene.solver, inputs);
 }
 
 }  // namespace
-
-// A reference that fails (Newton stops at some instant) is not an internal failure: the solve
-// goes on without a true error, and the warning says why.
-std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
-                                               std::string& warning) {
-  SolveResult ref = solveIncremental(problem, {}, callback);
-  if (!ref.summary.converged()) {
-    warning = "no true error: the incremental reference did not converge (" + ref.summary.message + ")";
-    return nullptr;
-  }
-  auto factor = std::make_shared<const SpdFactor>(problem.stiffness_free, "K_ff");
-  return std::make_unique<ErrorReference>(problem, std::move(factor), std::move(ref.interface.lambda));
-}
-
-std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, const std::optional<std::string>& solver,
-                                           const std::optional<double>& tolerance,
-                                           const std::optional<int>& max_iterations) {
-  if (solver) {
-    requireAvailable(*solver);
-    overrides.push_back("solver.name=" + *solver);
-  }
-  if (tolerance) {
-    if (!(*tolerance > 0.0)) throw InputError("--tol must be > 0");
-    std::ostringstream value;
-    value << std::setprecision(17) << *tolerance;
-    overrides.push_back("solver.tolerance=" + value.str());
-  }
-  if (max_iterations) {
-    if (*max_iterations < 1) throw InputError("--max-iterations must be >= 1");
-    overrides.push_back("solver.max_iterations=" + std::to_string(*max_iterations));
-  }
-  return overrides;
-}
 
 int runSolve(const SolveArgs& args) {
   const Scene scene = loadScene(args.scene, withSolverOptions(args.overrides, args.solver, args.tolerance, args.max_iterations));
@@ -83,10 +50,11 @@ int runSolve(const SolveArgs& args) {
   const Problem problem = buildProblem(scene);  // bad input stops here, before anything is created
   ensureWritableDirectory(out);                  // fail before the solve, not after
 
+  TerminalProgress progress(args.quiet);
   std::unique_ptr<ErrorReference> reference;
   if (solver != "incremental" && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes)
-    reference = computeReference(problem, args.quiet);
-  const SolveResult result = runSolver(solver, problem, scene, reference.get(), args.quiet);
+    reference = referenceOrWarning(problem, progress);
+  const SolveResult result = runSolver(solver, problem, scene, reference.get(), progress);
   writeRunOutputs(out, problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
 
   if (!args.quiet) {

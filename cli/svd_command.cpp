@@ -2,7 +2,7 @@
 // (Figs. 2 and 3). Solves the scene with the incremental solver (exact to round-off), builds the
 // full displacement history U (n × m), computes its SVD in the energy product with ARPACK
 // (U = Σ σ_i Υ_i ν_iᵀ, Υᵀ K Υ = I; pgd/space_time_svd.hpp), checks it against the dense eigensolver
-// when m is small, measures each mode's localisation at the contact zone (src/report/mode_localisation.hpp)
+// when m is small, measures each mode's localisation at the contact zone (studies/mode_localisation.hpp)
 // and writes every file atomically into --out (default results/<scene>/svd):
 //   singular_values.csv, time_functions.csv, localisation.csv, modes.vtu, modes_deformed.dat,
 //   svd_figures.gp, svd_summary.json and, through gnuplot, singular_values.png, time_functions.png,
@@ -13,17 +13,17 @@
 #include <iostream>
 #include <memory>
 
-#include "pgd/displacement_history.hpp"
-#include "pgd/space_time_svd.hpp"
-#include "src/cli/commands.hpp"
-#include "src/core/input_error.hpp"
-#include "src/io/atomic_file.hpp"
-#include "src/io/json_writer.hpp"
-#include "src/report/mode_localisation.hpp"
-#include "src/report/svd_figures.hpp"
-#include "src/report/svd_tables.hpp"
-#include "src/scene/scene_reader.hpp"
-#include "src/solver/incremental_solver.hpp"
+#include "stcontact/cli/commands.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/io/json_writer.hpp"
+#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/pgd/space_time_svd.hpp"
+#include "stcontact/scene/scene_reader.hpp"
+#include "stcontact/studies/mode_localisation.hpp"
+#include "stcontact/studies/svd_figures.hpp"
+#include "stcontact/studies/svd_tables.hpp"
 
 namespace stc::cli {
 namespace {
@@ -35,7 +35,7 @@ constexpr int kMaxDenseCheck = 2000;       // m above which the O(m³) dense che
 constexpr double kEnergyLevels[] = {0.99, 0.999, 0.9999};
 constexpr const char* kEnergyLabels[] = {"99%", "99.9%", "99.99%"};
 // Bands around the contact zone, in units of the scene's length scale (the radius for the seed):
-// 1.5, 3 and 6 element sizes at the seed's arc (src/report/mode_localisation.hpp explains the choice).
+// 1.5, 3 and 6 element sizes at the seed's arc (studies/mode_localisation.hpp explains the choice).
 constexpr double kBandDepths[] = {0.05, 0.1, 0.2};
 constexpr double kFigureDisplacement = 0.12;  // largest displacement of a drawn mode, × length scale
 

@@ -2,21 +2,22 @@
 // first (a bad range, an unknown key or a value out of range is refused before anything is written),
 // then each value is solved warm (from the previous value's solution) and cold; sweep.csv, summary.md
 // and, through gnuplot, sweep.png go into --out. docs/sweep.md describes every file.
-#include "src/cli/sweep_command.hpp"
+#include "stcontact/cli/sweep_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <iostream>
 
-#include "src/cli/commands.hpp"
-#include "src/cli/gnuplot_plots.hpp"
-#include "src/cli/sweep_runs.hpp"
-#include "src/core/input_error.hpp"
-#include "src/io/atomic_file.hpp"
-#include "src/report/number_format.hpp"
-#include "src/report/sweep_writer.hpp"
-#include "src/scene/scene_reader.hpp"
-#include "src/strategies/solve_by_name.hpp"
-#include "stc_git_commit.hpp"  // STC_GIT_COMMIT, generated at build time
+#include "stcontact/cli/commands.hpp"
+#include "stcontact/cli/terminal_progress.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/scene/scene_reader.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/studies/gnuplot_runner.hpp"
+#include "stcontact/studies/number_format.hpp"
+#include "stcontact/studies/solve_options.hpp"
+#include "stcontact/studies/sweep_runs.hpp"
+#include "stcontact/studies/sweep_writer.hpp"
 
 namespace stc::cli {
 namespace {
@@ -79,7 +80,7 @@ void describe(Sweep& s, const SweepArgs& args, const SweepRange& range, const Sc
   s.key = range.key;
   s.solver = solver;
   s.tolerance = first.solver.tolerance;
-  s.environment = describeRunEnvironment(STC_BUILD_TYPE, STC_GIT_COMMIT);
+  s.environment = describeRunEnvironment();
 }
 
 /// sweep.png: relaxations and wall time per value, warm against cold (scripts/plots/sweep.gp).
@@ -127,8 +128,9 @@ int runSweep(const SweepArgs& args) {
   ensureWritableDirectory(out);  // every input checked: now the folder may be created
   describe(sweep, args, range, scenes.front(), solver, out);
 
+  TerminalProgress progress(args.quiet);
   const SweepSettings settings{solver, !args.no_independent,
-                               args.write_solutions ? std::optional<fs::path>(out) : std::nullopt, args.quiet};
+                               args.write_solutions ? std::optional<fs::path>(out) : std::nullopt, &progress};
   WarmChain chain;
   for (std::size_t i = 0; i < scenes.size(); ++i) sweep.points.push_back(chain.solveValue(scenes[i], range, i, settings));
   sweep.load_after = loadAverage();

@@ -1,17 +1,18 @@
-#include "src/cli/progress.hpp"
+#include "stcontact/cli/terminal_progress.hpp"
 
 #include <unistd.h>
 
 #include <cstdio>
+#include <iostream>
 
 namespace stc::cli {
 
-Progress::Progress(std::string label, bool enabled)
-    : label_(std::move(label)), enabled_(enabled && isatty(STDERR_FILENO)) {}
+TerminalProgress::TerminalProgress(bool quiet) : quiet_(quiet), tty_(!quiet && isatty(STDERR_FILENO)) {}
 
-IterationCallback Progress::callback() {
+IterationCallback TerminalProgress::begin(const std::string& label) {
+  label_ = label;
   return [this](const IterationRecord& r) {
-    if (!enabled_) return true;
+    if (!tty_) return true;
     const auto now = std::chrono::steady_clock::now();
     if (drawn_ && now - last_ < std::chrono::milliseconds(200)) return true;
     last_ = now;
@@ -25,9 +26,13 @@ IterationCallback Progress::callback() {
   };
 }
 
-void Progress::done() {
-  if (enabled_ && drawn_) std::fprintf(stderr, "\r\033[K");
+void TerminalProgress::end() {
+  if (tty_ && drawn_) std::fprintf(stderr, "\r\033[K");
   drawn_ = false;
+}
+
+void TerminalProgress::note(const std::string& line) {
+  if (!quiet_) std::cout << line << std::endl;
 }
 
 }  // namespace stc::cli

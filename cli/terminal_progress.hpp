@@ -1,23 +1,25 @@
 #pragma once
-// Progress line for long runs: shown on a terminal only (stderr is a tty), never with --quiet.
+// The program's progress (studies/progress.hpp): a line redrawn on a terminal (stderr is a tty), at
+// most every 0.2 s; never with --quiet. Notes (one line per strategy or sweep value) go to stdout
+// unless --quiet.
 #include <chrono>
 #include <string>
 
-#include "src/solver/solve_summary.hpp"
+#include "stcontact/studies/progress.hpp"
 
 namespace stc::cli {
 
-class Progress {
+class TerminalProgress : public ProgressReporter {
  public:
-  Progress(std::string label, bool enabled);
-  /// An IterationCallback that redraws the line at most every 0.2 s; never stops the solve.
-  IterationCallback callback();
-  /// Clears the line.
-  void done();
+  explicit TerminalProgress(bool quiet);
+  IterationCallback begin(const std::string& label) override;
+  void end() override;
+  void note(const std::string& line) override;
 
  private:
+  bool quiet_;
+  bool tty_;
   std::string label_;
-  bool enabled_;
   bool drawn_ = false;
   std::chrono::steady_clock::time_point last_;
 };

@@ -3,7 +3,7 @@
 // Unset: STC_THREADS, else the built-in default (src/core/threads.hpp).
 #include <CLI/CLI.hpp>
 
-#include "src/core/threads.hpp"
+#include "stcontact/core/threads.hpp"
 
 namespace stc::cli {
 

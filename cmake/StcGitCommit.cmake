@@ -1,4 +1,4 @@
-# Run at every build (cmake -P, target stc_git_commit in src/cli/CMakeLists.txt): writes OUT with
+# Run at every build (cmake -P, target stc_git_commit in cli/CMakeLists.txt): writes OUT with
 #   #define STC_GIT_COMMIT "<12-digit commit of SOURCE>[+changes]"   ("unknown" without git)
 # "+changes" when tracked files differ from the commit. OUT is rewritten only when the text changes,
 # so a report always names the commit the program was built from, and nothing rebuilds for nothing.

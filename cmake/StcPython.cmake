@@ -1,4 +1,4 @@
-# The Python module (src/python, docs/python.md): option STC_BUILD_PYTHON, on by default when
+# The Python module (python/, docs/python.md): option STC_BUILD_PYTHON, on by default when
 # pybind11, Python 3 with its development files and NumPy are found (Debian 12: pybind11-dev,
 # python3-dev, python3-numpy), off otherwise with a message. Included before the targets.
 #

@@ -27,18 +27,18 @@
 #include <string>
 #include <vector>
 
-#include "fas/aposteriori_basis.hpp"
-#include "fas/apriori_basis.hpp"
-#include "fas/fas_solver.hpp"
-#include "pgd/basis_verification.hpp"
-#include "pgd/displacement_history.hpp"
-#include "src/core/input_error.hpp"
-#include "src/linalg/blas_kernels.hpp"
-#include "src/report/gnuplot_runner.hpp"
-#include "src/scene/scene_reader.hpp"
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/fas/aposteriori/aposteriori_basis.hpp"
+#include "stcontact/fas/apriori/apriori_basis.hpp"
+#include "stcontact/fas/fas_solver.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/pgd/basis_verification.hpp"
+#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/scene/scene_reader.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/studies/gnuplot_runner.hpp"
 
 namespace fs = std::filesystem;
 

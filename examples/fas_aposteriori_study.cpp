@@ -34,20 +34,20 @@
 #include <string>
 #include <vector>
 
-#include "fas/aposteriori_basis.hpp"
-#include "fas/basis_provider.hpp"
-#include "fas/coarse_step.hpp"
-#include "fas/fas_solver.hpp"
-#include "latin/global_stage.hpp"
-#include "latin/indicator.hpp"
-#include "latin/latin_solver.hpp"
-#include "latin/local_stage.hpp"
-#include "src/core/input_error.hpp"
-#include "src/linalg/blas_kernels.hpp"
-#include "src/report/gnuplot_runner.hpp"
-#include "src/scene/scene_reader.hpp"
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/incremental_solver.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/fas/aposteriori/aposteriori_basis.hpp"
+#include "stcontact/fas/basis_provider.hpp"
+#include "stcontact/fas/coarse_step.hpp"
+#include "stcontact/fas/fas_solver.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/latin/indicator.hpp"
+#include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/scene/scene_reader.hpp"
+#include "stcontact/studies/gnuplot_runner.hpp"
 
 namespace fs = std::filesystem;
 using stc::fas::CoarseStart;

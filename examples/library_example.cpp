@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "src/core/input_error.hpp"
-#include "src/linalg/blas_kernels.hpp"
-#include "src/problem/problem.hpp"
-#include "src/scene/scene_reader.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene_reader.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
 
 int main(int argc, char** argv) {
   if (argc < 2) {

@@ -1,6 +1,6 @@
-#include "fas/basis_provider.hpp"
+#include "stcontact/fas/basis_provider.hpp"
 
-#include "fas/residual_vectors.hpp"
+#include "stcontact/fas/residual_vectors.hpp"
 
 namespace stc::fas {
 

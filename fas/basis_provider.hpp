@@ -1,13 +1,13 @@
 #pragma once
 // Where the FAS coarse space comes from, cycle after cycle. A posteriori: SVD modes of a converged
 // solution, fixed, plus residual vectors renewed every cycle (seed §4.3). A priori
-// (fas/apriori_basis.hpp): the energy SVD of the separated iterate built during the iterations.
+// (fas/apriori/apriori_basis.hpp): the energy SVD of the separated iterate built during the iterations.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "fas/coarse_space.hpp"
-#include "latin/global_stage.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/fas/coarse_space.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc::fas {
 
@@ -19,7 +19,7 @@ class BasisProvider {
   /// stage's right-hand side; a provider reads the displacement history of the last global stage,
   /// when it needs one, from the global stage it was built on).
   virtual CoarseSpace coarseSpace(const InterfaceHistory& hat) = 0;
-  /// True when the coarse space comes from the anticipated expansion (fas/apriori_basis.hpp): its
+  /// True when the coarse space comes from the anticipated expansion (fas/apriori/apriori_basis.hpp): its
   /// corrections are judged with defaults::safeguardGrowth(dimension, true) unless θ is set.
   virtual bool anticipates() const { return false; }
 };

@@ -1,6 +1,6 @@
-#include "fas/coarse_space.hpp"
+#include "stcontact/fas/coarse_space.hpp"
 
-#include "src/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
 
 namespace stc::fas {
 

@@ -1,12 +1,12 @@
-#include "fas/coarse_step.hpp"
+#include "stcontact/fas/coarse_step.hpp"
 
 #include <Eigen/Cholesky>
 #include <optional>
 
-#include "fas/coarse_zone.hpp"
-#include "latin/local_stage.hpp"
-#include "src/core/threads.hpp"
-#include "src/linalg/anderson.hpp"
+#include "stcontact/core/threads.hpp"
+#include "stcontact/fas/coarse_zone.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/linalg/anderson.hpp"
 
 namespace stc::fas {
 namespace {

@@ -12,10 +12,10 @@
 // w = W(ŝ); with FasOptions::coarse_anderson > 0 the next w is the Anderson mixing of the last
 // images (src/linalg/anderson.hpp, in the k⁻¹ norm), the last iteration a plain one, so that the
 // result is a local-stage iterate (docs/method.md §4, "Anderson mixing of the coarse iterations").
-#include "fas/coarse_space.hpp"
-#include "fas/fas_options.hpp"
-#include "src/contact/contact_interface.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/contact/contact_interface.hpp"
+#include "stcontact/fas/coarse_space.hpp"
+#include "stcontact/fas/fas_options.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc::fas {
 

@@ -1,4 +1,4 @@
-#include "fas/coarse_zone.hpp"
+#include "stcontact/fas/coarse_zone.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,8 +7,8 @@
 // step's last local stage, its result, is the fine one on every node.
 #include <vector>
 
-#include "src/contact/contact_interface.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/contact/contact_interface.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc::fas {
 
@@ -22,7 +22,7 @@ struct CoarseZone {
 /// zone when, at some instant, λ̂_n > 0 (closed) or its gap g0 + v̂_n is below δ, `delta_scale` times
 /// the largest |v_n − v̂_n| over the grid (how far apart the two iterates still are; 0 at
 /// convergence). The coarse step takes δ itself; the reduced interface half of it
-/// (src/strategies/reduced_interface.hpp).
+/// (fas/apriori/reduced_interface.hpp).
 CoarseZone coarseZone(const ContactInterface& contact, const InterfaceHistory& s,
                       const InterfaceHistory& hat, double delta_scale = 1.0);
 

@@ -1,8 +1,8 @@
-#include "fas/fas_options.hpp"
+#include "stcontact/fas/fas_options.hpp"
 
 #include <cmath>
 
-#include "src/core/option_check.hpp"
+#include "stcontact/core/option_check.hpp"
 
 namespace stc::fas {
 

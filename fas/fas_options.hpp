@@ -5,7 +5,7 @@
 // builds.
 #include <optional>
 
-#include "src/core/solver_settings.hpp"
+#include "stcontact/core/solver_settings.hpp"
 
 namespace stc::fas {
 

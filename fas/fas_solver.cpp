@@ -1,13 +1,13 @@
-#include "fas/fas_solver.hpp"
+#include "stcontact/fas/fas_solver.hpp"
 
 #include <algorithm>
 #include <string>
 
-#include "fas/coarse_step.hpp"
-#include "latin/indicator.hpp"
-#include "latin/local_stage.hpp"
-#include "src/solver/iteration_monitor.hpp"
-#include "src/solver/warm_start.hpp"
+#include "stcontact/fas/coarse_step.hpp"
+#include "stcontact/latin/indicator.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/solver/iteration_monitor.hpp"
+#include "stcontact/solver/warm_start.hpp"
 
 namespace stc::fas {
 namespace {

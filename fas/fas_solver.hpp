@@ -3,12 +3,12 @@
 //   ν1 relaxations (global stage, then local stage) → coarse step (i_C coarse linear + fine local
 //   stages in the coarse space of the provider) → ν2 relaxations.
 // Convergence is tested on the fine level only, after every relaxation (its global stage).
-#include "fas/basis_provider.hpp"
-#include "fas/fas_options.hpp"
-#include "latin/linear_stage.hpp"
-#include "src/problem/problem.hpp"
-#include "src/solver/error_reference.hpp"
-#include "src/solver/solve_result.hpp"
+#include "stcontact/fas/basis_provider.hpp"
+#include "stcontact/fas/fas_options.hpp"
+#include "stcontact/incremental/error_reference.hpp"
+#include "stcontact/latin/linear_stage.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
 namespace stc::fas {
 

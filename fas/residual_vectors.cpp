@@ -1,8 +1,8 @@
-#include "fas/residual_vectors.hpp"
+#include "stcontact/fas/residual_vectors.hpp"
 
 #include <algorithm>
 
-#include "src/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
 
 namespace stc::fas {
 

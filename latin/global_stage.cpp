@@ -1,8 +1,8 @@
-#include "latin/global_stage.hpp"
+#include "stcontact/latin/global_stage.hpp"
 
 #include <algorithm>
 
-#include "src/core/threads.hpp"
+#include "stcontact/core/threads.hpp"
 
 namespace stc::latin {
 

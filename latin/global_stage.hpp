@@ -10,11 +10,11 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "latin/linear_stage.hpp"
-#include "src/core/solver_settings.hpp"
-#include "src/linalg/spd_factor.hpp"
-#include "src/problem/problem.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/core/solver_settings.hpp"
+#include "stcontact/latin/linear_stage.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc::latin {
 

@@ -1,4 +1,4 @@
-#include "latin/indicator.hpp"
+#include "stcontact/latin/indicator.hpp"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // ‖s‖² = Σ_k Σ_i (v_iᵀ k_i v_i + λ_iᵀ k_i⁻¹ λ_i), the energy norm of the search direction.
 #include <Eigen/Core>
 
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc::latin {
 

@@ -1,8 +1,8 @@
-#include "latin/latin_options.hpp"
+#include "stcontact/latin/latin_options.hpp"
 
 #include <cmath>
 
-#include "src/core/option_check.hpp"
+#include "stcontact/core/option_check.hpp"
 
 namespace stc::latin {
 

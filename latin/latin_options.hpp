@@ -1,7 +1,7 @@
 #pragma once
 // Options of the LATIN solver (house style 2: plain struct, in-class defaults with a reason,
 // validate() naming the field, its value and the rule broken; defaults: src/core/solver_settings.hpp).
-#include "src/core/solver_settings.hpp"
+#include "stcontact/core/solver_settings.hpp"
 
 namespace stc::latin {
 

@@ -1,10 +1,10 @@
-#include "latin/latin_solver.hpp"
+#include "stcontact/latin/latin_solver.hpp"
 
-#include "latin/indicator.hpp"
-#include "latin/local_stage.hpp"
-#include "src/solver/equilibrium_energy.hpp"
-#include "src/solver/iteration_monitor.hpp"
-#include "src/solver/warm_start.hpp"
+#include "stcontact/latin/indicator.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/solver/equilibrium_energy.hpp"
+#include "stcontact/solver/iteration_monitor.hpp"
+#include "stcontact/solver/warm_start.hpp"
 
 namespace stc::latin {
 

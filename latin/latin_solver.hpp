@@ -7,12 +7,12 @@
 // and controlled (pgd::ControlledGlobalStage, strategy `latin-pgd`).
 #include <string>
 
-#include "latin/global_stage.hpp"
-#include "latin/latin_options.hpp"
-#include "latin/linear_stage.hpp"
-#include "src/problem/problem.hpp"
-#include "src/solver/error_reference.hpp"
-#include "src/solver/solve_result.hpp"
+#include "stcontact/incremental/error_reference.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/latin/latin_options.hpp"
+#include "stcontact/latin/linear_stage.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
 namespace stc::latin {
 

@@ -7,8 +7,8 @@
 //     of the last iteration's gap ‖s − ŝ‖ (docs/method.md §5).
 // Both return an s that is exactly in equilibrium (K_ff u = f + Bᵀ λ): the error estimate and the
 // true error of src/solver/ are exact functions of it.
-#include "src/linalg/spd_factor.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc::latin {
 

@@ -1,9 +1,9 @@
-#include "latin/local_stage.hpp"
+#include "stcontact/latin/local_stage.hpp"
 
 #include <algorithm>
 #include <array>
 
-#include "src/core/threads.hpp"
+#include "stcontact/core/threads.hpp"
 
 namespace stc::latin {
 namespace {

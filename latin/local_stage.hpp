@@ -2,8 +2,8 @@
 // LATIN local stage (docs/method.md §2; Ladevèze 1999 ch. 4 for the method): from s = (v, λ) ∈ A_d find
 // ŝ = (v̂, λ̂) ∈ Γ (Signorini + implicit Coulomb) along the search direction λ̂ − λ = k (v̂ − v).
 // Node-wise and exact; marches in time because the slip depends on the previous instant.
-#include "src/contact/contact_interface.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/contact/contact_interface.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc::latin {
 

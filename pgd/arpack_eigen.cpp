@@ -1,4 +1,4 @@
-#include "pgd/arpack_eigen.hpp"
+#include "stcontact/pgd/arpack_eigen.hpp"
 
 #include <arpack/arpack.hpp>
 
@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "src/core/input_error.hpp"
+#include "stcontact/core/input_error.hpp"
 
 namespace stc::pgd {
 namespace {

@@ -1,8 +1,8 @@
-#include "pgd/basis_verification.hpp"
+#include "stcontact/pgd/basis_verification.hpp"
 
 #include <cmath>
 
-#include "src/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
 
 namespace stc::pgd {
 

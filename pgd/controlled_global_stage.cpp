@@ -1,11 +1,11 @@
-#include "pgd/controlled_global_stage.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "src/core/option_check.hpp"
-#include "src/linalg/dense_decompositions.hpp"
-#include "src/solver/warm_start.hpp"
+#include "stcontact/core/option_check.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/solver/warm_start.hpp"
 
 namespace stc::pgd {
 namespace {

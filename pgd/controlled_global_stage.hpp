@@ -13,10 +13,10 @@
 // the fixed point), and vanishes with the gap: the iteration converges to the fixed point of the
 // exact global stage. Each solve costs three products with p columns on 2n_C × m interface fields,
 // plus one sparse solve per new direction.
-#include "latin/global_stage.hpp"
-#include "latin/linear_stage.hpp"
-#include "pgd/response_basis.hpp"
-#include "src/core/solver_settings.hpp"
+#include "stcontact/core/solver_settings.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/latin/linear_stage.hpp"
+#include "stcontact/pgd/response_basis.hpp"
 
 namespace stc::pgd {
 
@@ -67,7 +67,7 @@ class ControlledGlobalStage : public latin::LinearStage {
   double projectionError() const { return error_; }
   /// The coordinates c (p × m) that a solve from `hat` would have, the directions enriched as that
   /// solve would enrich them (the same bound): the projection of the next right-hand side, without
-  /// forming s (two products with the directions where a solve has three; fas/apriori_basis.hpp
+  /// forming s (two products with the directions where a solve has three; fas/apriori/apriori_basis.hpp
   /// builds the coarse space from it). The last solve's coordinates() are kept; the directions
   /// added stay.
   Eigen::MatrixXd anticipate(const InterfaceHistory& hat);

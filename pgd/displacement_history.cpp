@@ -1,6 +1,6 @@
-#include "pgd/displacement_history.hpp"
+#include "stcontact/pgd/displacement_history.hpp"
 
-#include "src/solver/condensed_interface.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
 
 namespace stc::pgd {
 

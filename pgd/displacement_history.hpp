@@ -5,8 +5,8 @@
 // prescribed values u_d(t_k) put back (Problem::fullDisplacement).
 #include <Eigen/Core>
 
-#include "src/linalg/spd_factor.hpp"
-#include "src/problem/problem.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace stc::pgd {
 

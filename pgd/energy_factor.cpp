@@ -1,4 +1,4 @@
-#include "pgd/energy_factor.hpp"
+#include "stcontact/pgd/energy_factor.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #pragma once
 // Options of `latin-pgd`: LATIN (docs/method.md §2) whose global stage is solved in separated form
 // with its error controlled (docs/method.md §5; pgd/controlled_global_stage.hpp).
-#include "latin/latin_options.hpp"
-#include "pgd/controlled_global_stage.hpp"
+#include "stcontact/latin/latin_options.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
 
 namespace stc::pgd {
 

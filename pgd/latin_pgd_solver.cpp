@@ -1,7 +1,7 @@
-#include "pgd/latin_pgd_solver.hpp"
+#include "stcontact/pgd/latin_pgd_solver.hpp"
 
-#include "latin/latin_solver.hpp"
-#include "pgd/separated_history.hpp"
+#include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/pgd/separated_history.hpp"
 
 namespace stc::pgd {
 

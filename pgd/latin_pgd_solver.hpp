@@ -4,10 +4,10 @@
 // products on the interface and a sparse solve per new direction, not m sparse solves, and the
 // iteration converges to the fixed point of the exact global stage.
 // History: rank = number of interface directions, sparse_solves = solves so far.
-#include "pgd/latin_pgd_options.hpp"
-#include "src/problem/problem.hpp"
-#include "src/solver/error_reference.hpp"
-#include "src/solver/solve_result.hpp"
+#include "stcontact/incremental/error_reference.hpp"
+#include "stcontact/pgd/latin_pgd_options.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
 namespace stc::pgd {
 

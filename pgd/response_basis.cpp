@@ -1,8 +1,8 @@
-#include "pgd/response_basis.hpp"
+#include "stcontact/pgd/response_basis.hpp"
 
 #include <stdexcept>
 
-#include "pgd/separated_loads.hpp"
+#include "stcontact/pgd/separated_loads.hpp"
 
 namespace stc::pgd {
 namespace {

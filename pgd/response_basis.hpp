@@ -13,10 +13,10 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "pgd/column_store.hpp"
-#include "pgd/energy_factor.hpp"
-#include "src/linalg/spd_factor.hpp"
-#include "src/problem/problem.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/pgd/column_store.hpp"
+#include "stcontact/pgd/energy_factor.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace stc::pgd {
 

@@ -1,9 +1,9 @@
-#include "pgd/separated_history.hpp"
+#include "stcontact/pgd/separated_history.hpp"
 
 #include <algorithm>
 #include <map>
 
-#include "src/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
 
 namespace stc::pgd {
 namespace {

@@ -12,7 +12,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "pgd/response_basis.hpp"
+#include "stcontact/pgd/response_basis.hpp"
 
 namespace stc::pgd {
 

@@ -1,4 +1,4 @@
-#include "pgd/separated_loads.hpp"
+#include "stcontact/pgd/separated_loads.hpp"
 
 namespace stc::pgd {
 

@@ -3,7 +3,7 @@
 // separated load vectors) and G (q × m, their histories on the grid). Problem::loads stores them so.
 #include <Eigen/Core>
 
-#include "src/problem/problem.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace stc::pgd {
 

@@ -1,13 +1,13 @@
-#include "pgd/space_time_svd.hpp"
+#include "stcontact/pgd/space_time_svd.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
-#include "pgd/arpack_eigen.hpp"
-#include "src/core/input_error.hpp"
-#include "src/linalg/dense_decompositions.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/pgd/arpack_eigen.hpp"
 
 namespace stc::pgd {
 namespace {

@@ -1,12 +1,12 @@
 #pragma once
 // The parts of the extension module stcontact._core, each declared on the module by its file;
-// src/python/module.cpp calls them in order. The Python package (src/python/stcontact/) wraps them
+// python/module.cpp calls them in order. The Python package (python/stcontact/) wraps them
 // in its classes; docs/python.md documents the Python side.
 #include <pybind11/pybind11.h>
 
 #include <optional>
 
-#include "src/core/threads.hpp"
+#include "stcontact/core/threads.hpp"
 
 namespace stc::python {
 

@@ -1,4 +1,4 @@
-#include "src/python/callback_bridge.hpp"
+#include "stcontact/python/callback_bridge.hpp"
 
 #include <utility>
 

@@ -9,7 +9,7 @@
 
 #include <optional>
 
-#include "src/solver/solve_summary.hpp"
+#include "stcontact/solver/solve_summary.hpp"
 
 namespace stc::python {
 

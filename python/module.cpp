@@ -1,21 +1,22 @@
 // The extension module stcontact._core (pybind11). Bad input (stc::InputError) becomes
 // stcontact.InputError, a ValueError whose message is the command line's "error:" line without
-// its prefix (src/cli/main.cpp); an output folder that cannot be written (stc::OutputError), an
+// its prefix (cli/main.cpp); an output folder that cannot be written (stc::OutputError), an
 // OSError with the same message.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "src/core/input_error.hpp"
-#include "src/io/output_error.hpp"
-#include "src/linalg/blas_kernels.hpp"
-#include "src/python/bindings.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/io/output_error.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/python/bindings.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/version.hpp"
 
 namespace {
 
 namespace py = pybind11;
 
-/// The message on one line, as src/cli/main.cpp prints it.
+/// The message on one line, as cli/main.cpp prints it.
 std::string oneLine(std::string text) {
   for (char& c : text)
     if (c == '\n' || c == '\r') c = ' ';

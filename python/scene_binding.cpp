@@ -3,14 +3,14 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include "src/python/bindings.hpp"
-#include "src/python/numpy_arrays.hpp"
-#include "src/python/scene_handle.hpp"
+#include "stcontact/python/bindings.hpp"
+#include "stcontact/python/numpy_arrays.hpp"
+#include "stcontact/python/scene_handle.hpp"
 
 namespace stc::python {
 namespace {
 
-/// What `stcontact check` prints (src/cli/check_command.cpp), as numbers.
+/// What `stcontact check` prints (cli/check_command.cpp), as numbers.
 py::dict checkSizes(const SceneHandle& handle) {
   const Scene& scene = handle.scene();
   const std::shared_ptr<const Problem> problem = handle.problem();

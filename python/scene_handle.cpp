@@ -1,9 +1,9 @@
-#include "src/python/scene_handle.hpp"
+#include "stcontact/python/scene_handle.hpp"
 
 #include <fstream>
 #include <sstream>
 
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace stc::python {
 

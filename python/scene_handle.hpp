@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "src/problem/problem.hpp"
-#include "src/scene/scene.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene.hpp"
 
 namespace stc::python {
 

@@ -8,17 +8,19 @@
 
 #include <sstream>
 
-#include "pgd/displacement_history.hpp"
-#include "src/cli/commands.hpp"
-#include "src/io/atomic_file.hpp"
-#include "src/io/contact_tables.hpp"
-#include "src/io/run_writer.hpp"
-#include "src/python/bindings.hpp"
-#include "src/python/callback_bridge.hpp"
-#include "src/python/numpy_arrays.hpp"
-#include "src/python/scene_handle.hpp"
-#include "src/solver/warm_start.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/io/contact_tables.hpp"
+#include "stcontact/io/run_writer.hpp"
+#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/python/bindings.hpp"
+#include "stcontact/python/callback_bridge.hpp"
+#include "stcontact/python/numpy_arrays.hpp"
+#include "stcontact/python/scene_handle.hpp"
+#include "stcontact/solver/warm_start.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/studies/reference.hpp"
+#include "stcontact/studies/solve_options.hpp"
+#include "stcontact/version.hpp"
 
 namespace stc::python {
 namespace {
@@ -132,8 +134,8 @@ SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_refer
   py::gil_scoped_release unlocked;
   std::unique_ptr<ErrorReference> reference;
   if (scene.solver.name != "incremental" && with_reference &&
-      problem.contact.size() <= cli::kMaxReferenceContactNodes)
-    reference = cli::solveReference(problem, bridge.signalsOnly(), warning);
+      problem.contact.size() <= kMaxReferenceContactNodes)
+    reference = solveReference(problem, bridge.signalsOnly(), warning);
   if (bridge.interrupted()) return {};
   inputs.reference = reference.get();
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
@@ -144,7 +146,7 @@ SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_refer
 py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart warm, py::object callback) {
   const ThreadsForCall threads(options.threads);
   const SceneHandle run = handle.withOverrides(
-      cli::withSolverOptions(options.sets, options.solver, options.tolerance, options.max_iterations));
+      withSolverOptions(options.sets, options.solver, options.tolerance, options.max_iterations));
   const Scene& scene = run.scene();
   requireAvailable(scene.solver.name);
   const ProblemPtr problem = run.problem();

@@ -1,32 +1,31 @@
 // stcontact._core.svd and stcontact._core.compare: the verification SVD of `stcontact svd` and the
 // work-precision comparison of `stcontact compare`, through the command line's own code where it
-// is shared (src/cli/compare_runs.hpp, src/report/), with the interpreter's lock released.
+// is shared (studies/compare_runs.hpp, studies/), with the interpreter's lock released.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
 
-#include "pgd/displacement_history.hpp"
-#include "pgd/space_time_svd.hpp"
-#include "src/cli/compare_command.hpp"
-#include "src/cli/compare_plots.hpp"
-#include "src/cli/compare_runs.hpp"
-#include "src/core/input_error.hpp"
-#include "src/io/atomic_file.hpp"
-#include "src/python/bindings.hpp"
-#include "src/python/callback_bridge.hpp"
-#include "src/python/numpy_arrays.hpp"
-#include "src/python/scene_handle.hpp"
-#include "src/report/comparison_writer.hpp"
-#include "src/report/number_format.hpp"
-#include "src/solver/incremental_solver.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/pgd/space_time_svd.hpp"
+#include "stcontact/python/bindings.hpp"
+#include "stcontact/python/callback_bridge.hpp"
+#include "stcontact/python/numpy_arrays.hpp"
+#include "stcontact/python/scene_handle.hpp"
+#include "stcontact/studies/compare_plots.hpp"
+#include "stcontact/studies/compare_runs.hpp"
+#include "stcontact/studies/comparison_writer.hpp"
+#include "stcontact/studies/number_format.hpp"
 
 namespace stc::python {
 namespace {
 
 constexpr int kSvdFigurePairs = 50;  // pairs `stcontact svd` computes at least (its Fig. 3a shows 50)
 
-/// The checks of `stcontact svd` (src/cli/svd_command.cpp) on the instants and the modes asked.
+/// The checks of `stcontact svd` (cli/svd_command.cpp) on the instants and the modes asked.
 void checkSvdSizes(int m, int modes) {
   if (m < 3) throw InputError("svd needs at least 3 instants (time.steps = " + std::to_string(m) + ")");
   if (modes < 1 || modes > m - 1)
@@ -113,16 +112,16 @@ std::string callText(const SceneHandle& handle, const std::vector<std::string>& 
   return text + ")";
 }
 
-/// The runs of `stcontact compare` (src/cli/compare_command.cpp): the reference, then each strategy.
+/// The runs of `stcontact compare` (cli/compare_command.cpp): the reference, then each strategy.
 void measureAll(Comparison& comparison, const Problem& problem, const SolverSpec& spec,
                 const std::vector<std::string>& solvers, int repeats, CallbackBridge& bridge) {
   py::gil_scoped_release unlocked;
-  const cli::ReferenceSolution reference = cli::computeReference(problem, true);
+  const ReferenceSolution reference = computeReference(problem, nullptr);
   comparison.reference_s = reference.total_s;
-  const cli::CompareContext context{problem, spec, reference, repeats, true, {}, bridge.signalsOnly()};
+  const CompareContext context{problem, spec, reference, repeats, nullptr, {}, bridge.signalsOnly()};
   for (const std::string& solver : solvers) {
     if (bridge.interrupted()) return;
-    comparison.strategies.push_back(cli::measureStrategy(solver, context));
+    comparison.strategies.push_back(measureStrategy(solver, context));
   }
   if (bridge.interrupted()) return;
   comparison.memory_method = describeMemoryMethod(comparison.strategies.front().memory.since_reset);
@@ -198,7 +197,7 @@ py::dict compare(const SceneHandle& handle, const CompareOptions& o) {
   if (o.repeats < 1) throw InputError("--repeats must be >= 1");
   const SceneHandle run = handle.withOverrides(o.sets);
   Scene scene = run.scene();
-  const std::vector<std::string> solvers = cli::solverList(joined(o.solvers, ","));
+  const std::vector<std::string> solvers = solverList(joined(o.solvers, ","));
   if (o.tolerance) {
     if (!(*o.tolerance > 0.0)) throw InputError("--tol must be > 0");
     scene.solver.tolerance = *o.tolerance;
@@ -206,14 +205,14 @@ py::dict compare(const SceneHandle& handle, const CompareOptions& o) {
   if (o.out) ensureWritableDirectory(*o.out);  // fail before the runs, not after
   const std::shared_ptr<const Problem> problem = run.problem();
   Comparison comparison =
-      cli::describeComparison(handle.source().string(), callText(handle, solvers, o), scene, *problem, o.repeats);
+      describeComparison(handle.source().string(), callText(handle, solvers, o), scene, *problem, o.repeats);
   CallbackBridge bridge;
   measureAll(comparison, *problem, scene.solver, solvers, o.repeats, bridge);
   bridge.rethrowPending();
   if (o.out) {
     writeComparison(*o.out, comparison);
     std::string warning;
-    if (!cli::drawWorkPrecisionPlots(*o.out, comparison, warning) &&
+    if (!drawWorkPrecisionPlots(*o.out, comparison, warning) &&
         PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0)
       throw py::error_already_set();
   }

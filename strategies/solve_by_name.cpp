@@ -1,16 +1,16 @@
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
 
 #include <algorithm>
 
-#include "fas/aposteriori_basis.hpp"
-#include "fas/apriori_basis.hpp"
-#include "fas/fas_solver.hpp"
-#include "latin/latin_solver.hpp"
-#include "pgd/latin_pgd_solver.hpp"
-#include "pgd/separated_history.hpp"
-#include "src/core/input_error.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "src/strategies/reduced_interface.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/fas/aposteriori/aposteriori_basis.hpp"
+#include "stcontact/fas/apriori/apriori_basis.hpp"
+#include "stcontact/fas/apriori/reduced_interface.hpp"
+#include "stcontact/fas/fas_solver.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/pgd/latin_pgd_solver.hpp"
+#include "stcontact/pgd/separated_history.hpp"
 
 namespace stc {
 

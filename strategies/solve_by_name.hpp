@@ -5,13 +5,13 @@
 #include <string>
 #include <vector>
 
-#include "fas/apriori_basis.hpp"
-#include "fas/fas_options.hpp"
-#include "pgd/controlled_global_stage.hpp"
-#include "src/problem/problem.hpp"
-#include "src/scene/scene.hpp"
-#include "src/solver/error_reference.hpp"
-#include "src/solver/solve_result.hpp"
+#include "stcontact/fas/apriori/apriori_basis.hpp"
+#include "stcontact/fas/fas_options.hpp"
+#include "stcontact/incremental/error_reference.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
 namespace stc {
 

@@ -1,8 +1,8 @@
-#include "src/cli/compare_plots.hpp"
+#include "stcontact/studies/compare_plots.hpp"
 
-#include "src/cli/gnuplot_plots.hpp"
+#include "stcontact/studies/gnuplot_runner.hpp"
 
-namespace stc::cli {
+namespace stc {
 namespace {
 
 /// The -e argument: which strategies are curves (with the repeat drawn), which one is the point.
@@ -42,4 +42,4 @@ bool drawWorkPrecisionPlots(const std::filesystem::path& dir, const Comparison& 
   return drawPlots(dir, workPrecisionJob(c), warning);
 }
 
-}  // namespace stc::cli
+}  // namespace stc

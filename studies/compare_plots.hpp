@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "src/report/comparison.hpp"
+#include "stcontact/studies/comparison.hpp"
 
-namespace stc::cli {
+namespace stc {
 
 /// The files the script draws into the report folder.
 const std::vector<std::string>& workPrecisionPlotNames();
@@ -19,4 +19,4 @@ std::string workPrecisionPlotCommand(const Comparison& comparison);
 /// reason and the command to draw them later in `warning`, when gnuplot is missing or fails.
 bool drawWorkPrecisionPlots(const std::filesystem::path& dir, const Comparison& comparison, std::string& warning);
 
-}  // namespace stc::cli
+}  // namespace stc

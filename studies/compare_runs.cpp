@@ -1,18 +1,26 @@
-#include "src/cli/compare_runs.hpp"
+#include "stcontact/studies/compare_runs.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
-#include "src/cli/progress.hpp"
-#include "src/report/number_format.hpp"
-#include "src/report/peak_memory.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/studies/number_format.hpp"
+#include "stcontact/studies/peak_memory.hpp"
+#include "stcontact/studies/run_environment.hpp"
 
-namespace stc::cli {
+namespace stc {
 namespace {
+
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -45,8 +53,7 @@ std::vector<WorkPoint> pointsOf(const SolveSummary& summary, double setup_s) {
 // the solver's clock (set-up and return). `go_on`, when set, stops the run by returning false.
 RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool measure_error, const std::string& label,
                    const IterationCallback& go_on = {}) {
-  Progress progress(label, !c.quiet);
-  const IterationCallback show = progress.callback();
+  const RunProgress progress(c.progress, label);
   StrategyInputs inputs;
   inputs.reference = measure_error ? c.reference.reference.get() : nullptr;
   inputs.converged_lambda = &c.reference.reference->referenceForces();
@@ -55,13 +62,12 @@ RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool meas
   const auto start = Clock::now();
   inputs.callback = [&](const IterationRecord& r) {
     if (!setup_s) setup_s = secondsSince(start) - r.wall_s;
-    const bool shown = show(r);
+    const bool shown = progress.show(r);
     return shown && (!go_on || go_on(r)) && (!c.keep_going || c.keep_going(r));
   };
   RunOutcome out;
   out.result = solveByName(solver, c.problem, c.spec, inputs);
   out.total_s = secondsSince(start);
-  progress.done();
   const SolveSummary& s = out.result.summary;
   out.points = pointsOf(s, setup_s.value_or(std::max(0.0, out.total_s - s.wall_s)));
   return out;
@@ -125,22 +131,6 @@ std::string repeatLabel(const std::string& solver, int repeat, int repeats) {
 
 }  // namespace
 
-ReferenceSolution computeReference(const Problem& problem, bool quiet) {
-  ReferenceSolution out;
-  Progress progress("reference (incremental)", !quiet);
-  const auto start = Clock::now();
-  SolveResult ref = solveIncremental(problem, {}, progress.callback());
-  out.solve_s = secondsSince(start);
-  progress.done();
-  if (!ref.summary.converged())
-    throw std::runtime_error("the incremental reference did not converge: " + ref.summary.message);
-  auto factor = std::make_shared<const SpdFactor>(problem.stiffness_free, "K_ff");
-  out.factor_nonzeros = factor->factorNonZeros();
-  out.reference = std::make_unique<ErrorReference>(problem, std::move(factor), std::move(ref.interface.lambda));
-  out.total_s = secondsSince(start);
-  return out;
-}
-
 StrategyMeasurement measureStrategy(const std::string& solver, const CompareContext& c) {
   StrategyMeasurement m;
   m.solver = solver;
@@ -182,4 +172,38 @@ StrategyMeasurement measureStrategy(const std::string& solver, const CompareCont
   return m;
 }
 
-}  // namespace stc::cli
+// Split here rather than by CLI11's ->delimiter(','): CLI11 2.1.2 (Debian 12) drops empty items, so
+// "--solvers latin,,incremental" would pass as two names instead of the documented refusal
+// "--solvers: empty name" (docs/compare.md; the ctest case cli.compare_empty_solver_name).
+std::vector<std::string> solverList(const std::string& list) {
+  if (trimmed(list).empty()) return availableSolvers();
+  std::vector<std::string> names;
+  std::stringstream items(list);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    const std::string name = trimmed(item);
+    if (name.empty()) throw InputError("--solvers: empty name in '" + list + "'");
+    requireAvailable(name);
+    if (std::find(names.begin(), names.end(), name) != names.end())
+      throw InputError("--solvers: '" + name + "' is listed twice");
+    names.push_back(name);
+  }
+  return names;
+}
+
+Comparison describeComparison(const std::string& scene_file, const std::string& command, const Scene& scene,
+                              const Problem& problem, int repeats) {
+  Comparison c;
+  c.scene_name = scene.name;
+  c.scene_file = scene_file;
+  c.command = command;
+  c.n_dofs = problem.numDofs();
+  c.n_contact_nodes = problem.contact.size();
+  c.n_steps = problem.numSteps();
+  c.tolerance = scene.solver.tolerance;
+  c.repeats = repeats;
+  c.environment = describeRunEnvironment();
+  return c;
+}
+
+}  // namespace stc

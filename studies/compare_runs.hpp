@@ -1,26 +1,18 @@
 #pragma once
-// The runs of `stcontact compare`: the incremental reference, then each strategy's error run and
+// The runs of `stcontact compare` (and of the Python module's compare): each strategy's error run and
 // timed repeats through solveByName, with the peak memory of the strategy's runs.
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
-#include "src/problem/problem.hpp"
-#include "src/report/comparison.hpp"
-#include "src/scene/scene.hpp"
-#include "src/solver/error_reference.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene.hpp"
+#include "stcontact/studies/comparison.hpp"
+#include "stcontact/studies/progress.hpp"
+#include "stcontact/studies/reference.hpp"
 
-namespace stc::cli {
-
-struct ReferenceSolution {
-  std::unique_ptr<ErrorReference> reference;
-  double solve_s = 0.0;  ///< the incremental solve alone
-  double total_s = 0.0;  ///< with the error measure's set-up (factor of K_ff, Delassus operator)
-  double factor_nonzeros = 0.0;  ///< entries of the Cholesky factor of K_ff (SpdFactor::factorNonZeros)
-};
-
-/// Solves `problem` with the incremental solver and builds the true-error measure on it.
-ReferenceSolution computeReference(const Problem& problem, bool quiet);
+namespace stc {
 
 /// Where the runs of an iterative strategy may stop before the solver does (stcontact scaling,
 /// docs/scaling.md); none by default (stcontact compare runs every solve to its end).
@@ -38,15 +30,23 @@ struct CompareContext {
   const SolverSpec& spec;
   const ReferenceSolution& reference;
   int repeats = 3;
-  bool quiet = false;
+  ProgressReporter* progress = nullptr;  ///< shows each run (none: nothing shown)
   EarlyStop stop = {};
   /// Called after every record of every run (error and timed); false stops that run, like a
   /// solver's callback (the Python module's Ctrl-C and per-iteration callback). None by default.
   IterationCallback keep_going = {};
 };
 
+/// The comma-separated strategy names of a comparison (`--solvers`, Python's solvers=; empty:
+/// availableSolvers()); InputError for an empty, unknown, unavailable or repeated name.
+std::vector<std::string> solverList(const std::string& list);
+
+/// The comparison's description before its runs: scene, sizes, command, machine and build.
+Comparison describeComparison(const std::string& scene_file, const std::string& command, const Scene& scene,
+                              const Problem& problem, int repeats);
+
 /// One error run (iterative strategies only), then `repeats` timed runs; see docs/compare.md. With
 /// an EarlyStop, the message says where and why the error run was stopped.
 StrategyMeasurement measureStrategy(const std::string& solver, const CompareContext& context);
 
-}  // namespace stc::cli
+}  // namespace stc

@@ -1,4 +1,4 @@
-#include "src/report/comparison.hpp"
+#include "stcontact/studies/comparison.hpp"
 
 namespace stc {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "src/report/peak_memory.hpp"
-#include "src/report/run_environment.hpp"
-#include "src/report/work_precision.hpp"
+#include "stcontact/studies/peak_memory.hpp"
+#include "stcontact/studies/run_environment.hpp"
+#include "stcontact/studies/work_precision.hpp"
 
 namespace stc {
 

@@ -1,8 +1,8 @@
 // summary.md of a comparison (declared in comparison_writer.hpp).
 #include <sstream>
 
-#include "src/report/comparison_writer.hpp"
-#include "src/report/number_format.hpp"
+#include "stcontact/studies/comparison_writer.hpp"
+#include "stcontact/studies/number_format.hpp"
 
 namespace stc {
 namespace {

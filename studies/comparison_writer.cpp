@@ -1,9 +1,9 @@
-#include "src/report/comparison_writer.hpp"
+#include "stcontact/studies/comparison_writer.hpp"
 
 #include <sstream>
 
-#include "src/io/atomic_file.hpp"
-#include "src/report/number_format.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/studies/number_format.hpp"
 
 namespace stc {
 namespace {

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "src/report/comparison.hpp"
+#include "stcontact/studies/comparison.hpp"
 
 namespace stc {
 

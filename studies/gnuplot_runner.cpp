@@ -1,4 +1,4 @@
-#include "src/report/gnuplot_runner.hpp"
+#include "stcontact/studies/gnuplot_runner.hpp"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 
 namespace stc {
 namespace {
@@ -102,6 +103,10 @@ bool drawPlots(const fs::path& dir, const PlotJob& job, std::string& warning) {
     case PlotStatus::NotMoved: warning = outcome.detail; break;
   }
   return false;
+}
+
+PlotJob reportPlotJob(const std::string& script, std::string variables, std::vector<std::string> outputs) {
+  return {std::filesystem::path(STC_PLOT_SCRIPTS) / script, std::move(variables), std::move(outputs)};
 }
 
 }  // namespace stc

@@ -46,4 +46,8 @@ PlotOutcome runPlots(const std::filesystem::path& dir, const PlotJob& job);
 /// and the command to draw the plots later in `warning`, when gnuplot is missing or fails.
 bool drawPlots(const std::filesystem::path& dir, const PlotJob& job, std::string& warning);
 
+/// The job of a report's `script`, a file name in scripts/plots/ (e.g. "work_precision.gp"), with the
+/// gnuplot -e text `variables` (without `suffix`) and the PNG names it draws.
+PlotJob reportPlotJob(const std::string& script, std::string variables, std::vector<std::string> outputs);
+
 }  // namespace stc

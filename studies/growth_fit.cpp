@@ -1,4 +1,4 @@
-#include "src/report/growth_fit.hpp"
+#include "stcontact/studies/growth_fit.hpp"
 
 #include <gsl/gsl_fit.h>
 

@@ -1,4 +1,4 @@
-#include "src/report/mode_localisation.hpp"
+#include "stcontact/studies/mode_localisation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <set>
 #include <string>
 
-#include "src/contact/contact_state_table.hpp"
-#include "src/core/input_error.hpp"
-#include "src/fem/elasticity.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/fem/elasticity.hpp"
+#include "stcontact/spacetime/contact_state_table.hpp"
 
 namespace stc {
 namespace {

@@ -22,8 +22,8 @@
 #include <array>
 #include <vector>
 
-#include "src/problem/problem.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
 

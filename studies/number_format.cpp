@@ -1,4 +1,4 @@
-#include "src/report/number_format.hpp"
+#include "stcontact/studies/number_format.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "src/report/peak_memory.hpp"
+#include "stcontact/studies/peak_memory.hpp"
 
 #include <malloc.h>
 #include <sys/resource.h>

@@ -1,4 +1,4 @@
-#include "src/report/run_environment.hpp"
+#include "stcontact/studies/run_environment.hpp"
 
 #include <sched.h>
 #include <sys/utsname.h>
@@ -7,8 +7,9 @@
 #include <sstream>
 #include <thread>
 
-#include "src/core/threads.hpp"
-#include "src/linalg/blas_kernels.hpp"
+#include "stc_git_commit.hpp"  // STC_GIT_COMMIT, generated at build time
+#include "stcontact/core/threads.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
 
 namespace stc {
 namespace {
@@ -50,7 +51,7 @@ std::string loadAverage() {
   return one + " " + five + " " + fifteen;
 }
 
-RunEnvironment describeRunEnvironment(std::string build_type, std::string git_commit) {
+RunEnvironment describeRunEnvironment() {
   RunEnvironment env;
   env.cpu_model = cpuModel();
   env.logical_cores = static_cast<int>(std::thread::hardware_concurrency());
@@ -61,8 +62,8 @@ RunEnvironment describeRunEnvironment(std::string build_type, std::string git_co
 #elif defined(__GNUC__)
   env.compiler = "GCC " __VERSION__;
 #endif
-  env.build_type = orUnknown(std::move(build_type));
-  env.git_commit = orUnknown(std::move(git_commit));
+  env.build_type = orUnknown(STC_BUILD_TYPE);
+  env.git_commit = orUnknown(STC_GIT_COMMIT);
   env.load_average = loadAverage();
   env.threads = threadCount();
   env.blas_kernels = orUnknown(linalg::blasKernels());

@@ -17,8 +17,9 @@ struct RunEnvironment {
   std::string blas_kernels = "unknown";  ///< OpenBLAS's kernel set (src/linalg/blas_kernels.hpp)
 };
 
-/// Reads the machine's description; the build's is passed by the program that knows it.
-RunEnvironment describeRunEnvironment(std::string build_type, std::string git_commit);
+/// Reads the machine's description and this build's (its type, and the sources' commit recorded at
+/// build time).
+RunEnvironment describeRunEnvironment();
 
 /// The "## Machine and build" section of a report: CPU, cores, kernel, compiler, build, commit and
 /// the load averages at the start (`e.load_average`) and at the end (`load_after`) of the runs.

@@ -2,10 +2,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "src/report/comparison_writer.hpp"
-#include "src/report/run_environment.hpp"
-#include "src/report/number_format.hpp"
-#include "src/report/scaling_writer.hpp"
+#include "stcontact/studies/comparison_writer.hpp"
+#include "stcontact/studies/number_format.hpp"
+#include "stcontact/studies/run_environment.hpp"
+#include "stcontact/studies/scaling_writer.hpp"
 
 namespace stc {
 namespace {

@@ -1,9 +1,9 @@
-#include "src/cli/scaling_plots.hpp"
+#include "stcontact/studies/scaling_plots.hpp"
 
-#include "src/cli/gnuplot_plots.hpp"
-#include "src/report/number_format.hpp"
+#include "stcontact/studies/gnuplot_runner.hpp"
+#include "stcontact/studies/number_format.hpp"
 
-namespace stc::cli {
+namespace stc {
 
 namespace {
 
@@ -36,4 +36,4 @@ bool drawScalingPlots(const std::filesystem::path& dir, const ScalingStudy& stud
   return drawPlots(dir, reportPlotJob("scaling.gp", variables, scalingPlotNames(study)), warning);
 }
 
-}  // namespace stc::cli
+}  // namespace stc

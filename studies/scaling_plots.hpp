@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "src/report/scaling_study.hpp"
+#include "stcontact/studies/scaling_study.hpp"
 
-namespace stc::cli {
+namespace stc {
 
 /// The files the script draws into the report folder: two per series that has sizes.
 std::vector<std::string> scalingPlotNames(const ScalingStudy& study);
@@ -16,4 +16,4 @@ std::vector<std::string> scalingPlotNames(const ScalingStudy& study);
 /// `warning`, when gnuplot is missing or fails.
 bool drawScalingPlots(const std::filesystem::path& dir, const ScalingStudy& study, std::string& warning);
 
-}  // namespace stc::cli
+}  // namespace stc

@@ -1,4 +1,4 @@
-#include "src/report/scaling_study.hpp"
+#include "stcontact/studies/scaling_study.hpp"
 
 #include <algorithm>
 #include <cmath>

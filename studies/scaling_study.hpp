@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "src/report/comparison.hpp"
-#include "src/report/growth_fit.hpp"
+#include "stcontact/studies/comparison.hpp"
+#include "stcontact/studies/growth_fit.hpp"
 
 namespace stc {
 

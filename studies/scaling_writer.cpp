@@ -1,11 +1,11 @@
-#include "src/report/scaling_writer.hpp"
+#include "stcontact/studies/scaling_writer.hpp"
 
 #include <cmath>
 #include <sstream>
 
-#include "src/io/atomic_file.hpp"
-#include "src/report/comparison_writer.hpp"
-#include "src/report/number_format.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/studies/comparison_writer.hpp"
+#include "stcontact/studies/number_format.hpp"
 
 namespace stc {
 namespace {

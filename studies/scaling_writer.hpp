@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "src/report/scaling_study.hpp"
+#include "stcontact/studies/scaling_study.hpp"
 
 namespace stc {
 

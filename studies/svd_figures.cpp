@@ -1,9 +1,9 @@
-#include "src/report/svd_figures.hpp"
+#include "stcontact/studies/svd_figures.hpp"
 
 #include <cstdio>
 #include <sstream>
 
-#include "src/report/gnuplot_runner.hpp"
+#include "stcontact/studies/gnuplot_runner.hpp"
 
 namespace stc {
 namespace {

@@ -1,11 +1,11 @@
-#include "src/report/svd_tables.hpp"
+#include "stcontact/studies/svd_tables.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "src/core/input_error.hpp"
-#include "src/io/vtu_writer.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/io/vtu_writer.hpp"
 
 namespace stc {
 namespace {

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "pgd/space_time_svd.hpp"
-#include "src/mesh/mesh.hpp"
-#include "src/report/mode_localisation.hpp"
+#include "stcontact/mesh/mesh.hpp"
+#include "stcontact/pgd/space_time_svd.hpp"
+#include "stcontact/studies/mode_localisation.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/report/sweep.hpp"
+#include "stcontact/studies/sweep.hpp"
 
 #include <algorithm>
 

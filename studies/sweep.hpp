@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "src/contact/contact_interface.hpp"
-#include "src/report/run_environment.hpp"
-#include "src/solver/solve_result.hpp"
+#include "stcontact/contact/contact_interface.hpp"
+#include "stcontact/solver/solve_result.hpp"
+#include "stcontact/studies/run_environment.hpp"
 
 namespace stc {
 

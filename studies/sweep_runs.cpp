@@ -1,17 +1,16 @@
-#include "src/cli/sweep_runs.hpp"
+#include "stcontact/studies/sweep_runs.hpp"
 
 #include <chrono>
-#include <iostream>
 
-#include "src/cli/compare_runs.hpp"
-#include "src/cli/progress.hpp"
-#include "src/io/atomic_file.hpp"
-#include "src/io/run_writer.hpp"
-#include "src/report/number_format.hpp"
-#include "src/solver/warm_start.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/io/run_writer.hpp"
+#include "stcontact/solver/warm_start.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/studies/number_format.hpp"
+#include "stcontact/studies/reference.hpp"
+#include "stcontact/version.hpp"
 
-namespace stc::cli {
+namespace stc {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -25,16 +24,17 @@ struct TimedSolve {
 /// error measured afterwards on the returned solution (the solve itself does not pay for it).
 TimedSolve timedSolve(const Problem& problem, const Scene& scene, const StrategyInputs& base,
                       const ReferenceSolution& reference, const std::string& label, const SweepSettings& settings) {
-  Progress progress(label, !settings.quiet);
   StrategyInputs inputs = base;
   inputs.converged_lambda = &reference.reference->referenceForces();  // fas-aposteriori's modes, not timed
-  inputs.callback = progress.callback();
   inputs.spatial_modes = false;  // the next point starts from the interface directions
   const auto start = Clock::now();
   TimedSolve out;
-  out.result = solveByName(settings.solver, problem, scene.solver, inputs);
+  {
+    const RunProgress progress(settings.progress, label);
+    inputs.callback = progress.callback();
+    out.result = solveByName(settings.solver, problem, scene.solver, inputs);
+  }
   out.cost = costOf(out.result.summary, std::chrono::duration<double>(Clock::now() - start).count());
-  progress.done();
   out.cost.error = reference.reference->relativeError(out.result.interface.lambda);
   return out;
 }
@@ -46,11 +46,10 @@ std::string costLine(const SolveCost& c) {
   return line;
 }
 
-void printPoint(const SweepPoint& p, const std::string& key) {
-  std::cout << "  " << key << "=" << p.text << ": warm (from " << toString(p.start) << ") "
-            << costLine(p.warm);
-  if (p.cold) std::cout << "; cold " << costLine(*p.cold);
-  std::cout << std::endl;
+std::string pointLine(const SweepPoint& p, const std::string& key) {
+  std::string line = "  " + key + "=" + p.text + ": warm (from " + toString(p.start) + ") " + costLine(p.warm);
+  if (p.cold) line += "; cold " + costLine(*p.cold);
+  return line;
 }
 
 void writeSolution(const std::filesystem::path& dir, const Problem& problem, const Scene& scene,
@@ -64,7 +63,7 @@ void writeSolution(const std::filesystem::path& dir, const Problem& problem, con
 SweepPoint WarmChain::solveValue(const Scene& scene, const SweepRange& range, std::size_t index,
                                  const SweepSettings& settings) {
   const Problem problem = buildProblem(scene);  // K + BᵀkB and its factor may depend on the value
-  const ReferenceSolution reference = computeReference(problem, settings.quiet);
+  const ReferenceSolution reference = computeReference(problem, settings.progress);
   const std::string label = range.override(index) + " (" + std::to_string(index + 1) + "/" +
                             std::to_string(range.values.size()) + ") ";
   SweepPoint point;
@@ -87,11 +86,11 @@ SweepPoint WarmChain::solveValue(const Scene& scene, const SweepRange& range, st
   if (settings.independent) point.cold = timedSolve(problem, scene, {}, reference, label + "cold", settings).cost;
   if (settings.solutions_dir)
     writeSolution(*settings.solutions_dir / ("value_" + point.text), problem, scene, solved.result);
-  if (!settings.quiet) printPoint(point, range.key);
+  if (settings.progress) settings.progress->note(pointLine(point, range.key));
 
   interface_ = std::move(solved.result.interface);
   modes_ = std::move(solved.result.interface_directions);
   return point;
 }
 
-}  // namespace stc::cli
+}  // namespace stc

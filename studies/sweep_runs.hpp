@@ -6,17 +6,18 @@
 #include <optional>
 #include <string>
 
-#include "src/report/sweep.hpp"
-#include "src/scene/scene.hpp"
-#include "src/scene/sweep_range.hpp"
+#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/sweep_range.hpp"
+#include "stcontact/studies/progress.hpp"
+#include "stcontact/studies/sweep.hpp"
 
-namespace stc::cli {
+namespace stc {
 
 struct SweepSettings {
   std::string solver;
   bool independent = true;                             ///< also solve every value cold
   std::optional<std::filesystem::path> solutions_dir;  ///< write each warm solution below it
-  bool quiet = false;
+  ProgressReporter* progress = nullptr;               ///< shows each solve and each value's line
 };
 
 /// What the next value's warm solve starts from: the last warm solution and its spatial modes.
@@ -30,4 +31,4 @@ class WarmChain {
   Eigen::MatrixXd modes_;
 };
 
-}  // namespace stc::cli
+}  // namespace stc

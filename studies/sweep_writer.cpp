@@ -1,10 +1,10 @@
-#include "src/report/sweep_writer.hpp"
+#include "stcontact/studies/sweep_writer.hpp"
 
 #include <cmath>
 #include <sstream>
 
-#include "src/io/atomic_file.hpp"
-#include "src/report/number_format.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/studies/number_format.hpp"
 
 namespace stc {
 namespace {

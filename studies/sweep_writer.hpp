@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "src/report/sweep.hpp"
+#include "stcontact/studies/sweep.hpp"
 
 namespace stc {
 

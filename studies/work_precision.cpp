@@ -1,4 +1,4 @@
-#include "src/report/work_precision.hpp"
+#include "stcontact/studies/work_precision.hpp"
 
 #include <algorithm>
 #include <cmath>

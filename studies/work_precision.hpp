@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "src/solver/solve_summary.hpp"
+#include "stcontact/solver/solve_summary.hpp"
 
 namespace stc {
 

@@ -2,7 +2,7 @@
 // takes them (src/linalg/blas_kernels.hpp), then Google Benchmark's own main.
 #include <benchmark/benchmark.h>
 
-#include "src/linalg/blas_kernels.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
 
 int main(int argc, char** argv) {
   stc::linalg::preferFastBlasKernels();

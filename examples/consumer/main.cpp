@@ -4,9 +4,9 @@
 // 4. print the sizes and the final total normal force.
 #include <iostream>
 
-#include "latin/latin_solver.hpp"
-#include "src/problem/problem.hpp"
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -1,9 +1,9 @@
-#include "fas/aposteriori_basis.hpp"
+#include "stcontact/fas/aposteriori/aposteriori_basis.hpp"
 
 #include <algorithm>
 
-#include "pgd/displacement_history.hpp"
-#include "pgd/space_time_svd.hpp"
+#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/pgd/space_time_svd.hpp"
 
 namespace stc::fas {
 

@@ -5,8 +5,8 @@
 // yardstick the a priori basis is measured against.
 #include <Eigen/Core>
 
-#include "src/linalg/spd_factor.hpp"
-#include "src/problem/problem.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace stc::fas {
 

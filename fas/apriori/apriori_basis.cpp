@@ -1,8 +1,8 @@
-#include "fas/apriori_basis.hpp"
+#include "stcontact/fas/apriori/apriori_basis.hpp"
 
-#include "pgd/separated_history.hpp"
-#include "src/core/option_check.hpp"
-#include "src/linalg/dense_decompositions.hpp"
+#include "stcontact/core/option_check.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/pgd/separated_history.hpp"
 
 namespace stc::fas {
 

@@ -16,9 +16,9 @@
 // the coarse step already (docs/method.md §5, "The anticipated expansion").
 #include <Eigen/Core>
 
-#include "fas/basis_provider.hpp"
-#include "pgd/controlled_global_stage.hpp"
-#include "src/core/solver_settings.hpp"
+#include "stcontact/core/solver_settings.hpp"
+#include "stcontact/fas/basis_provider.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
 
 namespace stc::fas {
 

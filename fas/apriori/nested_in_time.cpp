@@ -1,4 +1,4 @@
-#include "src/strategies/nested_in_time.hpp"
+#include "stcontact/fas/apriori/nested_in_time.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "fas/apriori_basis.hpp"
-#include "fas/fas_solver.hpp"
-#include "src/problem/time_subgrid.hpp"
-#include "src/spacetime/time_interpolation.hpp"
+#include "stcontact/fas/apriori/apriori_basis.hpp"
+#include "stcontact/fas/fas_solver.hpp"
+#include "stcontact/problem/time_subgrid.hpp"
+#include "stcontact/spacetime/time_interpolation.hpp"
 
 namespace stc {
 namespace {

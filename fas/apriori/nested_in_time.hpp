@@ -16,8 +16,8 @@
 // guess), with a coarse level in time.
 // Counts and times: the result's history holds the relaxations on the whole grid; its times and
 // sparse solves include the sub-grid solve, and the summary's message says what that cost.
-#include "pgd/controlled_global_stage.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/strategies/reduced_interface.hpp"
+#include "stcontact/fas/apriori/reduced_interface.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,13 +6,13 @@
 #include <optional>
 #include <string>
 
-#include "fas/coarse_zone.hpp"
-#include "latin/indicator.hpp"
-#include "latin/local_stage.hpp"
-#include "pgd/separated_history.hpp"
-#include "src/problem/prescribed_reach.hpp"
-#include "src/solver/warm_start.hpp"
-#include "src/strategies/nested_in_time.hpp"
+#include "stcontact/fas/apriori/nested_in_time.hpp"
+#include "stcontact/fas/coarse_zone.hpp"
+#include "stcontact/latin/indicator.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/pgd/separated_history.hpp"
+#include "stcontact/problem/prescribed_reach.hpp"
+#include "stcontact/solver/warm_start.hpp"
 
 namespace stc {
 namespace {

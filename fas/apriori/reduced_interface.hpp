@@ -16,7 +16,7 @@
 //   2. solves the problem on those nodes alone (restrictToNodes: the same body and loads), its
 //      iterates' true error measured with zero forces on the other rows (ErrorOnRows), which is
 //      their force in the restricted problem; on a long grid the first round begins on every q-th
-//      instant (src/strategies/nested_in_time.hpp);
+//      instant (fas/apriori/nested_in_time.hpp);
 //   3. checks the nodes left out: their normal displacement B_F u, one product with the separated
 //      displacement history u = U_F G + X c, must keep g0 + v_n ≥ 0 at every instant. The solution
 //      then satisfies every condition of the whole problem (equilibrium with λ_F = 0, the contact
@@ -34,8 +34,8 @@
 #include <string>
 #include <vector>
 
-#include "src/solver/error_measure.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/solver/error_measure.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
 
 namespace stc {
 

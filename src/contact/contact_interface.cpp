@@ -1,4 +1,4 @@
-#include "src/contact/contact_interface.hpp"
+#include "stcontact/contact/contact_interface.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/facet_measure.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/facet_measure.hpp"
 
 namespace stc {
 namespace {

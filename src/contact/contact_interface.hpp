@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "src/contact/obstacle.hpp"
-#include "src/mesh/mesh.hpp"
-#include "src/mesh/tet_mesh.hpp"
+#include "stcontact/contact/obstacle.hpp"
+#include "stcontact/mesh/mesh.hpp"
+#include "stcontact/mesh/tet_mesh.hpp"
 
 namespace stc {
 

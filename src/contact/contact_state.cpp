@@ -1,4 +1,4 @@
-#include "src/contact/contact_state.hpp"
+#include "stcontact/contact/contact_state.hpp"
 
 #include <cmath>
 

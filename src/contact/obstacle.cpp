@@ -1,4 +1,4 @@
-#include "src/contact/obstacle.hpp"
+#include "stcontact/contact/obstacle.hpp"
 
 namespace stc {
 

@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <variant>
 
-#include "src/scene/scene.hpp"
+#include "stcontact/scene/scene.hpp"
 
 namespace stc {
 

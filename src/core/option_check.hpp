@@ -4,7 +4,7 @@
 // Integers print as integers; other numbers as std::to_string prints them.
 #include <string>
 
-#include "src/core/input_error.hpp"
+#include "stcontact/core/input_error.hpp"
 
 namespace stc {
 

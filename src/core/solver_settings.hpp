@@ -45,11 +45,11 @@ inline constexpr int coarse_anderson = 2;
 /// eliminated exactly (fas/coarse_zone.hpp; docs/method.md §4).
 inline constexpr bool coarse_zone = true;
 /// fas-apriori solves on the contact nodes that can touch, the others checked open afterwards
-/// (src/strategies/reduced_interface.hpp; docs/method.md §5).
+/// (fas/apriori/reduced_interface.hpp; docs/method.md §5).
 inline constexpr bool reduce_interface = true;
 /// fas-apriori on a grid of m instants starts from its own solution on every q-th instant,
 /// q = ⌊(m − 1) / 200⌋, when q ≥ 2: a sub-grid of about 201 instants, the seed scene's grid
-/// (src/strategies/nested_in_time.hpp; docs/method.md §5). 0: never.
+/// (fas/apriori/nested_in_time.hpp; docs/method.md §5). 0: never.
 inline constexpr int nested_instants = 201;
 /// θ of the FAS safeguard: a correction is rejected when the next indicator exceeds θ times the one
 /// before the coarse step (fas/fas_options.hpp). It depends on the dimension and on the coarse space
@@ -73,7 +73,7 @@ inline constexpr int svd_modes = 10;           ///< fas-aposteriori: leading ene
 /// against 52, with no rejected correction) and 801 (66 against 366; docs/floor.md).
 inline constexpr int pgd_max_modes = 15;
 inline constexpr int pgd_increment_modes = 30;
-/// fas-apriori: the coarse space from the anticipated expansion (fas/apriori_basis.hpp).
+/// fas-apriori: the coarse space from the anticipated expansion (fas/apriori/apriori_basis.hpp).
 inline constexpr bool pgd_anticipate = true;
 /// latin-pgd and fas-apriori: γ, the separated global stage's projection error kept below γ times the
 /// previous gap ‖s − ŝ‖ (pgd/controlled_global_stage.hpp; docs/floor.md).

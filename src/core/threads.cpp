@@ -1,4 +1,4 @@
-#include "src/core/threads.hpp"
+#include "stcontact/core/threads.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "src/core/input_error.hpp"
-#include "src/core/worker_pool.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/core/worker_pool.hpp"
 
 namespace stc {
 namespace {

@@ -1,4 +1,4 @@
-#include "src/core/worker_pool.hpp"
+#include "stcontact/core/worker_pool.hpp"
 
 namespace stc::detail {
 namespace {

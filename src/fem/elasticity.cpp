@@ -1,4 +1,4 @@
-#include "src/fem/elasticity.hpp"
+#include "stcontact/fem/elasticity.hpp"
 
 #include <algorithm>
 #include <cmath>

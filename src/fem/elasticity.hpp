@@ -4,8 +4,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "src/mesh/mesh.hpp"
-#include "src/scene/scene.hpp"
+#include "stcontact/mesh/mesh.hpp"
+#include "stcontact/scene/scene.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/fem/elasticity3d.hpp"
+#include "stcontact/fem/elasticity3d.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "src/fem/load_history.hpp"
+#include "stcontact/fem/load_history.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_interp.h>

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "src/scene/scene.hpp"
+#include "stcontact/scene/scene.hpp"
 
 namespace stc {
 

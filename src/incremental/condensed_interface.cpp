@@ -1,6 +1,6 @@
-#include "src/solver/condensed_interface.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
 
-#include "src/solver/lazy_delassus.hpp"
+#include "stcontact/incremental/lazy_delassus.hpp"
 
 namespace stc {
 

@@ -5,8 +5,8 @@
 // true errors on the interface alone (δuᵀ K δu = δλᵀ W δλ when K δu = Bᵀ δλ).
 #include <Eigen/Core>
 
-#include "src/linalg/spd_factor.hpp"
-#include "src/problem/problem.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace stc {
 

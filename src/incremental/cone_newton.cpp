@@ -1,9 +1,9 @@
-#include "src/solver/cone_newton.hpp"
+#include "stcontact/incremental/cone_newton.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
 
-#include "src/solver/newton_instant.hpp"
+#include "stcontact/incremental/newton_instant.hpp"
 
 namespace stc {
 

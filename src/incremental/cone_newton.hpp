@@ -26,8 +26,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "src/problem/problem.hpp"
-#include "src/solver/lazy_delassus.hpp"
+#include "stcontact/incremental/lazy_delassus.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace stc {
 

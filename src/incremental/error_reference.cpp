@@ -1,4 +1,4 @@
-#include "src/solver/error_reference.hpp"
+#include "stcontact/incremental/error_reference.hpp"
 
 #include <cmath>
 #include <limits>

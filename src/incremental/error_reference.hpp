@@ -15,9 +15,9 @@
 #include <memory>
 #include <mutex>
 
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/error_measure.hpp"
-#include "src/solver/lazy_delassus.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/lazy_delassus.hpp"
+#include "stcontact/solver/error_measure.hpp"
 
 namespace stc {
 

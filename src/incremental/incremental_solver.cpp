@@ -1,4 +1,4 @@
-#include "src/solver/incremental_solver.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "src/contact/contact_state.hpp"
-#include "src/core/input_error.hpp"
-#include "src/linalg/spd_factor.hpp"
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/cone_newton.hpp"
-#include "src/solver/lazy_delassus.hpp"
-#include "src/solver/newton_instant.hpp"
+#include "stcontact/contact/contact_state.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/cone_newton.hpp"
+#include "stcontact/incremental/lazy_delassus.hpp"
+#include "stcontact/incremental/newton_instant.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
 
 namespace stc {
 namespace {

@@ -41,8 +41,8 @@
 // 16 n_C n_A,ever bytes; when the active set itself is large, do not form W at all and solve each
 // Newton step as the sparse saddle-point system [K_ff  B_Aᵀ; B_A  0] (sparse LDLᵀ, or a Schur
 // complement by CG preconditioned with diag(W)).
-#include "src/problem/problem.hpp"
-#include "src/solver/solve_result.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
 namespace stc {
 

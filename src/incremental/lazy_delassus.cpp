@@ -1,4 +1,4 @@
-#include "src/solver/lazy_delassus.hpp"
+#include "stcontact/incremental/lazy_delassus.hpp"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The columns of the Delassus operator W = B K⁻¹ Bᵀ (src/solver/condensed_interface.hpp), computed
+// The columns of the Delassus operator W = B K⁻¹ Bᵀ (src/incremental/condensed_interface.hpp), computed
 // only for the contact nodes that need them, the first time they do: node j's d columns
 // W(:, d j … d j + d − 1) = B K⁻¹ B(d j … d j + d − 1, :)ᵀ take d sparse solves. The incremental
 // solver needs the columns of the nodes that carry a force (v = v_0 + W λ) and of the closed ones
@@ -8,8 +8,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "src/linalg/spd_factor.hpp"
-#include "src/problem/problem.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace stc {
 

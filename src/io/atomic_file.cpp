@@ -1,4 +1,4 @@
-#include "src/io/atomic_file.hpp"
+#include "stcontact/io/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 #include <system_error>
 #include <vector>
 
-#include "src/io/output_error.hpp"
+#include "stcontact/io/output_error.hpp"
 
 namespace stc {
 namespace {

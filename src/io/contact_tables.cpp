@@ -1,10 +1,10 @@
-#include "src/io/contact_tables.hpp"
+#include "stcontact/io/contact_tables.hpp"
 
 #include <algorithm>
 #include <limits>
 
-#include "src/contact/contact_state_table.hpp"
-#include "src/io/text_buffer.hpp"
+#include "stcontact/io/text_buffer.hpp"
+#include "stcontact/spacetime/contact_state_table.hpp"
 
 namespace stc {
 namespace {

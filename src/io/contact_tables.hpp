@@ -4,8 +4,8 @@
 #include <ostream>
 #include <vector>
 
-#include "src/problem/problem.hpp"
-#include "src/solver/solve_result.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
 namespace stc {
 

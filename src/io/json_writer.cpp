@@ -1,4 +1,4 @@
-#include "src/io/json_writer.hpp"
+#include "stcontact/io/json_writer.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,19 +1,19 @@
-#include "src/io/run_writer.hpp"
+#include "stcontact/io/run_writer.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
-#include "src/contact/contact_state_table.hpp"
-#include "src/core/threads.hpp"
-#include "src/fem/elasticity.hpp"
-#include "src/fem/elasticity3d.hpp"
-#include "src/io/atomic_file.hpp"
-#include "src/io/contact_tables.hpp"
-#include "src/io/json_writer.hpp"
-#include "src/io/vtu_writer.hpp"
-#include "src/linalg/blas_kernels.hpp"
-#include "src/solver/condensed_interface.hpp"
+#include "stcontact/core/threads.hpp"
+#include "stcontact/fem/elasticity.hpp"
+#include "stcontact/fem/elasticity3d.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/io/contact_tables.hpp"
+#include "stcontact/io/json_writer.hpp"
+#include "stcontact/io/vtu_writer.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/spacetime/contact_state_table.hpp"
 
 namespace stc {
 namespace {

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <string>
 
-#include "src/problem/problem.hpp"
-#include "src/scene/scene.hpp"
-#include "src/solver/solve_result.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/io/vtu_writer.hpp"
+#include "stcontact/io/vtu_writer.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "src/io/text_buffer.hpp"
+#include "stcontact/io/text_buffer.hpp"
 
 namespace stc {
 namespace {

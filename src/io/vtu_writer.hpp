@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "src/mesh/mesh.hpp"
-#include "src/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/mesh.hpp"
+#include "stcontact/mesh/tet_mesh.hpp"
 
 namespace stc {
 

@@ -1,11 +1,11 @@
-#include "src/linalg/anderson.hpp"
+#include "stcontact/linalg/anderson.hpp"
 
 #include <Eigen/Cholesky>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
 
-#include "src/core/threads.hpp"
+#include "stcontact/core/threads.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/linalg/blas_kernels.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
 
 #include <cstdlib>
 

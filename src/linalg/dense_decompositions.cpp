@@ -1,4 +1,4 @@
-#include "src/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>

@@ -1,4 +1,4 @@
-#include "src/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
 
 #include <Eigen/CholmodSupport>
 #include <algorithm>
@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "src/core/input_error.hpp"
-#include "src/core/threads.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/core/threads.hpp"
 
 namespace stc {
 

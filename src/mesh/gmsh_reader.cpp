@@ -1,4 +1,4 @@
-#include "src/mesh/gmsh_reader.hpp"
+#include "stcontact/mesh/gmsh_reader.hpp"
 
 #include <algorithm>
 #include <array>
@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/detail/gmsh_sections.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/detail/gmsh_sections.hpp"
 
 namespace stc::detail {
 namespace {

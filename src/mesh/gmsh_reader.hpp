@@ -39,8 +39,8 @@
 #include <istream>
 #include <string>
 
-#include "src/mesh/mesh.hpp"
-#include "src/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/mesh.hpp"
+#include "stcontact/mesh/tet_mesh.hpp"
 
 namespace stc {
 

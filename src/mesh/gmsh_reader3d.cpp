@@ -4,9 +4,9 @@
 #include <fstream>
 #include <map>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/detail/gmsh_sections.hpp"
-#include "src/mesh/gmsh_reader.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/detail/gmsh_sections.hpp"
+#include "stcontact/mesh/gmsh_reader.hpp"
 
 namespace stc {
 namespace {

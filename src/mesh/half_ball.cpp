@@ -1,14 +1,14 @@
 // Sizes: divisions = 8 gives (2·8 + 1)²(8 + 1) = 2601 nodes, 7803 dofs, 6·16·16·8 = 12288 tetrahedra
 // (tests/mesh/test_half_ball.cpp checks them).
-#include "src/mesh/half_ball.hpp"
+#include "stcontact/mesh/half_ball.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/detail/box_grid.hpp"
-#include "src/mesh/detail/cored_box.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/detail/box_grid.hpp"
+#include "stcontact/mesh/detail/cored_box.hpp"
 
 namespace stc {
 namespace {

@@ -2,7 +2,7 @@
 // Built-in generator for the three-dimensional counterpart of the seed scene's body: the half-ball
 // x² + y² + z² ≤ R², z ≤ 0, meshed with P1 tetrahedra. The flat face is the top (z = 0), the
 // curved surface lies below and touches a rigid plane at its bottom pole (0, 0, −R).
-#include "src/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/tet_mesh.hpp"
 
 namespace stc {
 

@@ -1,11 +1,11 @@
-#include "src/mesh/half_disc.hpp"
+#include "stcontact/mesh/half_disc.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
-#include "src/core/input_error.hpp"
+#include "stcontact/core/input_error.hpp"
 
 namespace stc {
 namespace {

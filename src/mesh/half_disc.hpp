@@ -1,7 +1,7 @@
 #pragma once
 // Built-in generator for the seed scene's body (docs/method.md §6): the half-disc
 // x² + y² ≤ R², y ≤ 0, meshed with P1 triangles in concentric half-rings.
-#include "src/mesh/mesh.hpp"
+#include "stcontact/mesh/mesh.hpp"
 
 namespace stc {
 

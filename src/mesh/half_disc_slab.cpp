@@ -1,11 +1,11 @@
-#include "src/mesh/half_disc_slab.hpp"
+#include "stcontact/mesh/half_disc_slab.hpp"
 
 #include <algorithm>
 #include <map>
 #include <string>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/detail/prism_split.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/detail/prism_split.hpp"
 
 namespace stc {
 namespace {

@@ -2,8 +2,8 @@
 // Built-in 3D generator: the seed scene's half-disc (src/mesh/half_disc.hpp) extruded along z, a
 // slab whose plane-strain state (u_z = 0 on both faces) is the 2D seed problem: the same physics
 // through the 3D code path.
-#include "src/mesh/half_disc.hpp"
-#include "src/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/half_disc.hpp"
+#include "stcontact/mesh/tet_mesh.hpp"
 
 namespace stc {
 

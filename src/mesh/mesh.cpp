@@ -1,7 +1,7 @@
-#include "src/mesh/mesh.hpp"
+#include "stcontact/mesh/mesh.hpp"
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/mesh_checks.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/mesh_checks.hpp"
 
 namespace stc {
 

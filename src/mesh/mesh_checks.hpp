@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "src/core/input_error.hpp"
+#include "stcontact/core/input_error.hpp"
 
 namespace stc::mesh_checks {
 

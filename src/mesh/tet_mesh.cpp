@@ -1,10 +1,10 @@
-#include "src/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/tet_mesh.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/mesh_checks.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/mesh_checks.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/problem/prescribed_reach.hpp"
+#include "stcontact/problem/prescribed_reach.hpp"
 
 #include <algorithm>
 

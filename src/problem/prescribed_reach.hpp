@@ -7,15 +7,15 @@
 //  - the nodes whose gap it closes at some instant are those the contact can reach. Elastic
 //    deformation moves the nodes near the contact less than the rigid motion (the body is
 //    compressed there), so the set is usually a superset of the contact zone; it is a prediction,
-//    and the reduced interface checks the nodes it leaves out (src/strategies/reduced_interface.hpp);
+//    and the reduced interface checks the nodes it leaves out (fas/apriori/reduced_interface.hpp);
 //  - the interface displacement of that rigid motion is a start for the iteration closer to the
 //    solution than s = 0: its first local stage already presses the reached nodes on the obstacle.
 #include <Eigen/Core>
 #include <optional>
 #include <vector>
 
-#include "src/problem/problem.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
 

@@ -1,17 +1,17 @@
-#include "src/problem/problem.hpp"
+#include "stcontact/problem/problem.hpp"
 
 #include <algorithm>
 #include <sstream>
 
-#include "src/core/input_error.hpp"
-#include "src/fem/elasticity.hpp"
-#include "src/fem/elasticity3d.hpp"
-#include "src/fem/load_history.hpp"
-#include "src/mesh/facet_measure.hpp"
-#include "src/mesh/gmsh_reader.hpp"
-#include "src/mesh/half_ball.hpp"
-#include "src/mesh/half_disc_slab.hpp"
-#include "src/mesh/half_disc.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/fem/elasticity.hpp"
+#include "stcontact/fem/elasticity3d.hpp"
+#include "stcontact/fem/load_history.hpp"
+#include "stcontact/mesh/facet_measure.hpp"
+#include "stcontact/mesh/gmsh_reader.hpp"
+#include "stcontact/mesh/half_ball.hpp"
+#include "stcontact/mesh/half_disc.hpp"
+#include "stcontact/mesh/half_disc_slab.hpp"
 
 namespace stc {
 namespace {

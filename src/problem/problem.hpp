@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "src/contact/contact_interface.hpp"
-#include "src/mesh/mesh.hpp"
-#include "src/mesh/tet_mesh.hpp"
-#include "src/scene/scene.hpp"
+#include "stcontact/contact/contact_interface.hpp"
+#include "stcontact/mesh/mesh.hpp"
+#include "stcontact/mesh/tet_mesh.hpp"
+#include "stcontact/scene/scene.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/problem/time_subgrid.hpp"
+#include "stcontact/problem/time_subgrid.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -3,10 +3,10 @@
 // loading is stored sampled on the grid (SeparatedLoad::values), so keeping the instants t_{k_j}
 // keeps its exact values there: the problem on the sub-grid is the scene with those instants only.
 // Its solution, interpolated back, starts the iteration on the whole grid
-// (src/strategies/nested_in_time.hpp).
+// (fas/apriori/nested_in_time.hpp).
 #include <vector>
 
-#include "src/problem/problem.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace stc {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "src/core/solver_settings.hpp"
+#include "stcontact/core/solver_settings.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 #include <toml++/toml.h>
 
@@ -9,11 +9,11 @@
 #include <sstream>
 #include <utility>
 
-#include "src/core/input_error.hpp"
-#include "src/scene/detail/guarded_parse.hpp"
-#include "src/scene/detail/scene_errors.hpp"
-#include "src/scene/detail/scene_overrides.hpp"
-#include "src/scene/detail/table_view.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/scene/detail/guarded_parse.hpp"
+#include "stcontact/scene/detail/scene_errors.hpp"
+#include "stcontact/scene/detail/scene_overrides.hpp"
+#include "stcontact/scene/detail/table_view.hpp"
 
 namespace stc {
 

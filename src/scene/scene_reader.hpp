@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "src/scene/scene.hpp"
+#include "stcontact/scene/scene.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/scene/sweep_range.hpp"
+#include "stcontact/scene/sweep_range.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <optional>
 #include <set>
 
-#include "src/core/input_error.hpp"
+#include "stcontact/core/input_error.hpp"
 
 namespace stc {
 namespace {

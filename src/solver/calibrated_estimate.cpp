@@ -1,4 +1,4 @@
-#include "src/solver/calibrated_estimate.hpp"
+#include "stcontact/solver/calibrated_estimate.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
 // no calibration and is not kept. +∞ while no checkpoint qualifies.
 #include <deque>
 
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
 

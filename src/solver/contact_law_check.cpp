@@ -1,4 +1,4 @@
-#include "src/solver/contact_law_check.hpp"
+#include "stcontact/solver/contact_law_check.hpp"
 
 #include <algorithm>
 #include <cmath>

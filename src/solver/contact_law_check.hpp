@@ -3,8 +3,8 @@
 // implicit Coulomb at every node and instant). Every measure is relative and dimensionless, so one
 // threshold serves all scenes: a solution exact to round-off gives ~1e-15, a LATIN iterate at
 // indicator η gives roughly η.
-#include "src/problem/problem.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/solver/equilibrium_energy.hpp"
+#include "stcontact/solver/equilibrium_energy.hpp"
 
 namespace stc {
 

@@ -9,9 +9,9 @@
 // with the free dofs. Set-up: one solve with A per column of [F D]; then O(q n_C m) per call.
 #include <Eigen/Core>
 
-#include "src/linalg/spd_factor.hpp"
-#include "src/problem/problem.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
 

@@ -1,10 +1,10 @@
-#include "src/solver/error_estimate.hpp"
+#include "stcontact/solver/error_estimate.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "src/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
 
 namespace stc {
 namespace {

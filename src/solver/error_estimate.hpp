@@ -27,7 +27,7 @@
 #include <optional>
 #include <vector>
 
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/solver/iteration_monitor.hpp"
+#include "stcontact/solver/iteration_monitor.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -8,12 +8,12 @@
 #include <optional>
 #include <string>
 
-#include "src/core/solver_settings.hpp"
-#include "src/solver/calibrated_estimate.hpp"
-#include "src/solver/equilibrium_energy.hpp"
-#include "src/solver/error_estimate.hpp"
-#include "src/solver/error_measure.hpp"
-#include "src/solver/solve_summary.hpp"
+#include "stcontact/core/solver_settings.hpp"
+#include "stcontact/solver/calibrated_estimate.hpp"
+#include "stcontact/solver/equilibrium_energy.hpp"
+#include "stcontact/solver/error_estimate.hpp"
+#include "stcontact/solver/error_measure.hpp"
+#include "stcontact/solver/solve_summary.hpp"
 
 namespace stc {
 

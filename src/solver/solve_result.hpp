@@ -3,8 +3,8 @@
 // see condensed_interface.hpp) and the summary.
 #include <optional>
 
-#include "src/solver/solve_summary.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/solver/solve_summary.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/solver/solve_summary.hpp"
+#include "stcontact/solver/solve_summary.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/solver/warm_start.hpp"
+#include "stcontact/solver/warm_start.hpp"
 
 #include <stdexcept>
 #include <string>

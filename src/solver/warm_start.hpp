@@ -9,8 +9,8 @@
 // nothing to reuse.
 #include <Eigen/Core>
 
-#include "src/problem/problem.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
 

@@ -1,4 +1,4 @@
-#include "src/contact/contact_state_table.hpp"
+#include "stcontact/spacetime/contact_state_table.hpp"
 
 #include <algorithm>
 #include <limits>

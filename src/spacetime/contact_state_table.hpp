@@ -1,9 +1,9 @@
 #pragma once
 // Open/stick/slip of every contact node and instant of an interface history (classifyContact of
 // contact_state.hpp, docs/method.md §1), for the output tables and the mode localisation report.
-#include "src/contact/contact_interface.hpp"
-#include "src/contact/contact_state.hpp"
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/contact/contact_interface.hpp"
+#include "stcontact/contact/contact_state.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
 

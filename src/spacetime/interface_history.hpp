@@ -4,7 +4,7 @@
 // only quantities LATIN keeps between iterations (docs/method.md §2).
 #include <Eigen/Core>
 
-#include "src/contact/contact_interface.hpp"
+#include "stcontact/contact/contact_interface.hpp"
 
 namespace stc {
 

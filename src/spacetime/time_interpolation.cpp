@@ -1,4 +1,4 @@
-#include "src/spacetime/time_interpolation.hpp"
+#include "stcontact/spacetime/time_interpolation.hpp"
 
 #include <algorithm>
 #include <stdexcept>

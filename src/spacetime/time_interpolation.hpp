@@ -5,7 +5,7 @@
 // Exact for histories linear between the instants of the first grid, as the scenes' loadings are.
 #include <vector>
 
-#include "src/spacetime/interface_history.hpp"
+#include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
 

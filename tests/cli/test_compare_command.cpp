@@ -15,10 +15,10 @@
 
 #include "cli/csv_table.hpp"
 #include "cli/run_program.hpp"
-#include "src/report/comparison.hpp"
-#include "src/report/number_format.hpp"
-#include "src/report/work_precision.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/studies/comparison.hpp"
+#include "stcontact/studies/number_format.hpp"
+#include "stcontact/studies/work_precision.hpp"
 
 namespace stc {
 namespace {

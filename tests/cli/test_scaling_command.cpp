@@ -14,8 +14,8 @@
 
 #include "cli/csv_table.hpp"
 #include "cli/run_program.hpp"
-#include "src/report/growth_fit.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/studies/growth_fit.hpp"
 
 namespace stc {
 namespace {

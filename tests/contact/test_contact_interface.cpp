@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "src/core/input_error.hpp"
-#include "src/problem/problem.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace {
 

@@ -2,11 +2,11 @@
 // frame (n, τ_1, τ_2), tributary areas, B and the search direction on the half-ball.
 #include <gtest/gtest.h>
 
-#include "src/mesh/facet_measure.hpp"
-#include "src/problem/problem.hpp"
-#include "solver/hemisphere_scene.hpp"
-#include "solver/slab_scene.hpp"
-#include "src/core/input_error.hpp"
+#include "fixtures/hemisphere_scene.hpp"
+#include "fixtures/slab_scene.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/facet_measure.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace {
 
@@ -77,7 +77,7 @@ TEST(ContactInterface3d, BTakesTheNormalAndTangentialComponentsAndKIsTheSameOnTh
     EXPECT_DOUBLE_EQ(p.contact.search_direction[3 * i + r], 4.0 * 3000.0 * p.contact.tributary[i] / 1.0);
 }
 
-// The slab (tests/solver/slab_scene.hpp): u_z = 0 on its faces. A contact node there keeps its
+// The slab (tests/fixtures/slab_scene.hpp): u_z = 0 on its faces. A contact node there keeps its
 // three rows; its τ_2 = −e_z row is held (empty B row); the arc's corners, whose normal motion u_y
 // is driven with the top, are left out as in 2D.
 TEST(ContactInterface3d, NodesHeldAtZeroAlongATangentGetAHeldRow) {

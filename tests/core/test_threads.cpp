@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "src/core/input_error.hpp"
-#include "src/core/threads.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/core/threads.hpp"
 
 TEST(ParallelFor, VisitsEveryItemExactlyOnceWithAThreadIndexBelowTheCount) {
   for (int threads : {1, 2, 3, 8})

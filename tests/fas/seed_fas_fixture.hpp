@@ -3,11 +3,11 @@
 // incremental solution and the converged free displacements, built once per test program.
 #include <Eigen/Core>
 
-#include "solver/seed_scene.hpp"
-#include "src/linalg/dense_decompositions.hpp"
-#include "src/linalg/spd_factor.hpp"
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/incremental_solver.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
 
 namespace stc::test {
 

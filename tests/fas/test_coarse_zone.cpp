@@ -4,12 +4,12 @@
 
 #include <algorithm>
 
-#include "fas/coarse_step.hpp"
-#include "fas/coarse_zone.hpp"
 #include "fas/seed_fas_fixture.hpp"
-#include "latin/global_stage.hpp"
-#include "latin/latin_solver.hpp"
-#include "latin/local_stage.hpp"
+#include "stcontact/fas/coarse_step.hpp"
+#include "stcontact/fas/coarse_zone.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/latin/local_stage.hpp"
 
 namespace {
 

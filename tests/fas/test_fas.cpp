@@ -5,15 +5,15 @@
 #include <cstdio>
 #include <optional>
 
-#include "fas/apriori_basis.hpp"
-#include "fas/fas_solver.hpp"
-#include "fas/residual_vectors.hpp"
-#include "latin/latin_solver.hpp"
-#include "src/core/input_error.hpp"
-#include "src/linalg/dense_decompositions.hpp"
-#include "src/solver/incremental_solver.hpp"
 #include "fas/seed_fas_fixture.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/fas/apriori/apriori_basis.hpp"
+#include "stcontact/fas/fas_solver.hpp"
+#include "stcontact/fas/residual_vectors.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
 
 namespace {
 

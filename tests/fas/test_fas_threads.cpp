@@ -3,9 +3,9 @@
 // solution on 1 and 2 threads.
 #include <gtest/gtest.h>
 
-#include "solver/seed_scene.hpp"
-#include "src/core/threads.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/threads.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
 
 namespace {
 

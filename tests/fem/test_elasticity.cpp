@@ -6,8 +6,8 @@
 #include <cmath>
 #include <functional>
 
-#include "src/fem/elasticity.hpp"
-#include "src/mesh/half_disc.hpp"
+#include "stcontact/fem/elasticity.hpp"
+#include "stcontact/mesh/half_disc.hpp"
 
 namespace {
 

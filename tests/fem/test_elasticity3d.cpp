@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <functional>
 
-#include "src/fem/elasticity3d.hpp"
-#include "src/mesh/half_ball.hpp"
+#include "stcontact/fem/elasticity3d.hpp"
+#include "stcontact/mesh/half_ball.hpp"
 
 namespace {
 

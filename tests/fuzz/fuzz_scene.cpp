@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "src/core/input_error.hpp"
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace {
 

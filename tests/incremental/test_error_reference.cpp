@@ -7,11 +7,11 @@
 #include <memory>
 #include <vector>
 
-#include "src/solver/error_reference.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "tests/solver/hemisphere_scene.hpp"
-#include "tests/solver/seed_scene.hpp"
-#include "tests/solver/slab_scene.hpp"
+#include "fixtures/hemisphere_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "fixtures/slab_scene.hpp"
+#include "stcontact/incremental/error_reference.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
 
 namespace {
 

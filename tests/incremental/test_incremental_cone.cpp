@@ -1,4 +1,4 @@
-// The incremental solver's cone law with lazily computed Delassus columns (src/solver/cone_newton.hpp):
+// The incremental solver's cone law with lazily computed Delassus columns (src/incremental/cone_newton.hpp):
 // the same solution as the plane law in 2D, and in 3D the contact law to round-off, the symmetry of
 // the scene, Coulomb sliding at the end of the slide, and columns only for the nodes that close.
 #include <gtest/gtest.h>
@@ -6,10 +6,10 @@
 #include <iostream>
 #include <regex>
 
-#include "src/solver/contact_law_check.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "tests/solver/hemisphere_scene.hpp"
-#include "tests/solver/seed_scene.hpp"
+#include "fixtures/hemisphere_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/solver/contact_law_check.hpp"
 
 namespace {
 

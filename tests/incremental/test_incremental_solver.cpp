@@ -1,4 +1,4 @@
-// The incremental reference solver (src/solver/incremental_solver.hpp): the contact law at every node
+// The incremental reference solver (src/incremental/incremental_solver.hpp): the contact law at every node
 // and instant, equilibrium of the rebuilt fields, first contact where the kinematics put it, Coulomb
 // sliding, agreement with an independent frictionless QP solver, options, Newton effort, failure
 // paths; plus the contact-state classification and the contact-law check it is judged by.
@@ -11,13 +11,13 @@
 #include <memory>
 #include <regex>
 
-#include "src/contact/contact_state.hpp"
-#include "src/core/input_error.hpp"
-#include "src/linalg/spd_factor.hpp"
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/contact_law_check.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "tests/solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/contact/contact_state.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/solver/contact_law_check.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // Atomic output: the target holds either its old content or the complete new one, and no
 // temporary survives a success, a failure or an abandoned write.
-#include "src/io/atomic_file.hpp"
+#include "stcontact/io/atomic_file.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "io/scratch_dir.hpp"
-#include "src/io/output_error.hpp"
+#include "stcontact/io/output_error.hpp"
 
 namespace stc {
 namespace {

@@ -1,6 +1,6 @@
 // The summary.json builder (over nlohmann-json): member order, escaping, exact number round trips,
 // null for what JSON cannot express, and documents an independent parser (python3's json) accepts.
-#include "src/io/json_writer.hpp"
+#include "stcontact/io/json_writer.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 // The run outputs (src/io/run_writer.hpp) of one solution do not depend on the thread count: the VTU
 // frames are written in parallel, each thread with its own solve workspace and files.
-#include "src/io/run_writer.hpp"
+#include "stcontact/io/run_writer.hpp"
 
 #include <gtest/gtest.h>
 
+#include "fixtures/seed_scene.hpp"
 #include "scratch_dir.hpp"
-#include "solver/seed_scene.hpp"
-#include "src/core/threads.hpp"
-#include "src/solver/incremental_solver.hpp"
+#include "stcontact/core/threads.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
 
 namespace {
 

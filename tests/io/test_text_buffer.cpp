@@ -1,6 +1,6 @@
 // TextBuffer (src/io/text_buffer.hpp) writes what an ostream writes: the CSV and VTU files it now
 // builds must stay byte for byte those of the stream writers they replaced.
-#include "src/io/text_buffer.hpp"
+#include "stcontact/io/text_buffer.hpp"
 
 #include <gtest/gtest.h>
 

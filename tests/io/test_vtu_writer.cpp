@@ -1,7 +1,7 @@
 // ParaView output: well-formed XML (checked here and by python3's parser), the exact cell
 // arrays of a two-triangle mesh, as many values per DataArray as its header promises, and
 // collections that list their frames in order.
-#include "src/io/vtu_writer.hpp"
+#include "stcontact/io/vtu_writer.hpp"
 
 #include <gtest/gtest.h>
 

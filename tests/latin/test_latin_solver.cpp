@@ -2,13 +2,13 @@
 // with the incremental solver on small settings, options and termination statuses.
 #include <gtest/gtest.h>
 
-#include "latin/global_stage.hpp"
-#include "latin/indicator.hpp"
-#include "latin/latin_solver.hpp"
-#include "latin/local_stage.hpp"
-#include "src/core/input_error.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/latin/indicator.hpp"
+#include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/latin/local_stage.hpp"
 
 namespace {
 

@@ -5,11 +5,11 @@
 // (tests/linalg/test_spd_factor.cpp: the same columns from any workspace, also concurrently).
 #include <gtest/gtest.h>
 
-#include "latin/global_stage.hpp"
-#include "latin/latin_solver.hpp"
-#include "latin/local_stage.hpp"
-#include "src/core/threads.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/threads.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/latin/local_stage.hpp"
 
 namespace {
 

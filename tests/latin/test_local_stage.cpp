@@ -4,11 +4,11 @@
 
 #include <random>
 
-#include "latin/local_stage.hpp"
-#include "src/problem/problem.hpp"
-#include "src/solver/contact_law_check.hpp"
-#include "solver/hemisphere_scene.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/hemisphere_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/contact_law_check.hpp"
 
 namespace {
 

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "src/core/threads.hpp"
-#include "src/linalg/anderson.hpp"
+#include "stcontact/core/threads.hpp"
+#include "stcontact/linalg/anderson.hpp"
 
 namespace {
 

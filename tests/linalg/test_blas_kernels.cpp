@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <tuple>
 
-#include "src/linalg/blas_kernels.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
 
 // OpenBLAS's dgemm, declared as Eigen's Eigen/src/misc/blas.h does (EIGEN_USE_BLAS builds include
 // it).

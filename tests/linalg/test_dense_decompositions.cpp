@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "src/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
 
 namespace {
 

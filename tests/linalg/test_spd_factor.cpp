@@ -7,11 +7,11 @@
 #include <thread>
 #include <vector>
 
-#include "src/core/input_error.hpp"
-#include "src/core/threads.hpp"
-#include "src/linalg/spd_factor.hpp"
-#include "src/problem/problem.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/core/threads.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace {
 

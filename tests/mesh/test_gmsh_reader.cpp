@@ -10,8 +10,8 @@
 #include <sstream>
 #include <string>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/gmsh_reader.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/gmsh_reader.hpp"
 
 namespace stc {
 namespace {

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/half_ball.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/half_ball.hpp"
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include <numbers>
 #include <string>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/half_ball.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/half_ball.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/mesh/half_disc.hpp"
+#include "stcontact/mesh/half_disc.hpp"
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/half_disc_slab.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/half_disc_slab.hpp"
 
 namespace {
 

@@ -3,9 +3,9 @@
 
 #include <Eigen/Geometry>
 
-#include "src/core/input_error.hpp"
-#include "src/mesh/tet_mesh.hpp"
-#include "tests/mesh/two_tets.hpp"
+#include "mesh/two_tets.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/mesh/tet_mesh.hpp"
 
 using stc::test::twoTets;
 

@@ -1,6 +1,6 @@
 #pragma once
 // Test fixture shared by the tetrahedron mesh and VTU tests.
-#include "src/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/tet_mesh.hpp"
 
 namespace stc::test {
 

@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "pgd/arpack_eigen.hpp"
-#include "src/core/input_error.hpp"
-#include "src/linalg/dense_decompositions.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/pgd/arpack_eigen.hpp"
 
 namespace {
 

@@ -8,13 +8,13 @@
 #include <stdexcept>
 #include <vector>
 
-#include "latin/global_stage.hpp"
-#include "latin/indicator.hpp"
-#include "latin/local_stage.hpp"
-#include "pgd/controlled_global_stage.hpp"
-#include "src/problem/time_subgrid.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/latin/indicator.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
+#include "stcontact/problem/time_subgrid.hpp"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "pgd/energy_factor.hpp"
-#include "pgd/separated_history.hpp"
+#include "stcontact/pgd/energy_factor.hpp"
+#include "stcontact/pgd/separated_history.hpp"
 
 namespace {
 

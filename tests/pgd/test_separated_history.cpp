@@ -2,12 +2,12 @@
 // (pgd/separated_history.hpp) against the eigen-decomposition of the n × m history's Gram matrix.
 #include <gtest/gtest.h>
 
-#include "latin/local_stage.hpp"
-#include "pgd/controlled_global_stage.hpp"
-#include "pgd/separated_history.hpp"
-#include "src/linalg/dense_decompositions.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
+#include "stcontact/pgd/separated_history.hpp"
 
 TEST(SeparatedHistory, EnergySvdEqualsTheSvdOfTheFullHistory) {
   const stc::Problem problem = stc::buildProblem(stc::test::seedScene(31, 41));

@@ -7,12 +7,12 @@
 #include <iostream>
 #include <random>
 
-#include "pgd/displacement_history.hpp"
-#include "pgd/space_time_svd.hpp"
-#include "src/core/input_error.hpp"
-#include "src/linalg/spd_factor.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "tests/solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/pgd/space_time_svd.hpp"
 
 namespace {
 

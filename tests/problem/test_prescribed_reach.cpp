@@ -6,9 +6,9 @@
 #include <cmath>
 #include <vector>
 
-#include "solver/seed_scene.hpp"
-#include "src/problem/prescribed_reach.hpp"
-#include "src/problem/problem.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/problem/prescribed_reach.hpp"
+#include "stcontact/problem/problem.hpp"
 
 namespace {
 

@@ -3,9 +3,9 @@
 
 #include <Eigen/SparseCholesky>
 
-#include "src/core/input_error.hpp"
-#include "src/problem/problem.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/problem/problem.hpp"
 
 TEST(Problem, PrescribedDofsFollowTheirHistories) {
   const stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 11));  // t_k = k/10

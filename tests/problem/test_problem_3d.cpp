@@ -3,10 +3,10 @@
 // incremental solver and by LATIN to the same answer.
 #include <gtest/gtest.h>
 
-#include "src/core/input_error.hpp"
-#include "src/problem/problem.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
 
 namespace {
 

@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "solver/seed_scene.hpp"
-#include "src/problem/problem.hpp"
-#include "src/problem/time_subgrid.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/problem/time_subgrid.hpp"
 
 TEST(TimeSubgrid, EveryNthInstantKeepsTheFirstAndTheLast) {
   EXPECT_EQ(stc::everyNthInstant(9, 4), (std::vector<int>{0, 4, 8}));

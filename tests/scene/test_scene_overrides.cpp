@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "src/core/input_error.hpp"
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace stc {
 namespace {

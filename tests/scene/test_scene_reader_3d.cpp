@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "src/core/input_error.hpp"
-#include "src/scene/scene_reader.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace stc {
 namespace {

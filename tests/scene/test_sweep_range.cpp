@@ -2,8 +2,8 @@
 // included, written so that the scene reader reads back what is solved; malformed ranges refused.
 #include <gtest/gtest.h>
 
-#include "src/core/input_error.hpp"
-#include "src/scene/sweep_range.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/scene/sweep_range.hpp"
 
 TEST(SweepRange, EvenlySpacedValuesWithBothEnds) {
   const stc::SweepRange r = stc::parseSweepRange("contact.friction=0.05:0.5:10");

@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "src/solver/calibrated_estimate.hpp"
-#include "src/solver/error_estimate.hpp"
+#include "stcontact/solver/calibrated_estimate.hpp"
+#include "stcontact/solver/error_estimate.hpp"
 
 namespace {
 

@@ -4,14 +4,14 @@
 
 #include <cmath>
 
-#include "latin/global_stage.hpp"
-#include "latin/local_stage.hpp"
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/equilibrium_energy.hpp"
-#include "src/solver/error_estimate.hpp"
-#include "src/solver/error_reference.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/error_reference.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/solver/equilibrium_energy.hpp"
+#include "stcontact/solver/error_estimate.hpp"
 
 namespace {
 

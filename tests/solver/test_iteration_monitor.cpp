@@ -3,7 +3,7 @@
 
 #include <limits>
 
-#include "src/solver/iteration_monitor.hpp"
+#include "stcontact/solver/iteration_monitor.hpp"
 
 namespace {
 stc::InterfaceHistory zeros() { return stc::InterfaceHistory::zerosWithRows(2, 2); }

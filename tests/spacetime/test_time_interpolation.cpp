@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "src/spacetime/time_interpolation.hpp"
+#include "stcontact/spacetime/time_interpolation.hpp"
 
 namespace {
 

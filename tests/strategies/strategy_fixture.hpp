@@ -3,9 +3,9 @@
 // error is measured against; `solve` runs a strategy by name at a tolerance.
 #include <string>
 
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
 
 namespace stc::test {
 

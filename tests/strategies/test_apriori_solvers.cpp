@@ -8,11 +8,11 @@
 #include <iostream>
 #include <string>
 
-#include "fas/apriori_basis.hpp"
-#include "latin/local_stage.hpp"
-#include "pgd/controlled_global_stage.hpp"
-#include "pgd/separated_history.hpp"
-#include "solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/fas/apriori/apriori_basis.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
+#include "stcontact/pgd/separated_history.hpp"
 #include "strategies/strategy_fixture.hpp"
 
 namespace {

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "stcontact/scene/scene_reader.hpp"
 #include "strategies/strategy_fixture.hpp"
-#include "src/scene/scene_reader.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Every strategy on the small 3D seed scene (tests/solver/hemisphere_scene.hpp), against the
+// Every strategy on the small 3D seed scene (tests/fixtures/hemisphere_scene.hpp), against the
 // incremental solver's cone law: the same code above the contact interface as in 2D, only the
 // interface has three rows per node. The full-size study is docs/three_d.md.
 #include <gtest/gtest.h>
@@ -6,10 +6,10 @@
 #include <iostream>
 #include <string>
 
-#include "solver/hemisphere_scene.hpp"
-#include "solver/slab_scene.hpp"
-#include "src/core/solver_settings.hpp"
-#include "src/solver/contact_law_check.hpp"
+#include "fixtures/hemisphere_scene.hpp"
+#include "fixtures/slab_scene.hpp"
+#include "stcontact/core/solver_settings.hpp"
+#include "stcontact/solver/contact_law_check.hpp"
 #include "strategies/strategy_fixture.hpp"
 
 namespace {

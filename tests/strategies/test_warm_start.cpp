@@ -8,10 +8,10 @@
 #include <memory>
 #include <stdexcept>
 
-#include "solver/seed_scene.hpp"
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "src/strategies/solve_by_name.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/strategies/solve_by_name.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // The report's files from a hand-made comparison: well-formed markdown tables, "not reached" where
 // a strategy stops short of a target, one CSV row per point and per strategy with the header's
 // number of cells.
-#include "src/report/comparison_writer.hpp"
+#include "stcontact/studies/comparison_writer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "report/text_lines.hpp"
+#include "studies/text_lines.hpp"
 
 namespace stc {
 namespace {

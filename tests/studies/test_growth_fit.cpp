@@ -1,6 +1,6 @@
 // The growth-exponent fit of the scaling study on data with a known exponent, a known scatter (so a
 // known standard error) and a known crossing.
-#include "src/report/growth_fit.hpp"
+#include "stcontact/studies/growth_fit.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Localisation of spatial modes at the contact zone (src/report/mode_localisation.hpp): the element
+// Localisation of spatial modes at the contact zone (studies/mode_localisation.hpp): the element
 // energies add up to ΥᵀKΥ, rigid motions carry none, a uniform strain spreads its energy like the
 // area, a field living on the contact zone is fully inside the band, the seed's contact zone is the
 // closed arc segment, and the seed's observation (§3.2) that the higher modes localise at the contact.
@@ -6,13 +6,13 @@
 
 #include <random>
 
-#include "pgd/displacement_history.hpp"
-#include "pgd/space_time_svd.hpp"
-#include "src/core/input_error.hpp"
-#include "src/linalg/spd_factor.hpp"
-#include "src/report/mode_localisation.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "tests/solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/pgd/space_time_svd.hpp"
+#include "stcontact/studies/mode_localisation.hpp"
 
 namespace {
 

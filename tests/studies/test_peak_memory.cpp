@@ -1,5 +1,5 @@
 // The peak-memory probe: after a reset, the peak follows the work done since, not the process's past.
-#include "src/report/peak_memory.hpp"
+#include "stcontact/studies/peak_memory.hpp"
 
 #include <gtest/gtest.h>
 

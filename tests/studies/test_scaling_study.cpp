@@ -1,7 +1,7 @@
 // The statistics of a scaling study on hand-made measurements with known power laws: series order,
 // the reach status, the exponents fitted from the times, the crossover against incremental (inside
 // the sizes and extrapolated) and the memory growth per instant.
-#include "src/report/scaling_study.hpp"
+#include "stcontact/studies/scaling_study.hpp"
 
 #include <gtest/gtest.h>
 

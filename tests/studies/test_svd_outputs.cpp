@@ -1,4 +1,4 @@
-// The files of `stcontact svd` (src/report/svd_tables.hpp, src/report/svd_figures.hpp): table layouts, the √σ
+// The files of `stcontact svd` (studies/svd_tables.hpp, studies/svd_figures.hpp): table layouts, the √σ
 // scaling of the seed's figure captions, the deformed-mesh data, and the gnuplot run that moves
 // finished PNGs into place (skipped where gnuplot is not installed).
 #include <gtest/gtest.h>
@@ -9,15 +9,15 @@
 #include <fstream>
 #include <sstream>
 
-#include "pgd/displacement_history.hpp"
-#include "src/core/input_error.hpp"
-#include "src/io/atomic_file.hpp"
-#include "src/linalg/spd_factor.hpp"
-#include "src/report/svd_figures.hpp"
-#include "src/report/svd_tables.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "report/text_lines.hpp"
-#include "tests/solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/studies/svd_figures.hpp"
+#include "stcontact/studies/svd_tables.hpp"
+#include "studies/text_lines.hpp"
 
 namespace {
 

@@ -1,14 +1,14 @@
 // The statistics of a work-precision comparison on hand-made histories: the median, the first point
 // reaching a target error, the median over repeats of the work to reach it, the repeat drawn, and the
 // copy of the measured errors onto timed runs of the same solver.
-#include "src/report/work_precision.hpp"
+#include "stcontact/studies/work_precision.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "src/report/comparison.hpp"
+#include "stcontact/studies/comparison.hpp"
 
 namespace stc {
 namespace {

@@ -1,10 +1,10 @@
-#include "tests/validation/point_contact_3d.hpp"
+#include "validation/point_contact_3d.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "tests/solver/hemisphere_scene.hpp"
+#include "fixtures/hemisphere_scene.hpp"
 
 namespace stc::validation {
 

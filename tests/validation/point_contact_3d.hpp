@@ -6,9 +6,9 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "src/contact/contact_state.hpp"
-#include "src/problem/problem.hpp"
-#include "src/solver/solve_result.hpp"
+#include "stcontact/contact/contact_state.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
 namespace stc::validation {
 

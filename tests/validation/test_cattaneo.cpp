@@ -24,9 +24,9 @@
 #include <cmath>
 #include <iostream>
 
-#include "src/solver/incremental_solver.hpp"
-#include "tests/solver/seed_scene.hpp"
-#include "tests/validation/validation_support.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "validation/validation_support.hpp"
 
 namespace stc::validation {
 namespace {

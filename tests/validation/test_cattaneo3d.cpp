@@ -17,8 +17,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "src/solver/incremental_solver.hpp"
-#include "tests/validation/point_contact_3d.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "validation/point_contact_3d.hpp"
 
 namespace stc::validation {
 namespace {

@@ -8,8 +8,8 @@
 #include <iostream>
 #include <vector>
 
-#include "src/solver/contact_law_check.hpp"
-#include "tests/validation/validation_support.hpp"
+#include "stcontact/solver/contact_law_check.hpp"
+#include "validation/validation_support.hpp"
 
 namespace stc::validation {
 namespace {

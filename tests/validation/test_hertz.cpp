@@ -8,10 +8,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "latin/latin_solver.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "tests/solver/seed_scene.hpp"
-#include "tests/validation/validation_support.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/latin_solver.hpp"
+#include "validation/validation_support.hpp"
 
 namespace stc::validation {
 namespace {

@@ -1,5 +1,5 @@
 // Validation: LATIN (latin/latin_solver.hpp) against the incremental solver
-// (src/solver/incremental_solver.hpp) on the full seed scene (docs/method.md §6: arc_nodes 101, steps 201).
+// (src/incremental/incremental_solver.hpp) on the full seed scene (docs/method.md §6: arc_nodes 101, steps 201).
 // Both solve the same time-discrete problem (docs/method.md §1: implicit Coulomb, unique solution), by
 // unrelated methods: a space-time fixed point on the whole grid versus a semismooth Newton method
 // marching in time. Agreement to 1e-6 is therefore a check of both.
@@ -9,9 +9,9 @@
 #include <cmath>
 #include <iostream>
 
-#include "src/solver/condensed_interface.hpp"
-#include "src/solver/error_reference.hpp"
-#include "tests/validation/validation_support.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/error_reference.hpp"
+#include "validation/validation_support.hpp"
 
 namespace stc::validation {
 namespace {

@@ -1,5 +1,5 @@
 // The same physics through both code paths: the seed half-disc extruded along z with u_z = 0 on
-// both faces (tests/solver/slab_scene.hpp) is in plane strain, so its reactions per unit thickness
+// both faces (tests/fixtures/slab_scene.hpp) is in plane strain, so its reactions per unit thickness
 // are the 2D seed scene's. They cannot be equal to round-off: the P1 tetrahedra of a prism do not
 // span the same fields as its triangle × z, and the contact nodes inside the slab may move along z.
 // The goal is agreement within the mesh error of the 2D solution, estimated as the change of its
@@ -10,9 +10,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "src/solver/incremental_solver.hpp"
-#include "tests/solver/slab_scene.hpp"
-#include "tests/validation/validation_support.hpp"
+#include "fixtures/slab_scene.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "validation/validation_support.hpp"
 
 namespace stc::validation {
 namespace {

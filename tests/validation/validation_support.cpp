@@ -1,11 +1,11 @@
-#include "tests/validation/validation_support.hpp"
+#include "validation/validation_support.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "latin/latin_solver.hpp"
-#include "src/solver/incremental_solver.hpp"
-#include "tests/solver/seed_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/latin_solver.hpp"
 
 namespace stc::validation {
 

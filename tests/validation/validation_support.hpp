@@ -5,10 +5,10 @@
 #include <memory>
 #include <vector>
 
-#include "src/contact/contact_state.hpp"
-#include "src/linalg/spd_factor.hpp"
-#include "src/problem/problem.hpp"
-#include "src/solver/solve_result.hpp"
+#include "stcontact/contact/contact_state.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
 namespace stc::validation {
 

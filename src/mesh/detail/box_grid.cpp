@@ -1,4 +1,4 @@
-#include "src/mesh/detail/box_grid.hpp"
+#include "stcontact/mesh/detail/box_grid.hpp"
 
 #include <Eigen/Geometry>
 #include <array>

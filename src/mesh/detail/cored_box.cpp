@@ -1,11 +1,11 @@
-#include "src/mesh/detail/cored_box.hpp"
+#include "stcontact/mesh/detail/cored_box.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "src/mesh/detail/box_grid.hpp"
-#include "src/mesh/detail/prism_split.hpp"
+#include "stcontact/mesh/detail/box_grid.hpp"
+#include "stcontact/mesh/detail/prism_split.hpp"
 
 namespace stc::detail {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // The locally refined box of the half-ball generator with a core (src/mesh/half_ball.hpp,
 // HalfBallOptions::core): a uniform core around the bottom pole wrapped in geometric shells.
-#include "src/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/tet_mesh.hpp"
 
 namespace stc::detail {
 

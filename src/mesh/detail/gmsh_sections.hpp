@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "src/core/input_error.hpp"
+#include "stcontact/core/input_error.hpp"
 
 namespace stc::detail {
 

@@ -1,4 +1,4 @@
-#include "src/scene/detail/array_value_guard.hpp"
+#include "stcontact/scene/detail/array_value_guard.hpp"
 
 #include <cstddef>
 #include <vector>

@@ -8,7 +8,7 @@
 // This guard finds that '}' first and reports the syntax error itself.
 #include <string_view>
 
-#include "src/scene/detail/scene_errors.hpp"
+#include "stcontact/scene/detail/scene_errors.hpp"
 
 namespace stc::detail {
 

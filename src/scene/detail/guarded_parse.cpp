@@ -1,11 +1,11 @@
-#include "src/scene/detail/guarded_parse.hpp"
+#include "stcontact/scene/detail/guarded_parse.hpp"
 
 #include <string>
 
-#include "src/core/input_error.hpp"
-#include "src/scene/detail/array_value_guard.hpp"
-#include "src/scene/detail/non_ascii_guard.hpp"
-#include "src/scene/detail/table_header_guard.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/scene/detail/array_value_guard.hpp"
+#include "stcontact/scene/detail/non_ascii_guard.hpp"
+#include "stcontact/scene/detail/table_header_guard.hpp"
 
 namespace stc::detail {
 

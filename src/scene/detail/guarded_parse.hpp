@@ -8,7 +8,7 @@
 #include <optional>
 #include <string_view>
 
-#include "src/scene/detail/scene_errors.hpp"
+#include "stcontact/scene/detail/scene_errors.hpp"
 
 namespace stc::detail {
 

@@ -1,4 +1,4 @@
-#include "src/scene/detail/non_ascii_guard.hpp"
+#include "stcontact/scene/detail/non_ascii_guard.hpp"
 
 #include <cstddef>
 #include <string>

@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-#include "src/scene/detail/scene_errors.hpp"
+#include "stcontact/scene/detail/scene_errors.hpp"
 
 namespace stc::detail {
 

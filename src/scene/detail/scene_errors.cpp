@@ -1,11 +1,11 @@
-#include "src/scene/detail/scene_errors.hpp"
+#include "stcontact/scene/detail/scene_errors.hpp"
 
 #include <algorithm>
 
 #include <charconv>
 #include <cmath>
 
-#include "src/core/input_error.hpp"
+#include "stcontact/core/input_error.hpp"
 
 namespace stc::detail {
 

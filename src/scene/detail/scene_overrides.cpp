@@ -1,6 +1,6 @@
-#include "src/scene/detail/scene_overrides.hpp"
+#include "stcontact/scene/detail/scene_overrides.hpp"
 
-#include "src/scene/detail/guarded_parse.hpp"
+#include "stcontact/scene/detail/guarded_parse.hpp"
 
 #include <cctype>
 #include <charconv>

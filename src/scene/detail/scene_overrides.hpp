@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "src/scene/detail/scene_errors.hpp"
+#include "stcontact/scene/detail/scene_errors.hpp"
 
 namespace stc::detail {
 

@@ -1,4 +1,4 @@
-#include "src/scene/detail/table_header_guard.hpp"
+#include "stcontact/scene/detail/table_header_guard.hpp"
 
 #include <toml++/toml.h>
 

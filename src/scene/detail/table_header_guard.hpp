@@ -9,7 +9,7 @@
 // itself, so the parser never sees one.
 #include <string_view>
 
-#include "src/scene/detail/scene_errors.hpp"
+#include "stcontact/scene/detail/scene_errors.hpp"
 
 namespace stc::detail {
 

@@ -1,4 +1,4 @@
-#include "src/scene/detail/table_view.hpp"
+#include "stcontact/scene/detail/table_view.hpp"
 
 #include <algorithm>
 #include <cmath>

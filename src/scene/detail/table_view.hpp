@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "src/scene/detail/scene_errors.hpp"
+#include "stcontact/scene/detail/scene_errors.hpp"
 
 namespace stc::detail {
 

@@ -1,4 +1,4 @@
-// Nested iteration in time (src/strategies/nested_in_time.hpp): `fas-apriori` on a long grid starts
+// Nested iteration in time (fas/apriori/nested_in_time.hpp): `fas-apriori` on a long grid starts
 // from its own solution on every q-th instant, and still stops at the tolerance of the whole grid,
 // measured against the incremental reference on the whole grid.
 #include <gtest/gtest.h>
@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/seed_scene.hpp"
-#include "src/strategies/nested_in_time.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/fas/apriori/nested_in_time.hpp"
 #include "strategies/strategy_fixture.hpp"
 
 namespace {

@@ -1,4 +1,4 @@
-// `fas-apriori` on its contact zone (src/strategies/reduced_interface.hpp): the zone comes from the
+// `fas-apriori` on its contact zone (fas/apriori/reduced_interface.hpp): the zone comes from the
 // prescribed motion or a first relaxation, the nodes left out are checked open, the result lifted to
 // the whole interface is an equilibrated iterate of the whole problem, and a zone that misses contact
 // nodes is completed by the check.
@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "solver/seed_scene.hpp"
-#include "src/problem/prescribed_reach.hpp"
-#include "src/strategies/reduced_interface.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/fas/apriori/reduced_interface.hpp"
+#include "stcontact/problem/prescribed_reach.hpp"
 #include "strategies/strategy_fixture.hpp"
 
 namespace {

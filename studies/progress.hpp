@@ -1,0 +1,43 @@
+#pragma once
+// What a study shows while it runs, passed in by the program that runs it: the command line draws a
+// line on a terminal (cli/terminal_progress.hpp), the Python module shows nothing (its own callback
+// sees the records). A study asks for one callback per run and ends the run when it returns.
+#include <string>
+
+#include "stcontact/solver/solve_summary.hpp"
+
+namespace stc {
+
+class ProgressReporter {
+ public:
+  virtual ~ProgressReporter() = default;
+  /// A run named `label` starts: the callback its solver calls after every record (it never stops
+  /// the run).
+  virtual IterationCallback begin(const std::string& label) = 0;
+  /// The run ended: clears what the callback drew.
+  virtual void end() = 0;
+  /// A line of result once an item of the study is done (a strategy, a value of a sweep).
+  virtual void note(const std::string& line) = 0;
+};
+
+/// One run's progress: begins on construction, ends on destruction; no reporter, no progress.
+class RunProgress {
+ public:
+  RunProgress(ProgressReporter* reporter, const std::string& label)
+      : reporter_(reporter), callback_(reporter ? reporter->begin(label) : IterationCallback{}) {}
+  ~RunProgress() {
+    if (reporter_) reporter_->end();
+  }
+  RunProgress(const RunProgress&) = delete;
+  RunProgress& operator=(const RunProgress&) = delete;
+  /// The callback to pass to the solver (empty without a reporter).
+  const IterationCallback& callback() const { return callback_; }
+  /// Shows `record` (true: the run goes on); without a reporter, nothing.
+  bool show(const IterationRecord& record) const { return !callback_ || callback_(record); }
+
+ private:
+  ProgressReporter* reporter_;
+  IterationCallback callback_;
+};
+
+}  // namespace stc

@@ -1,0 +1,48 @@
+#include "stcontact/studies/reference.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "stcontact/incremental/incremental_solver.hpp"
+
+namespace stc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+}  // namespace
+
+ReferenceSolution computeReference(const Problem& problem, ProgressReporter* progress) {
+  ReferenceSolution out;
+  const auto start = Clock::now();
+  SolveResult ref;
+  {
+    const RunProgress run(progress, "reference (incremental)");
+    ref = solveIncremental(problem, {}, run.callback());
+  }
+  out.solve_s = secondsSince(start);
+  if (!ref.summary.converged())
+    throw std::runtime_error("the incremental reference did not converge: " + ref.summary.message);
+  auto factor = std::make_shared<const SpdFactor>(problem.stiffness_free, "K_ff");
+  out.factor_nonzeros = factor->factorNonZeros();
+  out.reference = std::make_unique<ErrorReference>(problem, std::move(factor), std::move(ref.interface.lambda));
+  out.total_s = secondsSince(start);
+  return out;
+}
+
+// A reference that fails (Newton stops at some instant) is not an internal failure: the solve
+// goes on without a true error, and the warning says why.
+std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
+                                               std::string& warning) {
+  SolveResult ref = solveIncremental(problem, {}, callback);
+  if (!ref.summary.converged()) {
+    warning = "no true error: the incremental reference did not converge (" + ref.summary.message + ")";
+    return nullptr;
+  }
+  auto factor = std::make_shared<const SpdFactor>(problem.stiffness_free, "K_ff");
+  return std::make_unique<ErrorReference>(problem, std::move(factor), std::move(ref.interface.lambda));
+}
+
+}  // namespace stc

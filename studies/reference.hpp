@@ -1,0 +1,35 @@
+#pragma once
+// The incremental reference of a solve or a study: the exact solution on the same mesh and grid,
+// and the true-error measure on it (src/incremental/error_reference.hpp; docs/method.md §2).
+#include <memory>
+#include <string>
+
+#include "stcontact/incremental/error_reference.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/studies/progress.hpp"
+
+namespace stc {
+
+/// `stcontact solve` and the Python module's solve compute no incremental reference (no true error)
+/// beyond this many contact nodes: the reference solve and its per-iteration error evaluation become
+/// a noticeable cost.
+inline constexpr int kMaxReferenceContactNodes = 1000;
+
+struct ReferenceSolution {
+  std::unique_ptr<ErrorReference> reference;
+  double solve_s = 0.0;  ///< the incremental solve alone
+  double total_s = 0.0;  ///< with the error measure's set-up (factor of K_ff, Delassus operator)
+  double factor_nonzeros = 0.0;  ///< entries of the Cholesky factor of K_ff (SpdFactor::factorNonZeros)
+};
+
+/// A study's reference: solves `problem` with the incremental solver and builds the true-error
+/// measure on it; throws std::runtime_error when the incremental solve does not converge.
+ReferenceSolution computeReference(const Problem& problem, ProgressReporter* progress);
+
+/// A solve's reference: the same, or nullptr with the reason in `warning` when the incremental solve
+/// stops early (the solve then goes on without a true error). `callback` sees the incremental
+/// solver's records (progress, Ctrl-C).
+std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
+                                               std::string& warning);
+
+}  // namespace stc
