@@ -8,7 +8,7 @@
 namespace stc::cli {
 
 int runCheck(const CheckArgs& args) {
-  const Scene scene = loadScene(args.scene, args.overrides);
+  const Scene scene = readScene(args.scene, args.overrides);
   const Problem p = buildProblem(scene);
   const auto& c = p.contact;
   std::cout << "scene            " << scene.name << " (" << args.scene << ")\n"
@@ -27,7 +27,7 @@ int runCheck(const CheckArgs& args) {
             << "search direction k = kappa E l_i / L: kappa = " << scene.solver.search_scale << ", L = "
             << p.length_scale << ", kappa E / L = " << c.search_scale_per_length << ", k in ["
             << c.search_direction.minCoeff() << ", " << c.search_direction.maxCoeff() << "]\n"
-            << "solver           " << scene.solver.name << ", tolerance " << scene.solver.tolerance << "\n";
+            << "solver           " << scene.solver.name() << ", tolerance " << scene.solver.tolerance() << "\n";
   return 0;
 }
 

@@ -35,10 +35,6 @@ struct SvdArgs {
   std::string solver = "incremental";   ///< the only one accepted: the analysis of the exact solution
 };
 
-/// readScene (src/scene/scene_reader.hpp), then each of the scene's warnings (deprecated keys) on
-/// standard error as "warning: FILE: MESSAGE", once per message and run.
-Scene loadScene(const std::string& file, const std::vector<std::string>& overrides);
-
 /// Prints the model's sizes; returns the exit status.
 int runCheck(const CheckArgs& args);
 /// Solves and writes the outputs; returns 0 converged, 2 not converged.

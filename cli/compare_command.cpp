@@ -14,7 +14,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/scene/scene_reader.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/compare_plots.hpp"
 #include "stcontact/studies/compare_runs.hpp"
 #include "stcontact/studies/comparison_writer.hpp"
@@ -23,11 +23,9 @@
 namespace stc::cli {
 namespace {
 
-std::string commandLine(const CompareArgs& a, const std::vector<std::string>& solvers,
+std::string commandLine(const CompareArgs& a, const std::vector<Strategy>& solvers,
                         const std::filesystem::path& out) {
-  std::string joined;
-  for (const auto& s : solvers) joined += (joined.empty() ? "" : ",") + s;
-  std::string line = "stcontact compare " + a.scene + " --solvers " + joined + " --out " + out.string() +
+  std::string line = "stcontact compare " + a.scene + " --solvers " + joinedNames(solvers) + " --out " + out.string() +
                      " --repeats " + std::to_string(a.repeats);
   for (const auto& o : a.overrides) line += " --set " + o;
   if (a.tolerance) line += " --tol " + shortNumber(*a.tolerance, 6);
@@ -58,11 +56,11 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args) {
 
 int runCompare(const CompareArgs& args) {
   if (args.repeats < 1) throw InputError("--repeats must be >= 1");
-  Scene scene = loadScene(args.scene, args.overrides);
-  const std::vector<std::string> solvers = solverList(args.solvers);
+  Scene scene = readScene(args.scene, args.overrides);
+  const std::vector<Strategy> solvers = solverList(args.solvers);
   if (args.tolerance) {
     if (!(*args.tolerance > 0.0)) throw InputError("--tol must be > 0");
-    scene.solver.tolerance = *args.tolerance;
+    scene.solver.setTolerance(*args.tolerance);
   }
   const std::filesystem::path out =
       args.out ? std::filesystem::path(*args.out) : std::filesystem::path("results") / scene.name / "compare";
@@ -74,7 +72,7 @@ int runCompare(const CompareArgs& args) {
   const ReferenceSolution reference = computeReference(problem, &progress);
   comparison.reference_s = reference.total_s;
   const CompareContext context{problem, scene.solver, reference, args.repeats, &progress};
-  for (const std::string& solver : solvers) {
+  for (const Strategy solver : solvers) {
     comparison.strategies.push_back(measureStrategy(solver, context));
     progress.note(strategyLine(comparison.strategies.back()));
   }

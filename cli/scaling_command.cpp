@@ -128,9 +128,9 @@ Scene sceneAt(const ScalingArgs& a, const MeshSeries& mesh, const PlannedSize& s
   std::vector<std::string> overrides = a.overrides;
   if (size.in_mesh) overrides.push_back("mesh." + mesh.parameter + "=" + std::to_string(size.mesh_size));
   overrides.push_back("time.steps=" + std::to_string(size.steps));
-  Scene scene = loadScene(a.scene, overrides);
-  scene.solver.tolerance = a.tolerance;
-  if (a.max_iterations) scene.solver.max_iterations = *a.max_iterations;
+  Scene scene = readScene(a.scene, overrides);
+  scene.solver.setTolerance(a.tolerance);
+  if (a.max_iterations) scene.solver.setMaxIterations(*a.max_iterations);
   return scene;
 }
 
@@ -169,7 +169,7 @@ ScalingPoint measureSize(const ScalingArgs& a, const ScalingStudy& study, const 
   context.stop.target_error = a.target_error;
   context.stop.time_cap_s = a.time_cap_s;
   for (const std::string& solver : study.solvers) {
-    p.comparison.strategies.push_back(measureStrategy(solver, context));
+    p.comparison.strategies.push_back(measureStrategy(strategyNamed(solver), context));
     if (!a.quiet) printStrategy(study, p, p.comparison.strategies.back());
   }
   p.comparison.memory_method = describeMemoryMethod(p.comparison.strategies.front().memory.since_reset);
@@ -218,11 +218,11 @@ CLI::App* addScalingCommand(CLI::App& app, ScalingArgs& a) {
 int runScaling(const ScalingArgs& a) {
   const auto start = Clock::now();
   validate(a);
-  const Scene base = loadScene(a.scene, a.overrides);
+  const Scene base = readScene(a.scene, a.overrides);
   const MeshSeries mesh = meshSeries(a, base);
   const std::vector<PlannedSize> plan = planSizes(mesh, a, base);
   ScalingStudy study;
-  study.solvers = solverList(a.solvers);
+  study.solvers = strategyNamesOf(solverList(a.solvers));
   const std::filesystem::path out =
       a.out ? std::filesystem::path(*a.out) : std::filesystem::path("results") / base.name / "scaling";
   ensureWritableDirectory(out);  // fail before the runs, not after

@@ -9,7 +9,7 @@
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/run_writer.hpp"
 #include "stcontact/scene/scene_reader.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/reference.hpp"
 #include "stcontact/studies/solve_options.hpp"
 #include "stcontact/version.hpp"
@@ -28,23 +28,22 @@ std::unique_ptr<ErrorReference> referenceOrWarning(const Problem& problem, Termi
   return reference;
 }
 
-SolveResult runSolver(const std::string& name, const Problem& problem, const Scene& scene,
-                      const ErrorReference* reference, TerminalProgress& progress) {
-  const RunProgress run(&progress, name);
-  StrategyInputs inputs;
+SolveResult runSolver(const Problem& problem, const Scene& scene, const ErrorReference* reference,
+                      TerminalProgress& progress) {
+  const RunProgress run(&progress, std::string(scene.solver.name()));
+  SolveInputs inputs;
   inputs.reference = reference;
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
   inputs.callback = run.callback();
   inputs.spatial_modes = false;  // not written
-  return solveByName(name, problem, scene.solver, inputs);
+  return solve(problem, scene.solver, inputs);
 }
 
 }  // namespace
 
 int runSolve(const SolveArgs& args) {
-  const Scene scene = loadScene(args.scene, withSolverOptions(args.overrides, args.solver, args.tolerance, args.max_iterations));
-  const std::string solver = scene.solver.name;
-  requireAvailable(solver);
+  const Scene scene = readScene(args.scene, withSolverOptions(args.overrides, args.solver, args.tolerance, args.max_iterations));
+  const std::string solver(scene.solver.name());
   const std::filesystem::path out = args.out ? std::filesystem::path(*args.out)
                                              : std::filesystem::path("results") / scene.name / solver;
   const Problem problem = buildProblem(scene);  // bad input stops here, before anything is created
@@ -52,9 +51,9 @@ int runSolve(const SolveArgs& args) {
 
   TerminalProgress progress(args.quiet);
   std::unique_ptr<ErrorReference> reference;
-  if (solver != "incremental" && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes)
+  if (scene.solver.strategy != Strategy::Incremental && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes)
     reference = referenceOrWarning(problem, progress);
-  const SolveResult result = runSolver(solver, problem, scene, reference.get(), progress);
+  const SolveResult result = runSolver(problem, scene, reference.get(), progress);
   writeRunOutputs(out, problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
 
   if (!args.quiet) {

@@ -180,7 +180,7 @@ void report(const std::filesystem::path& out, const Problem& problem, const Anal
 }  // namespace
 
 int runSvd(const SvdArgs& args) {
-  const Scene scene = loadScene(args.scene, args.overrides);
+  const Scene scene = readScene(args.scene, args.overrides);
   if (args.solver != "incremental")
     throw InputError("svd analyses the incremental solution: --solver must be 'incremental', not '" + args.solver +
                      "'");

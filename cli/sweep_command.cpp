@@ -12,7 +12,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/scene/scene_reader.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/gnuplot_runner.hpp"
 #include "stcontact/studies/number_format.hpp"
 #include "stcontact/studies/solve_options.hpp"
@@ -44,7 +44,7 @@ std::vector<Scene> valueScenes(const SweepArgs& args, const SweepRange& range, S
   for (std::size_t i = 0; i < range.values.size(); ++i) {
     std::vector<std::string> overrides = common;
     overrides.push_back(range.override(i));
-    scenes.push_back(loadScene(args.scene, overrides));
+    scenes.push_back(readScene(args.scene, overrides));
     const Problem problem = buildProblem(scenes.back());
     if (i > 0) continue;
     sweep.n_dofs = problem.numDofs();
@@ -55,9 +55,8 @@ std::vector<Scene> valueScenes(const SweepArgs& args, const SweepRange& range, S
 }
 
 std::string solverOf(const Scene& first) {
-  const std::string solver = first.solver.name;
-  requireAvailable(solver);
-  if (solver == "incremental")
+  const std::string solver(first.solver.name());
+  if (first.solver.strategy == Strategy::Incremental)
     throw InputError("--solver incremental: a sweep compares warm and cold starts of an iterative strategy, "
                      "and the incremental solver always starts from the unloaded state");
   return solver;
@@ -79,7 +78,7 @@ void describe(Sweep& s, const SweepArgs& args, const SweepRange& range, const Sc
   s.command = commandLine(args, solver, out);
   s.key = range.key;
   s.solver = solver;
-  s.tolerance = first.solver.tolerance;
+  s.tolerance = first.solver.tolerance();
   s.environment = describeRunEnvironment();
 }
 
@@ -129,7 +128,7 @@ int runSweep(const SweepArgs& args) {
   describe(sweep, args, range, scenes.front(), solver, out);
 
   TerminalProgress progress(args.quiet);
-  const SweepSettings settings{solver, !args.no_independent,
+  const SweepSettings settings{strategyNamed(solver), !args.no_independent,
                                args.write_solutions ? std::optional<fs::path>(out) : std::nullopt, &progress};
   WarmChain chain;
   for (std::size_t i = 0; i < scenes.size(); ++i) sweep.points.push_back(chain.solveValue(scenes[i], range, i, settings));

@@ -32,12 +32,13 @@
 #include "stcontact/fas/apriori/apriori_basis.hpp"
 #include "stcontact/fas/fas_solver.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/error_reference.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/pgd/basis_verification.hpp"
 #include "stcontact/pgd/displacement_history.hpp"
 #include "stcontact/scene/scene_reader.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/gnuplot_runner.hpp"
 
 namespace fs = std::filesystem;
@@ -104,17 +105,17 @@ struct Run {
 };
 
 Run runStrategy(const Setup& st, const std::string& name, int repeats) {
-  stc::StrategyInputs with_error;
+  stc::SolveInputs with_error;
   with_error.reference = st.reference.get();
   with_error.converged_lambda = &st.incremental.interface.lambda;
   with_error.spatial_modes = false;
-  Run run{name, stc::solveByName(name, st.problem, st.scene.solver, with_error).summary, 0.0};
-  stc::StrategyInputs timed;
+  Run run{name, stc::solve(stc::strategyNamed(name), st.problem, st.scene.solver, with_error).summary, 0.0};
+  stc::SolveInputs timed;
   timed.converged_lambda = &st.incremental.interface.lambda;
   timed.spatial_modes = false;  // the verification below solves once more for them
   std::vector<double> times;
   for (int i = 0; i < repeats; ++i)
-    times.push_back(stc::solveByName(name, st.problem, st.scene.solver, timed).summary.wall_s);
+    times.push_back(stc::solve(stc::strategyNamed(name), st.problem, st.scene.solver, timed).summary.wall_s);
   run.median_s = median(times);
   return run;
 }
@@ -150,7 +151,7 @@ struct Verification {
 Verification verify(const Setup& st) {
   // The energy modes of the a priori expansion at the end of the solve (pgd/separated_history.hpp):
   // what the coarse space takes its leading modes from.
-  const Eigen::MatrixXd apriori = stc::solveByName("fas-apriori", st.problem, st.scene.solver).spatial_modes;
+  const Eigen::MatrixXd apriori = stc::solve(stc::strategyNamed("fas-apriori"), st.problem, st.scene.solver).spatial_modes;
   const Eigen::MatrixXd U = stc::displacementsFromForces(st.problem, *st.K, st.incremental.interface.lambda);
   const Eigen::MatrixXd svd = stc::fas::aposterioriModes(st.problem, *st.K, st.incremental.interface.lambda, 20);
   const auto& M = st.problem.stiffness_free;
@@ -182,9 +183,10 @@ void writeSummary(const fs::path& file, const Setup& st, const std::vector<Run>&
   const auto& p = st.problem;
   md << "# A posteriori vs a priori bases: " << p.name << "\n\n"
      << p.numDofs() << " dofs, " << p.contact.size() << " contact nodes, " << p.numSteps()
-     << " instants, κ = " << st.scene.solver.search_scale << ", tolerance " << st.scene.solver.tolerance
-     << ", ν1 = ν2 = " << st.scene.solver.fas.pre_relaxations << ", i_C = " << st.scene.solver.fas.coarse_iterations
-     << ", N_res = " << st.scene.solver.fas.residual_vectors << ". Wall times: median of " << o.repeats
+     << " instants, κ = " << st.scene.solver.search_scale << ", tolerance " << st.scene.solver.tolerance()
+     << ", ν1 = ν2 = " << st.scene.solver.fas_aposteriori.fas.pre_relaxations
+     << ", i_C = " << st.scene.solver.fas_aposteriori.fas.coarse_iterations
+     << ", N_res = " << st.scene.solver.fas_aposteriori.basis.residual_vectors << ". Wall times: median of " << o.repeats
      << " runs without the true-error evaluation.\n\n"
      << "| strategy | status | relaxations | sparse solves | rank | final error | wall (s) |";
   for (double t : kTargets) md << " to " << t << ": relax / solves / s |";

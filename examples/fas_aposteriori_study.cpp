@@ -40,6 +40,7 @@
 #include "stcontact/fas/coarse_step.hpp"
 #include "stcontact/fas/fas_solver.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/error_reference.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/indicator.hpp"
@@ -166,26 +167,23 @@ stc::SolveResult runOne(const Study& st, const RunSpec& r, stc::latin::GlobalSta
   };
   if (r.latin) {
     stc::latin::LatinOptions o;
-    o.tolerance = 1e-9;
-    o.max_iterations = cap;
+    o.stop = {1e-9, cap, 150};
     o.relaxation = r.omega;
-    o.stagnation_window = 150;
-    const auto start = stc::InterfaceHistory::zeros(st.problem.contact, st.problem.numSteps());
-    return stc::latin::solveLatin(st.problem, global, start, o, st.reference.get(), stop);
+    return stc::latin::solveLatinWith(st.problem, global, o, {.reference = st.reference.get(), .callback = stop},
+                                      "latin");
   }
   stc::fas::FasOptions o;
-  o.tolerance = 1e-9;
-  o.max_relaxations = cap;
+  o.stop = {1e-9, cap, 150};
   o.pre_relaxations = o.post_relaxations = r.nu;
   o.coarse_iterations = r.ic;
   o.start = r.start;
-  o.stagnation_window = 150;
   o.safeguard = st.safeguard;
   o.adapt_coarse_iterations = st.adapt;
   const int m = std::min<int>(r.modes, static_cast<int>(st.modes.cols()));
   global.keepDisplacements(true);
   stc::fas::FixedBasisProvider provider(st.modes.leftCols(m), r.res, global, st.problem.contact.B);
-  return stc::fas::solveFas(st.problem, global, provider, o, "fas-aposteriori", st.reference.get(), stop);
+  return stc::fas::solveFas(st.problem, global, provider, o, {.reference = st.reference.get(), .callback = stop},
+                            "fas-aposteriori");
 }
 
 // ---- statistics of one history ---------------------------------------------------------------

@@ -20,7 +20,7 @@
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/scene/scene_reader.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 
 int main(int argc, char** argv) {
   if (argc < 2) {
@@ -36,8 +36,8 @@ int main(int argc, char** argv) {
     stc::linalg::preferFastBlasKernels();                                 // 0. OpenBLAS's kernels for this CPU
     const stc::Scene scene = stc::readScene(argv[1], overrides);          // 1. read and validate
     const stc::Problem problem = stc::buildProblem(scene);                // 2. K, loads, contact interface
-    const std::string name = argc > 2 ? argv[2] : scene.solver.name;      //    e.g. "fas-apriori"
-    const stc::SolveResult result = stc::solveByName(name, problem, scene.solver);  // 3. solve
+    const stc::Strategy strategy = argc > 2 ? stc::strategyNamed(argv[2]) : scene.solver.strategy;
+    const stc::SolveResult result = stc::solve(strategy, problem, scene.solver);  // 3. solve
     const stc::SolveSummary& summary = result.summary;                    // 4. report
     std::cout << summary.solver << ": " << stc::toString(summary.termination) << " (" << summary.message
               << ")\n  " << problem.numDofs() << " dofs, " << problem.contact.size() << " contact nodes, "

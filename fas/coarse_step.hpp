@@ -14,7 +14,7 @@
 // result is a local-stage iterate (docs/method.md §4, "Anderson mixing of the coarse iterations").
 #include "stcontact/contact/contact_interface.hpp"
 #include "stcontact/fas/coarse_space.hpp"
-#include "stcontact/fas/fas_options.hpp"
+#include "stcontact/options/fas_options.hpp"
 #include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc::fas {

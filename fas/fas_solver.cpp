@@ -12,12 +12,6 @@
 namespace stc::fas {
 namespace {
 
-// The error estimate of FAS: the indicator calibrated on earlier iterates
-// (src/solver/calibrated_estimate.hpp), s = 2.5. A cycle changes its own map (the coarse space
-// follows the iterate), which breaks the extrapolation LATIN stops on; docs/method.md §2 gives the
-// measured ratios of estimate to true error.
-constexpr double kFasCalibrationSafety = 2.5;
-
 // The fine level: relaxations from the current local-stage iterate `hat`.
 class FineLevel {
  public:
@@ -67,7 +61,7 @@ class CoarseGuard {
         max_skip_(options.max_skip),
         max_iterations_(options.coarse_iterations),
         iterations_(options.coarse_iterations),
-        growth_(options.safeguard_growth.value_or(defaults::safeguardGrowth(dimension, anticipated))) {}
+        growth_(options.safeguard_growth.value_or(defaultSafeguardGrowth(dimension, anticipated))) {}
 
   /// i_C of the next coarse step.
   int coarseIterations() const { return iterations_; }
@@ -123,25 +117,15 @@ class CoarseGuard {
 }  // namespace
 
 SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
-                     const FasOptions& options, const std::string& solver_name, const ErrorMeasure* reference,
-                     const IterationCallback& callback) {
-  return solveFas(problem, global, provider, InterfaceHistory::zeros(problem.contact, problem.numSteps()),
-                  options, solver_name, reference, callback);
-}
-
-SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisProvider& provider,
-                     const InterfaceHistory& start, const FasOptions& options, const std::string& solver_name,
-                     const ErrorMeasure* reference, const IterationCallback& callback) {
+                     const FasOptions& options, const SolveInputs& inputs, const std::string& solver_name) {
   options.validate();
+  const InterfaceHistory start = startingHistory(problem, inputs);
   requireFits(start, problem);
   const EquilibriumEnergy energy(problem, global.factor());
-  StoppingRule rule;
-  rule.tolerance = options.tolerance;
-  rule.max_iterations = options.max_relaxations;
-  rule.stagnation_window = options.stagnation_window;
+  StoppingRule rule{options.stop};
   rule.estimate_kind = EstimateKind::CalibratedIndicator;
-  rule.calibration_safety = kFasCalibrationSafety;
-  IterationMonitor monitor(solver_name, rule, &energy, reference, callback);
+  rule.calibration_safety = options.estimate_safety;
+  IterationMonitor monitor(solver_name, rule, &energy, inputs.reference, inputs.callback);
   FineLevel fine(problem, global, start, monitor);
   CoarseGuard guard(options, problem.dimension, provider.anticipates());
   int rank = 0;
@@ -170,9 +154,11 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
   latin::localStage(problem.contact, fine.s, admissible);
   SolveSummary summary = monitor.finish();
   if (guard.rejected > 0) {
-    summary.message += "; " + std::to_string(guard.rejected) + " coarse corrections rejected";
+    std::string remark = std::to_string(guard.rejected) + " coarse corrections rejected";
     if (guard.coarseIterations() < options.coarse_iterations)
-      summary.message += ", i_C ended at " + std::to_string(guard.coarseIterations());
+      remark += ", i_C ended at " + std::to_string(guard.coarseIterations());
+    summary.remarks.push_back(remark);
+    summary.composeMessage();
   }
   return {std::move(fine.s), std::move(summary), std::move(admissible), {}, {}};
 }

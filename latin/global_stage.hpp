@@ -10,9 +10,9 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "stcontact/core/solver_settings.hpp"
 #include "stcontact/latin/linear_stage.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/options/latin_options.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/spacetime/interface_history.hpp"
 
@@ -21,7 +21,7 @@ namespace stc::latin {
 class GlobalStage : public LinearStage {
  public:
   /// Factorises K_ff + Bᵀ k B with k = problem.contact.search_direction.
-  explicit GlobalStage(const Problem& problem, int block_size = defaults::block_size);
+  explicit GlobalStage(const Problem& problem, int block_size = LatinOptions{}.block_size);
 
   /// s = global stage of ŝ (all instants). Adds m to the sparse-solve count.
   void solve(const InterfaceHistory& hat, InterfaceHistory& s) override { solve(hat, s, keep_ ? &u_ : nullptr); }

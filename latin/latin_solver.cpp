@@ -1,5 +1,6 @@
 #include "stcontact/latin/latin_solver.hpp"
 
+#include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/indicator.hpp"
 #include "stcontact/latin/local_stage.hpp"
 #include "stcontact/solver/equilibrium_energy.hpp"
@@ -8,25 +9,22 @@
 
 namespace stc::latin {
 
-SolveResult solveLatin(const Problem& problem, const LatinOptions& options, const ErrorReference* reference,
-                       const IterationCallback& callback) {
+SolveResult solveLatin(const Problem& problem, const LatinOptions& options, const SolveInputs& inputs) {
   options.validate();
   GlobalStage global(problem, options.block_size);
-  return solveLatin(problem, global, InterfaceHistory::zeros(problem.contact, problem.numSteps()), options,
-                    reference, callback);
+  return solveLatinWith(problem, global, options, inputs, "latin");
 }
 
-SolveResult solveLatin(const Problem& problem, LinearStage& global, const InterfaceHistory& start,
-                       const LatinOptions& options, const ErrorReference* reference,
-                       const IterationCallback& callback, const std::string& solver_name) {
+SolveResult solveLatinWith(const Problem& problem, LinearStage& global, const LatinOptions& options,
+                           const SolveInputs& inputs, const std::string& solver_name) {
   options.validate();
-  requireFits(start, problem);
+  InterfaceHistory s = startingHistory(problem, inputs);
+  requireFits(s, problem);
   const EquilibriumEnergy energy(problem, global.factor());
-  IterationMonitor monitor(solver_name, {options.tolerance, options.max_iterations, options.stagnation_window},
-                           &energy, reference, callback);
+  IterationMonitor monitor(solver_name, StoppingRule{options.stop}, &energy, inputs.reference, inputs.callback);
   const Eigen::VectorXd& k = problem.contact.search_direction;
   const long solves_before = global.sparseSolves();
-  InterfaceHistory s = start, hat, s_new;
+  InterfaceHistory hat, s_new;
   for (int iteration = 1;; ++iteration) {
     localStage(problem.contact, s, hat);
     global.solve(hat, s_new);

@@ -7,25 +7,20 @@
 // and controlled (pgd::ControlledGlobalStage, strategy `latin-pgd`).
 #include <string>
 
-#include "stcontact/incremental/error_reference.hpp"
-#include "stcontact/latin/global_stage.hpp"
-#include "stcontact/latin/latin_options.hpp"
 #include "stcontact/latin/linear_stage.hpp"
+#include "stcontact/options/latin_options.hpp"
 #include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/solve_inputs.hpp"
 #include "stcontact/solver/solve_result.hpp"
 
 namespace stc::latin {
 
-/// Solves from s = 0 with the exact global stage. `reference`, when given, adds the true error to
-/// every history record.
-SolveResult solveLatin(const Problem& problem, const LatinOptions& options, const ErrorReference* reference = nullptr,
-                       const IterationCallback& callback = {});
+/// `latin`: solves from inputs.start (s = 0 when none) with the exact global stage.
+SolveResult solveLatin(const Problem& problem, const LatinOptions& options, const SolveInputs& inputs = {});
 
-/// The same with a global stage built by the caller (reused across solves, or a separated one),
-/// from `start` (2n_C × m; e.g. a neighbouring problem's solution: a warm start,
-/// src/solver/warm_start.hpp). `solver_name` is recorded in the summary.
-SolveResult solveLatin(const Problem& problem, LinearStage& global, const InterfaceHistory& start,
-                       const LatinOptions& options, const ErrorReference* reference = nullptr,
-                       const IterationCallback& callback = {}, const std::string& solver_name = "latin");
+/// The same iteration with a global stage built by the caller (a separated one, or one reused across
+/// solves); `solver_name` is recorded in the summary.
+SolveResult solveLatinWith(const Problem& problem, LinearStage& global, const LatinOptions& options,
+                           const SolveInputs& inputs, const std::string& solver_name);
 
 }  // namespace stc::latin

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "stcontact/core/option_check.hpp"
 #include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/solver/warm_start.hpp"
 
@@ -30,14 +29,6 @@ Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double norm, double 
 }
 
 }  // namespace
-
-void ControlledStageOptions::validate() const {
-  constexpr const char* kOwner = "separated global stage";
-  requireOption(gap_share > 0.0 && gap_share < 1.0, kOwner, "gap_share", gap_share, "must be in (0, 1)");
-  requireOption(block >= 1, kOwner, "block", block, "must be >= 1");
-  requireOption(oversampling >= 0, kOwner, "oversampling", oversampling, "must be >= 0");
-  requireOption(power_iterations >= 0, kOwner, "power_iterations", power_iterations, "must be >= 0");
-}
 
 ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledStageOptions options)
     : problem_(problem),
@@ -88,11 +79,8 @@ double ControlledGlobalStage::project(const Eigen::MatrixXd& w_scaled, Eigen::Ma
   c.noalias() = scaled.transpose() * w_scaled;
   r_scaled = w_scaled;
   r_scaled.noalias() -= scaled * c;
-  // Before any gap is known (the first solve, or a warm start) the bound is a share of w itself; it
-  // is never below the floor, if one is set (ControlledStageOptions::floor_share).
-  const double scale = w_scaled.norm();
-  const double target = std::max(target_ >= 0.0 ? target_ : options_.gap_share * scale,
-                                 options_.gap_share * options_.floor_share * options_.tolerance * scale);
+  // Before any gap is known (the first solve, or a warm start) the bound is a share of w itself.
+  const double target = target_ >= 0.0 ? target_ : options_.gap_share * w_scaled.norm();
   return enrich(c, r_scaled, r_scaled.norm(), target);
 }
 

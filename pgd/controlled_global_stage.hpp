@@ -13,30 +13,12 @@
 // the fixed point), and vanishes with the gap: the iteration converges to the fixed point of the
 // exact global stage. Each solve costs three products with p columns on 2n_C × m interface fields,
 // plus one sparse solve per new direction.
-#include "stcontact/core/solver_settings.hpp"
 #include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/linear_stage.hpp"
+#include "stcontact/options/separated_stage_options.hpp"
 #include "stcontact/pgd/response_basis.hpp"
 
 namespace stc::pgd {
-
-struct ControlledStageOptions {
-  /// γ: the projection error is kept below γ times the previous iteration's gap ‖s − ŝ‖. Must be
-  /// small against 1 − ρ (LATIN's rate ρ ≈ 0.9 on the seed scene); measured: docs/floor.md.
-  double gap_share = defaults::pgd_gap_share;
-  /// An optional floor: the projection error needs not be below gap_share · floor_share ·
-  /// tolerance · ‖w‖_{k⁻¹}. Off by default (0): how a projection error of that size moves the
-  /// fixed point depends on the search direction, and with share 1 fas-apriori at κ = 100 (hard
-  /// case kappa_100) converged to a point 1.1e-6 from the solution at tolerance 1e-6; with 0,
-  /// 4.8e-7, and every other hard case ran the same iterations within one (docs/floor.md).
-  double tolerance = defaults::tolerance;
-  double floor_share = 0.0;
-  int block = 8;            ///< directions added per enrichment pass at most
-  int oversampling = 4;     ///< extra random samples of the range finder
-  int power_iterations = 1; ///< subspace iterations of the range finder
-
-  void validate() const;    ///< throws InputError naming the field
-};
 
 class ControlledGlobalStage : public latin::LinearStage {
  public:

@@ -1,21 +1,18 @@
 #include "stcontact/pgd/latin_pgd_solver.hpp"
 
 #include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/pgd/separated_history.hpp"
 
 namespace stc::pgd {
 
-SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options, const InterfaceHistory* start,
-                          const Eigen::MatrixXd* seed, const ErrorReference* reference,
-                          const IterationCallback& callback) {
+SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options, const SolveInputs& inputs) {
   options.validate();
   ControlledGlobalStage stage(problem, options.stage);
-  if (seed) stage.seed(*seed);
-  const InterfaceHistory zero = InterfaceHistory::zeros(problem.contact, problem.numSteps());
-  SolveResult result =
-      latin::solveLatin(problem, stage, start ? *start : zero, options.latin, reference, callback, "latin-pgd");
+  if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
+  SolveResult result = latin::solveLatinWith(problem, stage, options.latin, inputs, "latin-pgd");
   result.interface_directions = stage.basis().directions();
-  if (options.spatial_modes) result.spatial_modes = energyModes(stage.basis(), stage.coordinates());
+  if (inputs.spatial_modes) result.spatial_modes = energyModes(stage.basis(), stage.coordinates());
   return result;
 }
 

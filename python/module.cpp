@@ -8,8 +8,8 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/io/output_error.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/options/strategy.hpp"
 #include "stcontact/python/bindings.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
 #include "stcontact/version.hpp"
 
 namespace {
@@ -42,7 +42,7 @@ PYBIND11_MODULE(_core, module) {
       PyErr_SetString(PyExc_OSError, oneLine(e.what()).c_str());
     }
   });
-  module.def("available_solvers", &stc::availableSolvers, "The strategies solve() and compare() accept.");
+  module.def("available_solvers", &stc::strategyNames, "The strategies solve() and compare() accept.");
   stc::python::bindScene(module);
   stc::python::bindSolve(module);
   stc::python::bindStudies(module);

@@ -42,8 +42,8 @@ py::dict checkSizes(const SceneHandle& handle) {
   sizes["kappa_young_per_length"] = c.search_scale_per_length;
   sizes["search_direction_min"] = c.search_direction.minCoeff();
   sizes["search_direction_max"] = c.search_direction.maxCoeff();
-  sizes["solver"] = scene.solver.name;
-  sizes["tolerance"] = scene.solver.tolerance;
+  sizes["solver"] = std::string(scene.solver.name());
+  sizes["tolerance"] = scene.solver.tolerance();
   return sizes;
 }
 
@@ -73,7 +73,7 @@ void bindScene(py::module_& module) {
       .def_property_readonly("text", &SceneHandle::text)
       .def_property_readonly("sets", &SceneHandle::overrides)
       .def_property_readonly("parameters_json", [](const SceneHandle& h) { return h.scene().parameters_json; })
-      .def_property_readonly("solver", [](const SceneHandle& h) { return h.scene().solver.name; })
+      .def_property_readonly("solver", [](const SceneHandle& h) { return std::string(h.scene().solver.name()); })
       .def("check", &checkSizes)
       .def("mesh", &meshArrays);
 }

@@ -17,7 +17,7 @@
 #include "stcontact/python/numpy_arrays.hpp"
 #include "stcontact/python/scene_handle.hpp"
 #include "stcontact/solver/warm_start.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/reference.hpp"
 #include "stcontact/studies/solve_options.hpp"
 #include "stcontact/version.hpp"
@@ -51,7 +51,7 @@ struct ProblemRef {
 /// The start history and basis seed for `problem`; ValueError when a part is missing or its sizes
 /// do not fit (stc::requireFits names both sizes).
 void applyWarmStart(WarmStart& warm, const Problem& problem, std::optional<InterfaceHistory>& start,
-                    StrategyInputs& inputs) {
+                    SolveInputs& inputs) {
   if (warm.forces.has_value() != warm.displacements.has_value())
     throw std::invalid_argument("a warm start needs both the interface forces and the interface displacements");
   if (warm.forces) {
@@ -113,7 +113,7 @@ py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
 /// summary records it).
 py::dict resultDict(const ProblemPtr& problem, const Scene& scene, SolveResult&& result) {
   py::dict out;
-  out["solver"] = scene.solver.name;
+  out["solver"] = std::string(scene.solver.name());
   out["dimension"] = problem->dimension;
   out["summary_json"] = summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION});
   out["history"] = historyArrays(result.summary);
@@ -129,18 +129,18 @@ py::dict resultDict(const ProblemPtr& problem, const Scene& scene, SolveResult&&
 }
 
 /// The reference (unless not wanted, see solve_command.cpp), then the strategy; the lock released.
-SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_reference, StrategyInputs inputs,
+SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_reference, SolveInputs inputs,
                      CallbackBridge& bridge, std::string& warning) {
   py::gil_scoped_release unlocked;
   std::unique_ptr<ErrorReference> reference;
-  if (scene.solver.name != "incremental" && with_reference &&
+  if (scene.solver.strategy != Strategy::Incremental && with_reference &&
       problem.contact.size() <= kMaxReferenceContactNodes)
     reference = solveReference(problem, bridge.signalsOnly(), warning);
   if (bridge.interrupted()) return {};
   inputs.reference = reference.get();
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
   inputs.callback = bridge.withUserCallback();
-  return solveByName(scene.solver.name, problem, scene.solver, inputs);
+  return solve(problem, scene.solver, inputs);
 }
 
 py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart warm, py::object callback) {
@@ -148,11 +148,10 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   const SceneHandle run = handle.withOverrides(
       withSolverOptions(options.sets, options.solver, options.tolerance, options.max_iterations));
   const Scene& scene = run.scene();
-  requireAvailable(scene.solver.name);
   const ProblemPtr problem = run.problem();
   if (options.out) ensureWritableDirectory(*options.out);  // fail before the solve, not after
   std::optional<InterfaceHistory> start;
-  StrategyInputs inputs;
+  SolveInputs inputs;
   applyWarmStart(warm, *problem, start, inputs);
 
   CallbackBridge bridge(std::move(callback));

@@ -37,7 +37,7 @@ void checkSvdSizes(int m, int modes) {
 /// least kSvdFigurePairs pairs). Lock released; a Ctrl-C stops the incremental solve.
 pgd::SpaceTimeSvd energySvdOfSolution(const Problem& problem, int modes, CallbackBridge& bridge) {
   py::gil_scoped_release unlocked;
-  const SolveResult solved = solveIncremental(problem, {}, bridge.signalsOnly());
+  const SolveResult solved = solveIncremental(problem, {}, {.callback = bridge.signalsOnly()});
   if (bridge.interrupted()) return {};
   if (!solved.summary.converged())
     throw std::runtime_error("the incremental solver did not converge (" + solved.summary.message + "): no SVD");
@@ -104,8 +104,8 @@ std::string joined(const std::vector<std::string>& names, const std::string& sep
 }
 
 /// The call as the report's "command" line names it.
-std::string callText(const SceneHandle& handle, const std::vector<std::string>& solvers, const CompareOptions& o) {
-  std::string text = "stcontact.compare('" + handle.source().string() + "', solvers='" + joined(solvers, ",") +
+std::string callText(const SceneHandle& handle, const std::vector<Strategy>& solvers, const CompareOptions& o) {
+  std::string text = "stcontact.compare('" + handle.source().string() + "', solvers='" + joinedNames(solvers) +
                      "', repeats=" + std::to_string(o.repeats);
   if (!o.sets.empty()) text += ", sets=['" + joined(o.sets, "', '") + "']";
   if (o.tolerance) text += ", tol=" + shortNumber(*o.tolerance, 6);
@@ -114,12 +114,12 @@ std::string callText(const SceneHandle& handle, const std::vector<std::string>& 
 
 /// The runs of `stcontact compare` (cli/compare_command.cpp): the reference, then each strategy.
 void measureAll(Comparison& comparison, const Problem& problem, const SolverSpec& spec,
-                const std::vector<std::string>& solvers, int repeats, CallbackBridge& bridge) {
+                const std::vector<Strategy>& solvers, int repeats, CallbackBridge& bridge) {
   py::gil_scoped_release unlocked;
   const ReferenceSolution reference = computeReference(problem, nullptr);
   comparison.reference_s = reference.total_s;
   const CompareContext context{problem, spec, reference, repeats, nullptr, {}, bridge.signalsOnly()};
-  for (const std::string& solver : solvers) {
+  for (const Strategy solver : solvers) {
     if (bridge.interrupted()) return;
     comparison.strategies.push_back(measureStrategy(solver, context));
   }
@@ -197,10 +197,10 @@ py::dict compare(const SceneHandle& handle, const CompareOptions& o) {
   if (o.repeats < 1) throw InputError("--repeats must be >= 1");
   const SceneHandle run = handle.withOverrides(o.sets);
   Scene scene = run.scene();
-  const std::vector<std::string> solvers = solverList(joined(o.solvers, ","));
+  const std::vector<Strategy> solvers = solverList(joined(o.solvers, ","));
   if (o.tolerance) {
     if (!(*o.tolerance > 0.0)) throw InputError("--tol must be > 0");
-    scene.solver.tolerance = *o.tolerance;
+    scene.solver.setTolerance(*o.tolerance);
   }
   if (o.out) ensureWritableDirectory(*o.out);  // fail before the runs, not after
   const std::shared_ptr<const Problem> problem = run.problem();

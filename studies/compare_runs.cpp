@@ -8,7 +8,7 @@
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/number_format.hpp"
 #include "stcontact/studies/peak_memory.hpp"
 #include "stcontact/studies/run_environment.hpp"
@@ -27,10 +27,10 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 /// The exact solver: its solution is the reference, so it is reported as one point of error 0.
-bool isReferenceSolver(const std::string& solver) { return solver == "incremental"; }
+bool isReferenceSolver(Strategy strategy) { return strategy == Strategy::Incremental; }
 
-/// Strategies that take a converged solution as input (StrategyInputs::converged_lambda).
-bool needsConvergedSolution(const std::string& solver) { return solver == "fas-aposteriori"; }
+/// Strategies that take a converged solution as input (SolveInputs::converged_lambda).
+bool needsConvergedSolution(Strategy strategy) { return strategy == Strategy::FasAposteriori; }
 
 struct RunOutcome {
   SolveResult result;
@@ -51,10 +51,10 @@ std::vector<WorkPoint> pointsOf(const SolveSummary& summary, double setup_s) {
 // the set-up time is measured at the first callback: time since the call minus the record's wall_s.
 // A run that stops at its first record never calls it: its set-up is bounded by the time outside
 // the solver's clock (set-up and return). `go_on`, when set, stops the run by returning false.
-RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool measure_error, const std::string& label,
+RunOutcome runOnce(Strategy strategy, const CompareContext& c, bool measure_error, const std::string& label,
                    const IterationCallback& go_on = {}) {
   const RunProgress progress(c.progress, label);
-  StrategyInputs inputs;
+  SolveInputs inputs;
   inputs.reference = measure_error ? c.reference.reference.get() : nullptr;
   inputs.converged_lambda = &c.reference.reference->referenceForces();
   inputs.spatial_modes = false;  // not reported
@@ -66,7 +66,7 @@ RunOutcome runOnce(const std::string& solver, const CompareContext& c, bool meas
     return shown && (!go_on || go_on(r)) && (!c.keep_going || c.keep_going(r));
   };
   RunOutcome out;
-  out.result = solveByName(solver, c.problem, c.spec, inputs);
+  out.result = solve(strategy, c.problem, c.spec, inputs);
   out.total_s = secondsSince(start);
   const SolveSummary& s = out.result.summary;
   out.points = pointsOf(s, setup_s.value_or(std::max(0.0, out.total_s - s.wall_s)));
@@ -131,18 +131,19 @@ std::string repeatLabel(const std::string& solver, int repeat, int repeats) {
 
 }  // namespace
 
-StrategyMeasurement measureStrategy(const std::string& solver, const CompareContext& c) {
+StrategyMeasurement measureStrategy(Strategy strategy, const CompareContext& c) {
   StrategyMeasurement m;
+  const std::string solver(nameOf(strategy));
   m.solver = solver;
-  m.reference_point = isReferenceSolver(solver);
-  if (needsConvergedSolution(solver)) m.prerequisite_s = c.reference.solve_s;
+  m.reference_point = isReferenceSolver(strategy);
+  if (needsConvergedSolution(strategy)) m.prerequisite_s = c.reference.solve_s;
   PeakMemoryProbe probe;
   probe.reset();
   std::optional<RunOutcome> measured;
   IterationCallback timed_stop;
   if (!m.reference_point) {
     std::string why;
-    measured = runOnce(solver, c, true, solver + " (error run)", errorRunStop(c.stop, why));
+    measured = runOnce(strategy, c, true, solver + " (error run)", errorRunStop(c.stop, why));
     m.error_run_s = measured->total_s;
     describeResult(m, measured->result.summary);
     m.best_error = smallestError(measured->points);
@@ -154,7 +155,7 @@ StrategyMeasurement measureStrategy(const std::string& solver, const CompareCont
   // measure of the error run (whose Delassus columns may be computed during it).
   if (measured && !nothing_to_time && c.repeats > 0) probe.reset();
   for (int r = 1; r <= c.repeats && !nothing_to_time; ++r) {
-    RunOutcome timed = runOnce(solver, c, false, repeatLabel(solver, r, c.repeats), timed_stop);
+    RunOutcome timed = runOnce(strategy, c, false, repeatLabel(solver, r, c.repeats), timed_stop);
     TimedRun run{r, {}, timed.total_s};
     if (m.reference_point) {
       run.points = {referencePoint(timed, *c.reference.reference)};
@@ -175,20 +176,23 @@ StrategyMeasurement measureStrategy(const std::string& solver, const CompareCont
 // Split here rather than by CLI11's ->delimiter(','): CLI11 2.1.2 (Debian 12) drops empty items, so
 // "--solvers latin,,incremental" would pass as two names instead of the documented refusal
 // "--solvers: empty name" (docs/compare.md; the ctest case cli.compare_empty_solver_name).
-std::vector<std::string> solverList(const std::string& list) {
-  if (trimmed(list).empty()) return availableSolvers();
-  std::vector<std::string> names;
+std::vector<Strategy> solverList(const std::string& list) {
+  std::vector<Strategy> strategies;
+  if (trimmed(list).empty()) {
+    for (const auto& [name, strategy] : kStrategies) strategies.push_back(strategy);
+    return strategies;
+  }
   std::stringstream items(list);
   std::string item;
   while (std::getline(items, item, ',')) {
     const std::string name = trimmed(item);
     if (name.empty()) throw InputError("--solvers: empty name in '" + list + "'");
-    requireAvailable(name);
-    if (std::find(names.begin(), names.end(), name) != names.end())
+    const Strategy strategy = strategyNamed(name);
+    if (std::find(strategies.begin(), strategies.end(), strategy) != strategies.end())
       throw InputError("--solvers: '" + name + "' is listed twice");
-    names.push_back(name);
+    strategies.push_back(strategy);
   }
-  return names;
+  return strategies;
 }
 
 Comparison describeComparison(const std::string& scene_file, const std::string& command, const Scene& scene,
@@ -200,7 +204,7 @@ Comparison describeComparison(const std::string& scene_file, const std::string& 
   c.n_dofs = problem.numDofs();
   c.n_contact_nodes = problem.contact.size();
   c.n_steps = problem.numSteps();
-  c.tolerance = scene.solver.tolerance;
+  c.tolerance = scene.solver.tolerance();
   c.repeats = repeats;
   c.environment = describeRunEnvironment();
   return c;

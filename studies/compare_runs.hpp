@@ -1,6 +1,6 @@
 #pragma once
 // The runs of `stcontact compare` (and of the Python module's compare): each strategy's error run and
-// timed repeats through solveByName, with the peak memory of the strategy's runs.
+// timed repeats through the registry (strategies/registry.hpp), with the peak memory of the strategy's runs.
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,8 +38,8 @@ struct CompareContext {
 };
 
 /// The comma-separated strategy names of a comparison (`--solvers`, Python's solvers=; empty:
-/// availableSolvers()); InputError for an empty, unknown, unavailable or repeated name.
-std::vector<std::string> solverList(const std::string& list);
+/// every strategy); InputError for an empty, unknown, unavailable or repeated name.
+std::vector<Strategy> solverList(const std::string& list);
 
 /// The comparison's description before its runs: scene, sizes, command, machine and build.
 Comparison describeComparison(const std::string& scene_file, const std::string& command, const Scene& scene,
@@ -47,6 +47,6 @@ Comparison describeComparison(const std::string& scene_file, const std::string& 
 
 /// One error run (iterative strategies only), then `repeats` timed runs; see docs/compare.md. With
 /// an EarlyStop, the message says where and why the error run was stopped.
-StrategyMeasurement measureStrategy(const std::string& solver, const CompareContext& context);
+StrategyMeasurement measureStrategy(Strategy strategy, const CompareContext& context);
 
 }  // namespace stc

@@ -20,7 +20,7 @@ ReferenceSolution computeReference(const Problem& problem, ProgressReporter* pro
   SolveResult ref;
   {
     const RunProgress run(progress, "reference (incremental)");
-    ref = solveIncremental(problem, {}, run.callback());
+    ref = solveIncremental(problem, {}, {.callback = run.callback()});
   }
   out.solve_s = secondsSince(start);
   if (!ref.summary.converged())
@@ -36,7 +36,7 @@ ReferenceSolution computeReference(const Problem& problem, ProgressReporter* pro
 // goes on without a true error, and the warning says why.
 std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
                                                std::string& warning) {
-  SolveResult ref = solveIncremental(problem, {}, callback);
+  SolveResult ref = solveIncremental(problem, {}, {.callback = callback});
   if (!ref.summary.converged()) {
     warning = "no true error: the incremental reference did not converge (" + ref.summary.message + ")";
     return nullptr;

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "stcontact/core/input_error.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/options/strategy.hpp"
 
 namespace stc {
 
@@ -12,7 +12,7 @@ std::vector<std::string> withSolverOptions(std::vector<std::string> overrides, c
                                            const std::optional<double>& tolerance,
                                            const std::optional<int>& max_iterations) {
   if (solver) {
-    requireAvailable(*solver);
+    strategyNamed(*solver);  // InputError for an unknown name
     overrides.push_back("solver.name=" + *solver);
   }
   if (tolerance) {

@@ -19,7 +19,7 @@ struct SolveCost {
   int iterations = 0;
   int relaxations = 0;          ///< fine LATIN relaxations
   long sparse_solves = 0;       ///< right-hand sides solved with the sparse factor
-  double wall_s = 0.0;          ///< the whole call to solveByName, set-up (factorisation, basis) included
+  double wall_s = 0.0;          ///< the whole call to solve, set-up (factorisation, basis) included
   double indicator = 0.0;       ///< final indicator (docs/method.md §2 η)
   std::optional<double> error;  ///< true error against this value's incremental solution (docs/method.md §2)
 

@@ -5,7 +5,7 @@
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/run_writer.hpp"
 #include "stcontact/solver/warm_start.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/number_format.hpp"
 #include "stcontact/studies/reference.hpp"
 #include "stcontact/version.hpp"
@@ -20,11 +20,11 @@ struct TimedSolve {
   SolveCost cost;
 };
 
-/// One solve through solveByName, timed from the call to its return (set-up included), its true
+/// One solve through the registry (strategies/registry.hpp), timed from the call to its return (set-up included), its true
 /// error measured afterwards on the returned solution (the solve itself does not pay for it).
-TimedSolve timedSolve(const Problem& problem, const Scene& scene, const StrategyInputs& base,
+TimedSolve timedSolve(const Problem& problem, const Scene& scene, const SolveInputs& base,
                       const ReferenceSolution& reference, const std::string& label, const SweepSettings& settings) {
-  StrategyInputs inputs = base;
+  SolveInputs inputs = base;
   inputs.converged_lambda = &reference.reference->referenceForces();  // fas-aposteriori's modes, not timed
   inputs.spatial_modes = false;  // the next point starts from the interface directions
   const auto start = Clock::now();
@@ -32,7 +32,7 @@ TimedSolve timedSolve(const Problem& problem, const Scene& scene, const Strategy
   {
     const RunProgress progress(settings.progress, label);
     inputs.callback = progress.callback();
-    out.result = solveByName(settings.solver, problem, scene.solver, inputs);
+    out.result = solve(settings.solver, problem, scene.solver, inputs);
   }
   out.cost = costOf(out.result.summary, std::chrono::duration<double>(Clock::now() - start).count());
   out.cost.error = reference.reference->relativeError(out.result.interface.lambda);
@@ -71,7 +71,7 @@ SweepPoint WarmChain::solveValue(const Scene& scene, const SweepRange& range, st
   point.value = range.values[index];
   point.reference_s = reference.total_s;
 
-  StrategyInputs warm;
+  SolveInputs warm;
   if (interface_ && fitsProblem(*interface_, problem)) {
     warm.start = &*interface_;
     point.start = WarmStart::Previous;

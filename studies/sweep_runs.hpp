@@ -1,7 +1,7 @@
 #pragma once
 // The solves of `stcontact sweep`, value after value: the incremental reference (for the true error),
 // the warm solve from the previous value's solution and spatial modes, and the cold solve from zero,
-// each through solveByName with a problem (and factorisation) built for that value.
+// each through the registry (strategies/registry.hpp) with a problem (and factorisation) built for that value.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -14,7 +14,7 @@
 namespace stc {
 
 struct SweepSettings {
-  std::string solver;
+  Strategy solver = Strategy::FasApriori;
   bool independent = true;                             ///< also solve every value cold
   std::optional<std::filesystem::path> solutions_dir;  ///< write each warm solution below it
   ProgressReporter* progress = nullptr;               ///< shows each solve and each value's line

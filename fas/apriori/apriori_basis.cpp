@@ -1,18 +1,9 @@
 #include "stcontact/fas/apriori/apriori_basis.hpp"
 
-#include "stcontact/core/option_check.hpp"
 #include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/pgd/separated_history.hpp"
 
 namespace stc::fas {
-
-void AprioriBasisOptions::validate() const {
-  constexpr const char* kOwner = "a priori basis";
-  requireOption(modes >= 0, kOwner, "modes", modes, "must be >= 0");
-  requireOption(increment_modes >= 0, kOwner, "increment_modes", increment_modes, "must be >= 0");
-  requireOption(modes + increment_modes >= 1, kOwner, "modes + increment_modes", modes + increment_modes,
-                "must be >= 1 (an empty coarse space)");
-}
 
 AprioriBasisProvider::AprioriBasisProvider(pgd::ControlledGlobalStage& stage, AprioriBasisOptions options)
     : stage_(stage), options_(options) {

@@ -16,20 +16,11 @@
 // the coarse step already (docs/method.md §5, "The anticipated expansion").
 #include <Eigen/Core>
 
-#include "stcontact/core/solver_settings.hpp"
 #include "stcontact/fas/basis_provider.hpp"
+#include "stcontact/options/fas_apriori_options.hpp"
 #include "stcontact/pgd/controlled_global_stage.hpp"
 
 namespace stc::fas {
-
-struct AprioriBasisOptions {
-  int modes = defaults::pgd_max_modes;              ///< leading energy-SVD modes of ũ in the coarse space
-  int increment_modes = defaults::pgd_increment_modes;  ///< leading modes of ũ's change since the last coarse step
-  /// ũ anticipated from the next global stage's right-hand side (true) or the last global stage's.
-  bool anticipate = defaults::pgd_anticipate;
-
-  void validate() const;     ///< throws InputError naming the field
-};
 
 class AprioriBasisProvider : public BasisProvider {
  public:

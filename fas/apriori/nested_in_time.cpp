@@ -11,16 +11,10 @@
 #include "stcontact/problem/time_subgrid.hpp"
 #include "stcontact/spacetime/time_interpolation.hpp"
 
-namespace stc {
+namespace stc::fas {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// The sub-grid's tolerance is at least this: below it the start it gives stops improving, its
-/// distance to the whole grid's solution is the time step's (seed scene at 401 arc nodes, 2001
-/// instants, every 10th instant: true error of the start 4.4e-4, 1.0e-4, 9.5e-5 at sub-grid
-/// tolerances 1e-3, 1e-4, 1e-5; docs/floor.md, "Long grids: nested iteration in time").
-constexpr double kNestedTolerance = 1e-4;
 
 // "2nd", "3rd", "10th", "11th", "21st".
 std::string ordinal(int q) {
@@ -40,6 +34,9 @@ struct SubgridCost {
     r.wall_s += wall_s;
     return r;
   }
+  SolveStage stage() const {
+    return {SolveStage::Kind::SubGrid, describe(), relaxations, sparse_solves, wall_s, 0, 0};
+  }
   std::string describe() const {
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%.3g s", wall_s);
@@ -50,10 +47,10 @@ struct SubgridCost {
   }
 };
 
-SolveResult solveFas(const Problem& problem, pgd::ControlledGlobalStage& stage, const SolverSpec& spec,
-                     const InterfaceHistory& start, const ErrorMeasure* reference, const IterationCallback& callback) {
-  fas::AprioriBasisProvider provider(stage, aprioriOptions(spec));
-  return fas::solveFas(problem, stage, provider, start, fasOptions(spec), "fas-apriori", reference, callback);
+SolveResult solveOnGrid(const Problem& problem, pgd::ControlledGlobalStage& stage, const FasAprioriOptions& options,
+                        const SolveInputs& inputs) {
+  AprioriBasisProvider provider(stage, options.basis);
+  return solveFas(problem, stage, provider, options.fas, inputs, "fas-apriori");
 }
 
 InterfaceHistory atInstants(const InterfaceHistory& h, const std::vector<int>& kept) {
@@ -68,32 +65,34 @@ int nestedStride(int m, int coarse_instants) {
   return q >= 2 ? q : 0;
 }
 
-SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalStage& stage, const SolverSpec& spec,
-                                 const InterfaceHistory& start, const ErrorMeasure* reference,
-                                 const IterationCallback& callback) {
-  const int q = nestedStride(problem.numSteps(), spec.fas.nested_instants);
-  if (q == 0) return solveFas(problem, stage, spec, start, reference, callback);
+SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalStage& stage,
+                                 const FasAprioriOptions& options, const SolveInputs& inputs) {
+  const int q = nestedStride(problem.numSteps(), options.nested.instants);
+  if (q == 0) return solveOnGrid(problem, stage, options, inputs);
+  const InterfaceHistory start = startingHistory(problem, inputs);
   const auto clock = Clock::now();
   const long solves_before = stage.sparseSolves();
   const std::vector<int> kept = everyNthInstant(problem.numSteps(), q);
   const Problem subgrid = onInstants(problem, kept);
-  SolverSpec subgrid_spec = spec;
-  subgrid_spec.tolerance = std::max(spec.tolerance, kNestedTolerance);
+  FasAprioriOptions subgrid_options = options;
+  subgrid_options.fas.stop.tolerance = std::max(options.fas.stop.tolerance, options.nested.tolerance);
   stage.retime(subgrid);
-  const SolveResult coarse = solveFas(subgrid, stage, subgrid_spec, atInstants(start, kept), nullptr, {});
+  const InterfaceHistory subgrid_start = atInstants(start, kept);
+  const SolveResult coarse = solveOnGrid(subgrid, stage, subgrid_options, {.start = &subgrid_start});
   stage.retime(problem);
   SubgridCost cost{subgrid.numSteps(), q, coarse.summary.relaxations,
                    static_cast<int>(stage.sparseSolves() - solves_before), 0.0, coarse.summary.converged()};
   const InterfaceHistory interpolated =
       cost.converged ? interpolatedInTime(coarse.interface, subgrid.times, problem.times) : InterfaceHistory{};
   cost.wall_s = std::chrono::duration<double>(Clock::now() - clock).count();
-  IterationCallback shifted;
-  if (callback) shifted = [&](const IterationRecord& r) { return callback(cost.added(r)); };
-  SolveResult out = solveFas(problem, stage, spec, cost.converged ? interpolated : start, reference, shifted);
+  SolveInputs whole = inputs;
+  whole.start = cost.converged ? &interpolated : &start;
+  if (inputs.callback) whole.callback = [&](const IterationRecord& r) { return inputs.callback(cost.added(r)); };
+  SolveResult out = solveOnGrid(problem, stage, options, whole);
   for (IterationRecord& r : out.summary.history) r = cost.added(r);
   out.summary.wall_s += cost.wall_s;
-  out.summary.message += "; " + cost.describe();
+  out.summary.addStage(cost.stage());
   return out;
 }
 
-}  // namespace stc
+}  // namespace stc::fas

@@ -10,28 +10,16 @@
 #include "stcontact/fas/coarse_zone.hpp"
 #include "stcontact/latin/indicator.hpp"
 #include "stcontact/latin/local_stage.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/pgd/separated_history.hpp"
 #include "stcontact/problem/prescribed_reach.hpp"
+#include "stcontact/solver/iteration_monitor.hpp"
 #include "stcontact/solver/warm_start.hpp"
 
-namespace stc {
+namespace stc::fas {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-constexpr int kZoneRounds = 3;          ///< restricted solves before the whole interface
-constexpr double kWholeShare = 0.75;    ///< a zone above this share of the nodes: the whole interface
-/// The zone's margin, a share of the first relaxation's δ (fas/coarse_zone.hpp): nodes closed, or
-/// within kZoneMargin · δ of the obstacle (δ itself when that leaves none). Measured on the hard cases
-/// (relaxations to true error 1e-6, 14 cases without κ = 0.01): 377 at 1, 349 at 0.5, 362 at 0.25;
-/// at 0.25 the 3D hemisphere's zone misses nodes and takes a second round (44 relaxations against
-/// 26 at 0.5): docs/floor.md, "The reduced interface".
-constexpr double kZoneMargin = 0.5;
-/// The margin of the zone within reach of the prescribed motion (src/problem/prescribed_reach.hpp):
-/// none. The rigid motion overestimates how far the nodes near the contact move; on the 15 hard
-/// cases and the four example scenes no node left out penetrated (docs/floor.md, "The zone before any
-/// solve").
-constexpr double kReachMargin = 0.0;
 
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -101,15 +89,15 @@ struct FirstRelaxation {
   double measure_s = 0.0;  ///< time spent measuring its true error
 };
 
-FirstRelaxation firstRelaxation(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs,
+FirstRelaxation firstRelaxation(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
                                 Clock::time_point start) {
-  pgd::ControlledGlobalStage stage(problem, stageOptions(spec));
+  pgd::ControlledGlobalStage stage(problem, options.stage);
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
   FirstRelaxation first;
-  stage.solve(inputs.start ? *inputs.start : InterfaceHistory::zeros(problem.contact, problem.numSteps()), first.s);
+  stage.solve(startingHistory(problem, inputs), first.s);
   latin::localStage(problem.contact, first.s, first.hat);
-  first.zone = fas::coarseZone(problem.contact, first.s, first.hat, kZoneMargin).nodes;
-  if (first.zone.empty()) first.zone = fas::coarseZone(problem.contact, first.s, first.hat).nodes;
+  first.zone = coarseZone(problem.contact, first.s, first.hat, options.zone.margin).nodes;
+  if (first.zone.empty()) first.zone = coarseZone(problem.contact, first.s, first.hat).nodes;
   IterationRecord& r = first.record;
   const auto measured = Clock::now();
   if (inputs.reference && inputs.reference->defined()) r.error = inputs.reference->relativeError(first.s.lambda);
@@ -131,7 +119,8 @@ SolveResult stoppedAtFirst(const FirstRelaxation& first) {
   SolveSummary& sum = out.summary;
   sum.solver = "fas-apriori";
   sum.termination = Termination::StoppedByCallback;
-  sum.message = "stopped by the caller after the first relaxation";
+  sum.reason = "stopped by the caller after the first relaxation";
+  sum.composeMessage();
   sum.history = {first.record};
   sum.iterations = sum.relaxations = 1;
   sum.indicator = first.record.indicator;
@@ -155,14 +144,13 @@ double ErrorOnRows::relativeError(const Eigen::MatrixXd& lambda) const {
   return error;
 }
 
-SolveResult solveAprioriOn(const Problem& problem, const SolverSpec& spec, const InterfaceHistory& start,
-                           const Eigen::MatrixXd* seed, const ErrorMeasure* reference, const IterationCallback& callback,
-                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v, bool spatial_modes) {
-  pgd::ControlledGlobalStage stage(problem, stageOptions(spec));
-  if (seed) stage.seed(*seed);
-  SolveResult result = solveFasNestedInTime(problem, stage, spec, start, reference, callback);
+SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
+                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v) {
+  pgd::ControlledGlobalStage stage(problem, options.stage);
+  if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
+  SolveResult result = solveFasNestedInTime(problem, stage, options, inputs);
   result.interface_directions = stage.basis().directions();
-  if (spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
+  if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
   far_v = pgd::displacementTraces(stage.basis(), stage.coordinates(), B_far);
   return result;
 }
@@ -171,12 +159,12 @@ namespace {
 
 // Step 1 from the prescribed motion, when the loading is one: the nodes within its reach and, without
 // a warm start, its rigid motion as the start. None when it gives no zone to solve on.
-std::optional<SolveResult> solveWithinPrescribedReach(const Problem& problem, const SolverSpec& spec,
-                                                      const StrategyInputs& inputs, ZoneStart from) {
+std::optional<SolveResult> solveWithinPrescribedReach(const Problem& problem, const FasAprioriOptions& options,
+                                                      const SolveInputs& inputs, ZoneStart from) {
   const std::optional<Eigen::MatrixXd> W = prescribedTranslation(problem);
   if (!W) return std::nullopt;
-  std::vector<int> reach = nodesWithinReach(problem.contact, *W, kReachMargin);
-  if (reach.empty() || reach.size() > kWholeShare * problem.contact.size()) return std::nullopt;
+  std::vector<int> reach = nodesWithinReach(problem.contact, *W, options.zone.reach_margin);
+  if (reach.empty() || reach.size() > options.zone.whole_share * problem.contact.size()) return std::nullopt;
   InterfaceHistory rigid;
   if (!from.start) {
     rigid = rigidMotionHistory(problem.contact, *W);
@@ -185,29 +173,31 @@ std::optional<SolveResult> solveWithinPrescribedReach(const Problem& problem, co
   from.hat = from.start;
   from.zone_origin = inputs.start ? "the zone within reach of the prescribed motion"
                                   : "the zone within reach of the prescribed motion, started from it carried rigidly";
-  return solveAprioriOnZone(problem, spec, inputs, std::move(reach), from);
+  return solveAprioriOnZone(problem, options, inputs, std::move(reach), from);
 }
 
 }  // namespace
 
-SolveResult solveAprioriOnContactZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs) {
+SolveResult solveAprioriOnContactZone(const Problem& problem, const FasAprioriOptions& options,
+                                      const SolveInputs& inputs) {
   const auto start = Clock::now();
   if (inputs.start) requireFits(*inputs.start, problem);
   if (inputs.basis_seed) requireFits(*inputs.basis_seed, problem);
   ZoneStart from;
   from.start = inputs.start;
   from.clock = start;
-  if (std::optional<SolveResult> out = solveWithinPrescribedReach(problem, spec, inputs, from)) return std::move(*out);
-  const FirstRelaxation first = firstRelaxation(problem, spec, inputs, start);
+  if (std::optional<SolveResult> out = solveWithinPrescribedReach(problem, options, inputs, from))
+    return std::move(*out);
+  const FirstRelaxation first = firstRelaxation(problem, options, inputs, start);
   if (inputs.callback && !inputs.callback(first.record)) return stoppedAtFirst(first);
   const int n = problem.contact.size();
   std::vector<int> zone = first.zone;
-  if (zone.empty() || zone.size() > kWholeShare * n) zone = otherNodes(n, {});
+  if (zone.empty() || zone.size() > options.zone.whole_share * n) zone = otherNodes(n, {});
   from.hat = &first.hat;
   from.first = first.record;
   from.measure_s = first.measure_s;
   from.zone_origin = "first relaxation on all " + std::to_string(n);
-  return solveAprioriOnZone(problem, spec, inputs, std::move(zone), from);
+  return solveAprioriOnZone(problem, options, inputs, std::move(zone), from);
 }
 
 namespace {
@@ -215,8 +205,9 @@ namespace {
 // The rounds of solveAprioriOnZone: what they have spent so far, and where the next one starts.
 class ZoneRounds {
  public:
-  ZoneRounds(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs, const ZoneStart& from)
-      : problem_(problem), spec_(spec), inputs_(inputs), from_(from), first_hat_(from.hat), measure_s_(from.measure_s) {
+  ZoneRounds(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs, const ZoneStart& from)
+      : problem_(problem), options_(options), inputs_(inputs), from_(from), first_hat_(from.hat),
+        measure_s_(from.measure_s) {
     if (from.first) {
       history_.push_back(*from.first);
       offsets_ = {from.first->iteration, from.first->relaxations, from.first->sparse_solves, 0.0};
@@ -249,17 +240,22 @@ class ZoneRounds {
     // The iteration cap holds for the rounds together, and a restricted round gets half of what is
     // left: one that needs more is failing (κ = 0.01 of the hard cases), and the other half is the
     // whole interface's from the start.
-    SolverSpec budget = spec_;
-    const int left = spec_.max_iterations - offsets_.relaxations;
-    budget.max_iterations = std::max(1, whole ? left : left / 2);
+    FasAprioriOptions budget = options_;
+    const int left = options_.fas.stop.max_iterations - offsets_.relaxations;
+    budget.fas.stop.max_iterations = std::max(1, whole ? left : left / 2);
     // Nested iteration in time (nested_in_time.hpp) begins a solve from scratch: not from a warm
     // start, nor in a later round, which starts from the last one.
-    if (inputs_.start || rounds_++ > 0) budget.fas.nested_instants = 0;
+    if (inputs_.start || rounds_++ > 0) budget.nested.instants = 0;
     Eigen::MatrixXd far_v;
+    const InterfaceHistory start = startOn(rows);
+    SolveInputs round;
+    round.reference = measure_ ? &*measure_ : nullptr;
+    round.callback = shift;
+    round.start = &start;
+    round.basis_seed = seed_ ? &part_seed : nullptr;
+    round.spatial_modes = inputs_.spatial_modes;
     // B of the nodes left out: the rows of their sub-interface.
-    SolveResult r = solveAprioriOn(whole ? problem_ : part, budget, startOn(rows),
-                                   seed_ ? &part_seed : nullptr, measure_ ? &*measure_ : nullptr, shift,
-                                   restrictToNodes(contact, far).B, far_v, inputs_.spatial_modes);
+    SolveResult r = solveAprioriOn(whole ? problem_ : part, budget, round, restrictToNodes(contact, far).B, far_v);
     count(r.summary, withClock(before, clock.value_or(clockOffset(r.summary.wall_s))));
     penetrating_nodes = penetrating(contact, far, far_v);
     return liftedResult(std::move(r), rows, far_rows, far_v);
@@ -267,7 +263,8 @@ class ZoneRounds {
 
   /// Whether the rounds must stop: the caller stopped them or the iteration cap is spent.
   bool spent(const SolveSummary& last) const {
-    return last.termination == Termination::StoppedByCallback || offsets_.relaxations >= spec_.max_iterations;
+    return last.termination == Termination::StoppedByCallback ||
+           offsets_.relaxations >= options_.fas.stop.max_iterations;
   }
 
   /// The next round starts from `last` (its ŝ and directions taken), or from the first start when it
@@ -286,18 +283,18 @@ class ZoneRounds {
     if (inputs_.basis_seed) seed_ = *inputs_.basis_seed;
   }
 
-  /// The summary of all rounds: their history, counts and time; `rounds` says what they did.
-  void finish(SolveSummary& summary, const std::string& rounds) {
-    const std::string inner = "after " + std::to_string(summary.iterations) + " iterations";
-    const size_t at = summary.message.find(inner);
-    if (at != std::string::npos)
-      summary.message.replace(at, inner.size(), "after " + std::to_string(offsets_.iterations) + " iterations");
-    summary.message += "; solved on " + rounds;
-    if (!from_.zone_origin.empty()) summary.message += " (" + from_.zone_origin + ")";
+  /// The summary of all rounds: their history, counts and time, and the stage that says what they did
+  /// (`rounds`, the last zone's `nodes`). A converged solve's reason counts the iterations of all.
+  void finish(SolveSummary& summary, const std::string& rounds, int nodes) {
     summary.history = std::move(history_);
     summary.iterations = offsets_.iterations;
     summary.relaxations = offsets_.relaxations;
     summary.wall_s = clockOffset(0.0);
+    if (summary.converged() && !summary.history.empty())
+      summary.reason = convergedReason(summary.history.back(), options_.fas.stop.tolerance);
+    SolveStage stage{SolveStage::Kind::ContactZone, "solved on " + rounds, 0, 0, 0.0, nodes, rounds_};
+    if (!from_.zone_origin.empty()) stage.description += " (" + from_.zone_origin + ")";
+    summary.addStage(std::move(stage));
   }
 
  private:
@@ -337,8 +334,8 @@ class ZoneRounds {
   }
 
   const Problem& problem_;
-  const SolverSpec& spec_;
-  const StrategyInputs& inputs_;
+  const FasAprioriOptions& options_;
+  const SolveInputs& inputs_;
   const ZoneStart& from_;
   const InterfaceHistory* first_hat_;     ///< where the first round starts (null: s = 0)
   std::optional<InterfaceHistory> hat_;  ///< where a later round starts, when not from first_hat_
@@ -356,10 +353,10 @@ std::string zoneSize(const std::vector<int>& zone, int n) {
 
 }  // namespace
 
-SolveResult solveAprioriOnZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs,
+SolveResult solveAprioriOnZone(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
                                std::vector<int> zone, const ZoneStart& from) {
   const int n = problem.contact.size();
-  ZoneRounds rounds(problem, spec, inputs, from);
+  ZoneRounds rounds(problem, options, inputs, from);
   std::string log;  // what each round did, for the summary's message
   for (int round = 1;; ++round) {
     std::vector<int> wrong;
@@ -367,11 +364,11 @@ SolveResult solveAprioriOnZone(const Problem& problem, const SolverSpec& spec, c
     const SolveSummary& sum = out.summary;
     if ((wrong.empty() && sum.converged()) || rounds.spent(sum) || static_cast<int>(zone.size()) == n) {
       log += zoneSize(zone, n) + (wrong.empty() ? "" : ", " + std::to_string(wrong.size()) + " nodes left out penetrating");
-      rounds.finish(out.summary, log);
+      rounds.finish(out.summary, log, static_cast<int>(zone.size()));
       return out;
     }
     // Nodes left out that penetrate join the zone and the solve goes on from where it stopped; after
-    // kZoneRounds rounds, or a round that did not converge, the whole interface.
+    // options.zone.rounds rounds, or a round that did not converge, the whole interface.
     log += zoneSize(zone, n) + ", then " +
            (sum.converged() ? "(" + std::to_string(wrong.size()) + " nodes left out penetrating) "
                             : "(that solve " + std::string(toString(sum.termination)) + ", from the start) ");
@@ -379,8 +376,8 @@ SolveResult solveAprioriOnZone(const Problem& problem, const SolverSpec& spec, c
     rounds.startNext(std::move(out));
     zone.insert(zone.end(), wrong.begin(), wrong.end());
     std::sort(zone.begin(), zone.end());
-    if (!converged || round >= kZoneRounds) zone = otherNodes(n, {});
+    if (!converged || round >= options.zone.rounds) zone = otherNodes(n, {});
   }
 }
 
-}  // namespace stc
+}  // namespace stc::fas

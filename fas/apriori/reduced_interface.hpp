@@ -9,9 +9,10 @@
 //      within its reach, before any solve (src/problem/prescribed_reach.hpp: gaps that the motion,
 //      carried rigidly, closes at some instant), and without a warm start the iteration starts from
 //      the interface history of that rigid motion; otherwise, or when that set is empty or above
-//      three quarters of the nodes, one relaxation on the whole interface from the start and the
-//      nodes of its contact zone (fas/coarse_zone.hpp with half its margin: closed at some instant,
-//      or nearer the obstacle than δ/2, δ = max |v_n − v̂_n| the largest normal jump of that
+//      a share of the nodes (ReducedInterfaceOptions::whole_share, three quarters), one relaxation on
+//      the whole interface from the start and the nodes of its contact zone (fas/coarse_zone.hpp with
+//      a share of its margin, ReducedInterfaceOptions::margin = 1/2: closed at some instant, or
+//      nearer the obstacle than δ/2, δ = max |v_n − v̂_n| the largest normal jump of that
 //      relaxation; δ when δ/2 leaves no node);
 //   2. solves the problem on those nodes alone (restrictToNodes: the same body and loads), its
 //      iterates' true error measured with zero forces on the other rows (ErrorOnRows), which is
@@ -21,12 +22,12 @@
 //      displacement history u = U_F G + X c, must keep g0 + v_n ≥ 0 at every instant. The solution
 //      then satisfies every condition of the whole problem (equilibrium with λ_F = 0, the contact
 //      law on the zone, open far nodes). Nodes that penetrate join the zone and the solve goes on from
-//      where it stopped; after kZoneRounds such rounds the whole interface is solved. A restricted
+//      where it stopped; after ReducedInterfaceOptions::rounds such rounds the whole interface is solved. A restricted
 //      round gets half of the iterations left; one that does not converge gives way to the whole
 //      interface from the first start.
 // The result is lifted to the whole interface: λ = 0 and v = B_F u on the nodes left out. Counts and
 // times include the first relaxation, when there is one, and everything before the restricted solve's
-// first iteration.
+// first iteration; the summary records the rounds as a stage (SolveStage::ContactZone).
 #include <Eigen/SparseCore>
 #include <atomic>
 #include <chrono>
@@ -34,10 +35,13 @@
 #include <string>
 #include <vector>
 
+#include "stcontact/options/fas_apriori_options.hpp"
+#include "stcontact/problem/problem.hpp"
 #include "stcontact/solver/error_measure.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/solver/solve_inputs.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
-namespace stc {
+namespace stc::fas {
 
 /// The true-error measure of a solve on some rows of the interface: the other rows carry no force.
 class ErrorOnRows : public ErrorMeasure {
@@ -57,17 +61,17 @@ class ErrorOnRows : public ErrorMeasure {
 };
 
 /// One `fas-apriori` solve of `problem` (its separated stage, a priori basis and FAS cycle) from
-/// `start`, with the directions started from `seed` when given; `far_v` receives B_far u of the
-/// last iterate's displacement history (B_far: rows × n_free, e.g. the rows of nodes left out);
-/// the result's spatial modes are left empty unless `spatial_modes`.
-SolveResult solveAprioriOn(const Problem& problem, const SolverSpec& spec, const InterfaceHistory& start,
-                           const Eigen::MatrixXd* seed, const ErrorMeasure* reference, const IterationCallback& callback,
-                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v, bool spatial_modes = true);
+/// inputs.start, with the directions started from inputs.basis_seed when given; `far_v` receives
+/// B_far u of the last iterate's displacement history (B_far: rows × n_free, e.g. the rows of nodes
+/// left out); the result's spatial modes are left empty unless inputs.spatial_modes.
+SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
+                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v);
 
 /// `fas-apriori` with the interface reduced to its contact zone (the header's steps 1–3). Falls back
-/// to the whole interface when the first relaxation's zone holds more than three quarters of the
-/// nodes.
-SolveResult solveAprioriOnContactZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs);
+/// to the whole interface when the first relaxation's zone holds more than options.zone.whole_share
+/// of the nodes.
+SolveResult solveAprioriOnContactZone(const Problem& problem, const FasAprioriOptions& options,
+                                      const SolveInputs& inputs);
 
 /// Where steps 2–3 start: ŝ on the whole interface (the first start, or the first relaxation's local
 /// stage), and what was spent before (counted in the result). The histories pointed to must outlive
@@ -84,7 +88,7 @@ struct ZoneStart {
 /// Steps 2–3 from the contact nodes `zone` (indices, increasing): restricted solves, each followed by
 /// the check of the nodes left out, until none penetrates (solveAprioriOnContactZone after step 1; a
 /// test may give a zone that misses nodes).
-SolveResult solveAprioriOnZone(const Problem& problem, const SolverSpec& spec, const StrategyInputs& inputs,
+SolveResult solveAprioriOnZone(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
                                std::vector<int> zone, const ZoneStart& from);
 
-}  // namespace stc
+}  // namespace stc::fas

@@ -161,15 +161,6 @@ std::string describeSuccess(const SolveSummary& summary, int m, const NewtonTota
 
 }  // namespace
 
-void IncrementalOptions::validate() const {
-  std::ostringstream msg;
-  if (!(tolerance > 0.0 && tolerance < 1.0))
-    msg << "IncrementalOptions.tolerance = " << tolerance << " must be finite and in (0, 1)";
-  else if (max_newton_iterations < 1)
-    msg << "IncrementalOptions.max_newton_iterations = " << max_newton_iterations << " must be >= 1";
-  if (!msg.str().empty()) throw InputError(msg.str());
-}
-
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -194,7 +185,7 @@ SolveResult march(const Problem& problem, const IterationCallback& callback, Clo
     totals.add(o);
     if (!o.converged) {
       summary.termination = Termination::NumericalIssue;
-      summary.message = describeFailure(problem, k, o, totals.iterations);
+      summary.reason = describeFailure(problem, k, o, totals.iterations);
       break;
     }
     lambda = o.lambda;
@@ -210,7 +201,8 @@ SolveResult march(const Problem& problem, const IterationCallback& callback, Clo
   }
   summary.iterations = static_cast<int>(summary.history.size());
   summary.wall_s = elapsed();
-  if (summary.termination != Termination::NumericalIssue) summary.message = describeSuccess(summary, m, totals);
+  if (summary.termination != Termination::NumericalIssue) summary.reason = describeSuccess(summary, m, totals);
+  summary.composeMessage();
   return result;
 }
 
@@ -246,16 +238,17 @@ SolveResult solveCone(const Problem& problem, const IncrementalOptions& options,
   SolveResult result =
       march(problem, callback, start, solve_at, [&] { return load_solves + delassus.sparseSolves(); });
   std::ostringstream note;
-  note << "; Delassus columns of " << delassus.nodesComputed() << " of " << problem.contact.size()
+  note << "Delassus columns of " << delassus.nodesComputed() << " of " << problem.contact.size()
        << " contact nodes (" << delassus.bytes() / 1e6 << " MB)";
-  result.summary.message += note.str();
+  result.summary.remarks.push_back(note.str());
+  result.summary.composeMessage();
   return result;
 }
 
 }  // namespace
 
-SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& options,
-                             const IterationCallback& callback) {
+SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& options, const SolveInputs& inputs) {
+  const IterationCallback& callback = inputs.callback;
   options.validate();
   const auto start = Clock::now();
   const SpdFactor factor(problem.stiffness_free, "the free-dof stiffness K_ff");

@@ -41,25 +41,12 @@
 // 16 n_C n_A,ever bytes; when the active set itself is large, do not form W at all and solve each
 // Newton step as the sparse saddle-point system [K_ff  B_Aᵀ; B_A  0] (sparse LDLᵀ, or a Schur
 // complement by CG preconditioned with diag(W)).
+#include "stcontact/options/incremental_options.hpp"
 #include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/solve_inputs.hpp"
 #include "stcontact/solver/solve_result.hpp"
 
 namespace stc {
-
-struct IncrementalOptions {
-  /// On ‖F‖∞ / S_k above: a few hundred ulps, so the reference is exact to round-off.
-  double tolerance = 1e-13;
-  /// Per instant: the active set settles in a handful of steps; the cap only stops cycling.
-  int max_newton_iterations = 50;
-  /// Solve a 2D scene with the d-dimensional cone law and lazily computed Delassus columns
-  /// (cone_newton.hpp), as every 3D scene is: the same solution to round-off, memory
-  /// 16 n_C n_ever-closed bytes instead of 32 n_C².
-  bool cone_law = false;
-
-  /// Throws InputError naming the field, its value and the rule (0 < tolerance < 1 and finite,
-  /// max_newton_iterations ≥ 1).
-  void validate() const;
-};
 
 /// Solves every instant of `problem`. Returns the interface history (v, λ) and a summary: solver
 /// "incremental", one IterationRecord per instant (iteration = k + 1, relaxations = 0, indicator =
@@ -68,8 +55,9 @@ struct IncrementalOptions {
 /// instant) or StoppedByCallback (the callback is called after every instant). summary.indicator is
 /// the largest final residual over the instants. The message always contains
 /// "<N> Newton iterations" with N the total over the instants solved.
+/// Of `inputs` it uses the callback alone (it marches from the unloaded state, and is exact).
 /// Throws InputError if the options are invalid or K_ff is not positive definite.
 SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& options = {},
-                             const IterationCallback& callback = {});
+                             const SolveInputs& inputs = {});
 
 }  // namespace stc

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "stcontact/core/solver_settings.hpp"
+#include "stcontact/options/solver_spec.hpp"
 
 namespace stc {
 
@@ -81,43 +81,6 @@ struct LoadSpec {
   History history;
 };
 
-/// [solver] keys of the two-level FAS (docs/method.md §4; defaults: src/core/solver_settings.hpp, the
-/// seed paper's §4.2 settings).
-struct FasSpec {
-  int pre_relaxations = defaults::pre_relaxations;          ///< ν1 >= 1
-  int post_relaxations = defaults::post_relaxations;        ///< ν2 >= 0
-  int coarse_iterations = defaults::coarse_iterations;      ///< i_C >= 1
-  int coarse_anderson = defaults::coarse_anderson;          ///< Anderson depth of the coarse step, >= 0 (0: off)
-  bool coarse_zone = defaults::coarse_zone;                 ///< the coarse step on its contact zone only
-  bool reduce_interface = defaults::reduce_interface;       ///< fas-apriori on the nodes that can touch
-  /// fas-apriori: instants of the sub-grid it starts from on long grids (0: none; otherwise >= 2)
-  int nested_instants = defaults::nested_instants;
-  int residual_vectors = defaults::residual_vectors;        ///< N_res >= 0
-  int svd_modes = defaults::svd_modes;                      ///< fas-aposteriori: leading energy-SVD modes (>= 0)
-  /// fas-apriori: leading energy modes of the a priori expansion in the coarse space (>= 0; 0:
-  /// the modes of its change alone).
-  int pgd_max_modes = defaults::pgd_max_modes;
-  /// fas-apriori: leading modes of the expansion's change since the previous coarse step (>= 0).
-  int pgd_increment_modes = defaults::pgd_increment_modes;
-  /// fas-apriori: coarse space from the next global stage's projected right-hand side.
-  bool pgd_anticipate = defaults::pgd_anticipate;
-  double pgd_gap_share = defaults::pgd_gap_share;  ///< latin-pgd, fas-apriori: γ in (0, 1)
-  CoarseStart coarse_start = defaults::coarse_start;        ///< "zero" (docs/method.md §4 option a) or "mismatch" (b)
-  bool adapt_coarse_iterations = true;  ///< i_C halved on a rejected correction, +1 on an accepted one
-  /// θ >= 1 of the FAS safeguard; unset: defaults::safeguardGrowth of the scene's dimension.
-  std::optional<double> safeguard_growth;
-};
-
-/// [solver]: choice and common options (each solver validates its own further options).
-struct SolverSpec {
-  std::string name = "fas-apriori";  ///< latin, latin-pgd, fas-aposteriori, fas-apriori, incremental
-  double tolerance = defaults::tolerance;         ///< on the error estimate (docs/method.md §2), > 0
-  int max_iterations = defaults::max_iterations;  ///< >= 1
-  double search_scale = 4.0;         ///< kappa of docs/method.md §2, > 0; 4 from docs/search_direction.md
-  double relaxation = 1.0;           ///< omega in (0, 1]
-  FasSpec fas;                       ///< keys pre_relaxations … adapt_coarse_iterations of [solver]
-};
-
 /// [output]: what to write beside the CSV/JSON files.
 struct OutputSpec {
   bool vtu = true;      ///< write solution.pvd + vtu/
@@ -136,12 +99,9 @@ struct Scene {
   TimeSpec time;
   std::vector<DirichletSpec> dirichlet;
   std::vector<LoadSpec> loads;
-  SolverSpec solver;
+  SolverSpec solver;             ///< [solver]: the strategy and every strategy's options (src/options/)
   OutputSpec output;
   std::string parameters_json;  ///< the scene as read (overrides applied), as a JSON object
-  /// Keys read but without effect (deprecated, docs/changelog.md): one message each, for the
-  /// program to print as warnings.
-  std::vector<std::string> warnings;
 };
 
 }  // namespace stc

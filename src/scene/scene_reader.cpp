@@ -2,6 +2,8 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
@@ -38,6 +40,10 @@ std::string readKeyword(const TableView& table, std::string_view key, std::span<
 std::string readKeyword(const TableView& table, std::string_view key,
                         std::initializer_list<std::string_view> allowed) {
   return readKeyword(table, key, std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
+
+std::string readKeyword(const TableView& table, std::string_view key, const std::vector<std::string_view>& allowed) {
+  return readKeyword(table, key, std::span<const std::string_view>(allowed.data(), allowed.size()));
 }
 
 /// Reads a Component: "x" or "y", and "z" in a 3D scene.
@@ -281,81 +287,86 @@ std::vector<Spec> readHistories(const TableView& root, std::string_view key, int
   return specs;
 }
 
-/// Reads a non-negative (or >= minimum) integer key of [solver] into `value`.
-void readCount(const TableView& table, std::string_view key, int minimum, int& value) {
-  value = table.optionalInt(key).value_or(value);
-  requireRange(table, key, value, value >= minimum, minimum == 0 ? "must be >= 0" : "must be >= 1");
+/// Keys of [solver] without effect since 0.2.0, refused from 0.3.0 (docs/changelog.md).
+constexpr std::array<std::string_view, 2> kRemovedSolverKeys = {"pgd_modes_per_cycle", "pgd_seed_share"};
+
+void refuseRemoved(const TableView& solver) {
+  for (const std::string_view key : kRemovedSolverKeys)
+    if (solver.has(key)) {
+      const std::string path = solver.keyPath(key);
+      solver.errors().fail(path, "key '" + path + "' was removed in version 0.3.0 (it had no effect since 0.2.0; "
+                                 "docs/changelog.md): delete it");
+    }
 }
 
-/// Keys of [solver] that have no effect since 0.2.0 (docs/changelog.md): still range-checked as in
-/// 0.1.0, so that a scene 0.1.0 accepted is accepted, with a warning each.
-void readDeprecated(const TableView& solver, std::vector<std::string>& warnings) {
-  int modes_per_cycle = 1;
-  readCount(solver, "pgd_modes_per_cycle", 1, modes_per_cycle);
-  const double share = solver.optionalNumber("pgd_seed_share").value_or(0.0);
-  requireRange(solver, "pgd_seed_share", share, share >= 0.0 && share <= 1.0, "must be in [0, 1]");
-  for (const char* key : {"pgd_modes_per_cycle", "pgd_seed_share"})
-    if (solver.has(key))
-      warnings.push_back(std::string("key 'solver.") + key +
-                         "' has no effect since version 0.2.0 and will be refused from 0.3.0 (docs/changelog.md)");
-}
-
-FasSpec readFas(const TableView& solver) {
-  FasSpec fas;
-  readCount(solver, "pre_relaxations", 1, fas.pre_relaxations);
-  readCount(solver, "post_relaxations", 0, fas.post_relaxations);
-  readCount(solver, "coarse_iterations", 1, fas.coarse_iterations);
-  readCount(solver, "coarse_anderson", 0, fas.coarse_anderson);
-  readCount(solver, "residual_vectors", 0, fas.residual_vectors);
-  readCount(solver, "svd_modes", 0, fas.svd_modes);
-  readCount(solver, "pgd_max_modes", 0, fas.pgd_max_modes);
-  readCount(solver, "pgd_increment_modes", 0, fas.pgd_increment_modes);
-  fas.pgd_anticipate = solver.optionalBool("pgd_anticipate").value_or(fas.pgd_anticipate);
-  fas.pgd_gap_share = solver.optionalNumber("pgd_gap_share").value_or(fas.pgd_gap_share);
-  requireRange(solver, "pgd_gap_share", fas.pgd_gap_share, fas.pgd_gap_share > 0.0 && fas.pgd_gap_share < 1.0,
-               "must be in (0, 1)");
-  fas.safeguard_growth = solver.optionalNumber("safeguard_growth");
-  if (fas.safeguard_growth)
-    requireRange(solver, "safeguard_growth", *fas.safeguard_growth,
-                 *fas.safeguard_growth >= 1.0 && std::isfinite(*fas.safeguard_growth), "must be >= 1");
-  fas.coarse_zone = solver.optionalBool("coarse_zone").value_or(fas.coarse_zone);
-  fas.reduce_interface = solver.optionalBool("reduce_interface").value_or(fas.reduce_interface);
-  fas.nested_instants = solver.optionalInt("nested_instants").value_or(fas.nested_instants);
-  requireRange(solver, "nested_instants", fas.nested_instants, fas.nested_instants == 0 || fas.nested_instants >= 2,
-               "must be 0 (off) or >= 2");
-  fas.adapt_coarse_iterations =
-      solver.optionalBool("adapt_coarse_iterations").value_or(fas.adapt_coarse_iterations);
-  if (solver.has("coarse_start"))
-    fas.coarse_start = readKeyword(solver, "coarse_start", {"zero", "mismatch"}) == "mismatch"
-                           ? CoarseStart::InterfaceMismatch
-                           : CoarseStart::ZeroCorrection;
-  return fas;
-}
-
-SolverSpec readSolver(const TableView& root, std::vector<std::string>& warnings) {
-  SolverSpec spec;
-  const auto solver = root.optionalTable(
-      "solver", {"name", "tolerance", "max_iterations", "search_scale", "relaxation", "pre_relaxations",
-                 "post_relaxations", "coarse_iterations", "coarse_anderson", "coarse_zone", "reduce_interface",
-                 "nested_instants", "adapt_coarse_iterations",
-                 "safeguard_growth", "residual_vectors", "svd_modes", "coarse_start", "pgd_max_modes",
-                 "pgd_increment_modes", "pgd_anticipate", "pgd_gap_share", "pgd_modes_per_cycle", "pgd_seed_share"});
-  if (!solver) return spec;
-  if (solver->has("name")) {
-    spec.name = readKeyword(*solver, "name", kSolverNames);
+/// The scene keys of an options struct's fields (src/options/option_fields.hpp), each once, in order.
+class SceneKeys {
+ public:
+  template <class T, class Rule>
+  void operator()(const char* key, const T&, const Rule&, Exposure exposure = Exposure::SceneKey) {
+    if (exposure == Exposure::SceneKey && std::find(keys_.begin(), keys_.end(), key) == keys_.end())
+      keys_.emplace_back(key);
   }
-  spec.tolerance = solver->optionalNumber("tolerance").value_or(spec.tolerance);
-  requireRange(*solver, "tolerance", spec.tolerance, spec.tolerance > 0.0, "must be > 0");
-  spec.max_iterations = solver->optionalInt("max_iterations").value_or(spec.max_iterations);
-  requireRange(*solver, "max_iterations", spec.max_iterations, spec.max_iterations >= 1,
-               "must be >= 1");
-  spec.search_scale = solver->optionalNumber("search_scale").value_or(spec.search_scale);
-  requireRange(*solver, "search_scale", spec.search_scale, spec.search_scale > 0.0, "must be > 0");
-  spec.relaxation = solver->optionalNumber("relaxation").value_or(spec.relaxation);
-  requireRange(*solver, "relaxation", spec.relaxation,
-               spec.relaxation > 0.0 && spec.relaxation <= 1.0, "must be in (0, 1]");
-  spec.fas = readFas(*solver);
-  readDeprecated(*solver, warnings);
+  std::vector<std::string_view> keys() const { return keys_; }
+
+ private:
+  std::vector<std::string_view> keys_;
+};
+
+/// Reads each field's scene key, when present, into the field and checks it against the field's range
+/// (the same range validate() checks, worded the same).
+class SceneFieldReader {
+ public:
+  explicit SceneFieldReader(const TableView& table) : table_(table) {}
+
+  void operator()(const char* key, int& value, const Range& range, Exposure exposure = Exposure::SceneKey) const {
+    if (!present(key, exposure)) return;
+    value = *table_.optionalInt(key);
+    requireRange(table_, key, value, range.holds(value), range.rule);
+  }
+  void operator()(const char* key, double& value, const Range& range, Exposure exposure = Exposure::SceneKey) const {
+    if (!present(key, exposure)) return;
+    value = *table_.optionalNumber(key);
+    requireRange(table_, key, value, range.holds(value), range.rule);
+  }
+  void operator()(const char* key, std::optional<double>& value, const Range& range,
+                  Exposure exposure = Exposure::SceneKey) const {
+    if (!present(key, exposure)) return;
+    double read = 0.0;
+    (*this)(key, read, range, exposure);
+    value = read;
+  }
+  void operator()(const char* key, bool& value, const Range&, Exposure exposure = Exposure::SceneKey) const {
+    if (present(key, exposure)) value = *table_.optionalBool(key);
+  }
+  template <class E>
+  void operator()(const char* key, E& value, Keywords<E> names, Exposure exposure = Exposure::SceneKey) const {
+    if (!present(key, exposure)) return;
+    std::vector<std::string_view> allowed;
+    for (const auto& [name, v] : names) allowed.push_back(name);
+    const std::string text = readKeyword(table_, key, allowed);
+    for (const auto& [name, v] : names)
+      if (name == text) value = v;
+  }
+
+ private:
+  bool present(const char* key, Exposure exposure) const { return exposure == Exposure::SceneKey && table_.has(key); }
+  const TableView& table_;
+};
+
+SolverSpec readSolver(const TableView& root) {
+  SolverSpec spec;
+  SceneKeys keys;
+  keys("name", spec.strategy, Keywords<Strategy>(kStrategies));
+  SolverSpec::fields(spec, keys);
+  std::vector<std::string_view> allowed = keys.keys();
+  allowed.insert(allowed.end(), kRemovedSolverKeys.begin(), kRemovedSolverKeys.end());
+  const auto solver = root.optionalTable("solver", allowed);
+  if (!solver) return spec;
+  refuseRemoved(*solver);
+  const SceneFieldReader read(*solver);
+  read("name", spec.strategy, Keywords<Strategy>(kStrategies));
+  SolverSpec::fields(spec, read);
   return spec;
 }
 
@@ -393,7 +404,7 @@ Scene readTable(const toml::table& table, const std::filesystem::path& source,
   scene.time = readTime(root);
   scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet", scene.dimension);
   scene.loads = readHistories<LoadSpec>(root, "load", scene.dimension);
-  scene.solver = readSolver(root, scene.warnings);
+  scene.solver = readSolver(root);
   scene.output = readOutput(root);
   scene.parameters_json = toJson(table);
   return scene;

@@ -5,6 +5,13 @@
 
 namespace stc {
 
+std::string convergedReason(const IterationRecord& last, double tolerance) {
+  std::ostringstream reason;
+  reason << "error estimate " << last.error_estimate << " <= tolerance " << tolerance << " after " << last.iteration
+         << " iterations (indicator " << last.indicator << ")";
+  return reason.str();
+}
+
 IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const EquilibriumEnergy* energy,
                                    const ErrorMeasure* reference, IterationCallback callback)
     : rule_(rule),
@@ -48,25 +55,21 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
   summary_.history.push_back(r);
   if (!std::isfinite(indicator) || !lambda.allFinite())
     return stop(Termination::NumericalIssue, "NaN or Inf in the iterate at iteration " + std::to_string(r.iteration));
-  if (r.error_estimate <= rule_.tolerance) {
-    std::ostringstream msg;
-    msg << "error estimate " << r.error_estimate << " <= tolerance " << rule_.tolerance << " after " << r.iteration
-        << " iterations (indicator " << indicator << ")";
-    return stop(Termination::Converged, msg.str());
-  }
+  if (r.error_estimate <= rule_.stop.tolerance)
+    return stop(Termination::Converged, convergedReason(r, rule_.stop.tolerance));
   if (r.iteration == 1 || indicator < 0.99 * best_indicator_) {
     best_indicator_ = indicator;
     best_iteration_ = r.iteration;
-  } else if (rule_.stagnation_window > 0 && r.iteration - best_iteration_ >= rule_.stagnation_window) {
+  } else if (rule_.stop.stagnation_window > 0 && r.iteration - best_iteration_ >= rule_.stop.stagnation_window) {
     std::ostringstream msg;
-    msg << "stagnated: indicator has not decreased by 1% in " << rule_.stagnation_window << " iterations (best "
+    msg << "stagnated: indicator has not decreased by 1% in " << rule_.stop.stagnation_window << " iterations (best "
         << best_indicator_ << ")";
     return stop(Termination::Stagnated, msg.str());
   }
   if (callback_ && !callback_(r)) return stop(Termination::StoppedByCallback, "stopped by the callback");
-  if (r.iteration >= rule_.max_iterations) {
+  if (r.iteration >= rule_.stop.max_iterations) {
     std::ostringstream msg;
-    msg << "iteration limit " << rule_.max_iterations << " reached with indicator " << indicator;
+    msg << "iteration limit " << rule_.stop.max_iterations << " reached with indicator " << indicator;
     return stop(Termination::MaxIterations, msg.str());
   }
   return false;
@@ -78,9 +81,9 @@ double IterationMonitor::estimate(const InterfaceHistory& s, double indicator) {
                                                                   : estimator_.record(s, energy);
 }
 
-bool IterationMonitor::stop(Termination termination, std::string message) {
+bool IterationMonitor::stop(Termination termination, std::string reason) {
   summary_.termination = termination;
-  summary_.message = std::move(message);
+  summary_.reason = std::move(reason);
   return true;
 }
 
@@ -94,6 +97,7 @@ SolveSummary IterationMonitor::finish() {
     summary_.error = last.error;
   }
   summary_.wall_s = elapsed();
+  summary_.composeMessage();
   return summary_;
 }
 

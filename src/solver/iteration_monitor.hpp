@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "stcontact/core/solver_settings.hpp"
+#include "stcontact/options/stopping_options.hpp"
 #include "stcontact/solver/calibrated_estimate.hpp"
 #include "stcontact/solver/equilibrium_energy.hpp"
 #include "stcontact/solver/error_estimate.hpp"
@@ -23,10 +23,10 @@ enum class EstimateKind {
   CalibratedIndicator,  ///< CalibratedIndicatorEstimator: the indicator scaled by earlier iterates (FAS)
 };
 
+/// The strategy's stopping options and the estimate it stops on. The estimator's own constants are
+/// set by the strategy that knows its iteration (FAS: the calibrated indicator and its safety).
 struct StoppingRule {
-  double tolerance = defaults::tolerance;  ///< on the error estimate (the true error it estimates, docs/method.md §2)
-  int max_iterations = defaults::max_iterations;
-  int stagnation_window = 0;    ///< iterations without a 1% decrease of the best indicator (0: off)
+  StoppingOptions stop;         ///< tolerance on the estimate, iteration cap, stagnation window
   int estimate_period = 1;      ///< iterations per period of the iteration (ErrorEstimator)
   int estimate_order = 2;       ///< order of its extrapolation (ErrorEstimator)
   double estimate_safety = 2.0; ///< its safety factor (ErrorEstimator)
@@ -34,8 +34,11 @@ struct StoppingRule {
   double estimate_min_rate = 0.1;  ///< the smallest contraction per period it assumes
   EstimateKind estimate_kind = EstimateKind::Extrapolation;
   double calibration_safety = 2.5;  ///< s of CalibratedIndicatorEstimator
-
 };
+
+/// The reason of a converged solve whose last record is `last` ("error estimate E <= tolerance T after
+/// N iterations (indicator I)").
+std::string convergedReason(const IterationRecord& last, double tolerance);
 
 class IterationMonitor {
  public:
@@ -58,7 +61,7 @@ class IterationMonitor {
   double elapsed() const;
 
  private:
-  bool stop(Termination termination, std::string message);
+  bool stop(Termination termination, std::string reason);
   double estimate(const InterfaceHistory& s, double indicator);  ///< by rule_.estimate_kind
   std::optional<double> measureError(const Eigen::MatrixXd& lambda);  // and adds its time to measure_s_
 

@@ -16,11 +16,11 @@ struct SolveResult {
   std::optional<InterfaceHistory> contact_admissible;
   /// The spatial modes of the basis the strategy built a priori (fas-apriori, latin-pgd): n_free × r,
   /// orthonormal in the energy product of this problem's K + Bᵀ k B; empty for the others. A solve of
-  /// a neighbouring problem may start its basis from them (StrategyInputs::basis_seed).
+  /// a neighbouring problem may start its basis from them (SolveInputs::basis_seed).
   Eigen::MatrixXd spatial_modes;
   /// The interface directions of a separated global stage (fas-apriori, latin-pgd; 2n_C × p,
   /// pgd/response_basis.hpp); empty for the others. A solve of a neighbouring problem may start its
-  /// directions from them (StrategyInputs::basis_seed): a warm start.
+  /// directions from them (SolveInputs::basis_seed): a warm start.
   Eigen::MatrixXd interface_directions;
 
   const InterfaceHistory& admissible() const { return contact_admissible ? *contact_admissible : interface; }

@@ -1,5 +1,7 @@
 #include "stcontact/solver/solve_summary.hpp"
 
+#include <utility>
+
 namespace stc {
 
 const char* toString(Termination termination) {
@@ -11,6 +13,17 @@ const char* toString(Termination termination) {
     case Termination::StoppedByCallback: return "stopped_by_callback";
   }
   return "unknown";
+}
+
+void SolveSummary::composeMessage() {
+  message = reason;
+  for (const std::string& remark : remarks) message += "; " + remark;
+  for (const SolveStage& stage : stages) message += "; " + stage.description;
+}
+
+void SolveSummary::addStage(SolveStage stage) {
+  stages.push_back(std::move(stage));
+  composeMessage();
 }
 
 }  // namespace stc

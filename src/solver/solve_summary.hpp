@@ -25,10 +25,29 @@ struct IterationRecord {
   double wall_s = 0.0;            ///< since the start of the solve
 };
 
+/// A part of a solve beside its main iteration (docs/method.md §5): the solve on a sub-grid of
+/// instants that nested iteration starts from, or the rounds of the reduced interface. The history's
+/// counts and times include what a stage spent.
+struct SolveStage {
+  enum class Kind { SubGrid, ContactZone };
+  Kind kind = Kind::SubGrid;
+  std::string description;  ///< what it did: its clause of the summary's message
+  int relaxations = 0;      ///< SubGrid: relaxations on the sub-grid
+  int sparse_solves = 0;    ///< SubGrid: sparse solves of the sub-grid solve
+  double wall_s = 0.0;      ///< SubGrid: its time
+  int nodes = 0;            ///< ContactZone: contact nodes of the last round
+  int rounds = 0;           ///< ContactZone: solves on a zone, the last one included
+};
+
 struct SolveSummary {
   std::string solver;
   Termination termination = Termination::MaxIterations;
+  /// The whole message, as printed and written (summary.json): the reason, then the remarks, then
+  /// each stage's description, joined by "; " (composeMessage).
   std::string message;
+  std::string reason;                ///< why the iteration ended (IterationMonitor, the incremental march)
+  std::vector<std::string> remarks;  ///< what the iteration reports beside (FAS: corrections rejected)
+  std::vector<SolveStage> stages;    ///< parts of the solve beside its iteration, in order
   std::vector<IterationRecord> history;
   int iterations = 0;
   int relaxations = 0;
@@ -38,6 +57,10 @@ struct SolveSummary {
   double wall_s = 0.0;
 
   bool converged() const { return termination == Termination::Converged; }
+  /// Sets `message` from the reason, the remarks and the stages.
+  void composeMessage();
+  /// Appends `stage` and its clause to the message.
+  void addStage(SolveStage stage);
 };
 
 /// Called after every iteration; returning false stops the solve (Termination::StoppedByCallback).

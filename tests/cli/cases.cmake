@@ -3,7 +3,7 @@ set(seed ${scenes}/hemicylinder.toml)
 set(small --set mesh.arc_nodes=21 --set time.steps=21)
 
 stc_cli_test(help 0 "Usage" --help)
-stc_cli_test(version 0 "stcontact 0\\.2\\.0" --version)
+stc_cli_test(version 0 "stcontact 0\\.3\\.0" --version)
 stc_cli_test(no_command 1 "subcommand" )
 stc_cli_test(check_seed_sizes 0 "dofs +1142 \\(1088 free, 54 prescribed\\)" check ${seed})
 stc_cli_test(check_seed_contact_nodes 0 "contact nodes +101 on boundary 'arc'" check ${seed})

@@ -15,7 +15,7 @@
 
 #include "cli/csv_table.hpp"
 #include "cli/run_program.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/comparison.hpp"
 #include "stcontact/studies/number_format.hpp"
 #include "stcontact/studies/work_precision.hpp"
@@ -95,18 +95,18 @@ TEST_F(CompareCommand, SummaryCsvHasOneColumnPerTargetAndRatio) {
 }
 
 TEST_F(CompareCommand, EveryAvailableStrategyHasASummaryRowAndBothRepeats) {
-  for (const std::string& solver : availableSolvers()) {
+  for (const std::string& solver : stc::strategyNames()) {
     ASSERT_NE(summaryRow(solver), nullptr) << solver;
     EXPECT_EQ(summaryRow(solver)->at("repeats"), "2") << solver;
     const auto runs = runsOf(solver);
     ASSERT_EQ(runs.size(), 2u) << solver;
     EXPECT_FALSE(runs[0].points.empty()) << solver;
   }
-  EXPECT_EQ(summary_.rows.size(), availableSolvers().size());
+  EXPECT_EQ(summary_.rows.size(), stc::strategyNames().size());
 }
 
 TEST_F(CompareCommand, SummaryTimesAreMediansOverRepeatsOfTheFirstReach) {
-  for (const std::string& solver : availableSolvers()) {
+  for (const std::string& solver : stc::strategyNames()) {
     const auto* row = summaryRow(solver);
     ASSERT_NE(row, nullptr) << solver;
     const auto runs = runsOf(solver);
@@ -124,7 +124,7 @@ TEST_F(CompareCommand, SummaryTimesAreMediansOverRepeatsOfTheFirstReach) {
 }
 
 TEST_F(CompareCommand, ErrorsOfTimedRunsEndAtTheReportedFinalError) {
-  for (const std::string& solver : availableSolvers()) {
+  for (const std::string& solver : stc::strategyNames()) {
     const auto final_error = number(summaryRow(solver)->at("final_error"));
     ASSERT_TRUE(final_error.has_value()) << solver;
     for (const TimedRun& run : runsOf(solver)) {

@@ -14,7 +14,7 @@
 
 #include "cli/csv_table.hpp"
 #include "cli/run_program.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/growth_fit.hpp"
 
 namespace stc {
@@ -66,7 +66,7 @@ TEST_F(ScalingCommand, ExitsZeroAndWritesTheReportAndOneComparisonPerSize) {
 }
 
 TEST_F(ScalingCommand, HasOneRowPerSeriesSizeAndStrategy) {
-  const std::size_t solvers = availableSolvers().size();
+  const std::size_t solvers = stc::strategyNames().size();
   EXPECT_EQ(rows_.rows.size(), 4 * solvers);
   for (const char* column : {"series", "arc_nodes", "dofs", "contact_nodes", "steps", "solver", "status",
                              "time_to_target_s", "relaxations_to_target", "sparse_solves_to_target", "peak_rss_mb"})
@@ -114,7 +114,7 @@ std::vector<std::string> cellsOf(const std::string& line) {
 }
 
 TEST_F(ScalingCommand, ReportsTheFittedExponentOfEveryStrategyThatReachedTwoSizes) {
-  for (const std::string& solver : availableSolvers()) {
+  for (const std::string& solver : stc::strategyNames()) {
     const auto at = summary_.find("| " + solver + " |", summary_.find("## Growth exponents"));
     ASSERT_NE(at, std::string::npos) << solver;
     const auto cells = cellsOf(summary_.substr(at, summary_.find('\n', at) - at));

@@ -62,8 +62,8 @@ struct CoarseFixture {
     stc::latin::GlobalStage global(problem);
     space = stc::fas::CoarseSpace(stc::test::seedFas().leadingModes(30), global.matrix(), problem.contact.B);
     stc::latin::LatinOptions latin;
-    latin.max_iterations = 6;
-    latin.tolerance = 1e-14;
+    latin.stop.max_iterations = 6;
+    latin.stop.tolerance = 1e-14;
     s = stc::latin::solveLatin(problem, latin).interface;
   }
   // The coarse step from s and its local stage on `contact`, i_C = `iterations`.

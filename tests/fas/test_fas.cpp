@@ -31,14 +31,14 @@ TEST(Fas, EmptyBasisGivesExactlyLatinsIterates) {
   g1.keepDisplacements(true);
   stc::fas::FixedBasisProvider empty(Eigen::MatrixXd(f.problem.numFreeDofs(), 0), 0, g1, f.problem.contact.B);
   stc::fas::FasOptions fas;
-  fas.max_relaxations = 40;
-  fas.tolerance = 1e-14;
+  fas.stop.max_iterations = 40;
+  fas.stop.tolerance = 1e-14;
   stc::latin::LatinOptions latin;
-  latin.max_iterations = 40;
-  latin.tolerance = 1e-14;
+  latin.stop.max_iterations = 40;
+  latin.stop.tolerance = 1e-14;
   // LATIN starts from s = 0 with a local stage; FAS's fine level does the same.
-  const auto a = stc::fas::solveFas(f.problem, g1, empty, fas, "fas");
-  const auto b = stc::latin::solveLatin(f.problem, g2, stc::InterfaceHistory::zeros(f.problem.contact, f.problem.numSteps()), latin);
+  const auto a = stc::fas::solveFas(f.problem, g1, empty, fas, {}, "fas");
+  const auto b = stc::latin::solveLatinWith(f.problem, g2, latin, {}, "latin");
   ASSERT_EQ(a.summary.history.size(), b.summary.history.size());
   for (std::size_t i = 0; i < a.summary.history.size(); ++i)
     EXPECT_EQ(a.summary.history[i].indicator, b.summary.history[i].indicator) << "relaxation " << i + 1;
@@ -70,15 +70,15 @@ TEST(Fas, BasisSpanningTheSolutionConvergesInFewCycles) {
   const int rank = static_cast<int>((svd.values.array() > 1e-12 * svd.values[0]).count());
   stc::fas::FixedBasisProvider provider(svd.U.leftCols(rank), f.problem.numSteps(), g, f.problem.contact.B);
   stc::fas::FasOptions options;
-  options.tolerance = 1e-8;
+  options.stop.tolerance = 1e-8;
   options.coarse_iterations = 300;
   options.start = stc::fas::CoarseStart::InterfaceMismatch;  // exact when the space is complete
-  const auto result = stc::fas::solveFas(f.problem, g, provider, options, "fas");
+  const auto result = stc::fas::solveFas(f.problem, g, provider, options, {}, "fas");
   ASSERT_TRUE(result.summary.converged()) << result.summary.message;
   EXPECT_LE(result.summary.relaxations, 20);  // measured: 16 (8 cycles of ν1 = ν2 = 1)
   stc::latin::GlobalStage g2(f.problem);
   stc::latin::LatinOptions latin;
-  latin.tolerance = 1e-8;
+  latin.stop.tolerance = 1e-8;
   EXPECT_GE(stc::latin::solveLatin(f.problem, latin).summary.iterations, 4 * result.summary.relaxations);  // 77
 }
 
@@ -90,9 +90,9 @@ TEST(Fas, FineResultAgreesWithIncremental) {
   g.keepDisplacements(true);
   stc::fas::FixedBasisProvider provider(f.leadingModes(8), 10, g, f.problem.contact.B);
   stc::fas::FasOptions options;
-  options.tolerance = 1e-9;
+  options.stop.tolerance = 1e-9;
   options.pre_relaxations = options.post_relaxations = 2;
-  const auto result = stc::fas::solveFas(f.problem, g, provider, options, "fas");
+  const auto result = stc::fas::solveFas(f.problem, g, provider, options, {}, "fas");
   ASSERT_TRUE(result.summary.converged()) << result.summary.message;
   EXPECT_LE(relativeDifference(result.interface.lambda, f.reference.interface.lambda), 1e-6);
   EXPECT_GT(result.summary.history.back().rank, 8);  // fixed modes + residual vectors
@@ -133,11 +133,11 @@ stc::SolveResult solveWithFixedBasis(int modes, int residual_vectors, bool safeg
     options.safeguard_growth = 1.0;
   }
   if (growth) options.safeguard_growth = growth;
-  options.tolerance = 1e-8;
-  options.max_relaxations = 400;
+  options.stop.tolerance = 1e-8;
+  options.stop.max_iterations = 400;
   options.safeguard = safeguard;
   options.adapt_coarse_iterations = adapt;
-  return stc::fas::solveFas(f.problem, g, provider, options, "fas");
+  return stc::fas::solveFas(f.problem, g, provider, options, {}, "fas");
 }
 }  // namespace
 
@@ -155,13 +155,13 @@ TEST(Fas, SafeguardTurnsTheTwoCycleOfAPoorCoarseSpaceIntoConvergence) {
   EXPECT_NE(guarded.summary.message.find("coarse corrections rejected"), std::string::npos);
   EXPECT_LE(relativeDifference(guarded.interface.lambda, f.reference.interface.lambda), 1e-6);
   stc::latin::LatinOptions latin;
-  latin.tolerance = 1e-8;
+  latin.stop.tolerance = 1e-8;
   EXPECT_LE(guarded.summary.relaxations, stc::latin::solveLatin(f.problem, latin).summary.relaxations);
 }
 
 TEST(Fas, DefaultSettingsAlsoConvergeWithAPoorCoarseSpace) {
   // The defaults (i_C = 8 with Anderson depth 2; θ = 1.5, the 2D growth of a coarse space that is not
-  // anticipated, defaults::safeguardGrowth) on the same poor coarse space: the looser safeguard still
+  // anticipated, fas::defaultSafeguardGrowth) on the same poor coarse space: the looser safeguard still
   // breaks the 2-cycle and the solve reaches the incremental solution (measured: 99 relaxations, 8
   // corrections rejected, against LATIN's 91: a space that holds little gains nothing from a
   // stronger coarse solve).
@@ -236,13 +236,13 @@ TEST(AprioriBasisOptions, ValidateNamesTheFieldAndRefusesAnEmptyCoarseSpace) {
   stc::fas::AprioriBasisOptions options;
   EXPECT_EQ(validationMessage(options), "");
   options.modes = -1;
-  EXPECT_EQ(validationMessage(options), "a priori basis option modes = -1: must be >= 0");
+  EXPECT_EQ(validationMessage(options), "a priori basis option pgd_max_modes = -1: must be >= 0");
   options = {};
   options.increment_modes = -2;
-  EXPECT_EQ(validationMessage(options), "a priori basis option increment_modes = -2: must be >= 0");
+  EXPECT_EQ(validationMessage(options), "a priori basis option pgd_increment_modes = -2: must be >= 0");
   options.modes = options.increment_modes = 0;
   EXPECT_EQ(validationMessage(options),
-            "a priori basis option modes + increment_modes = 0: must be >= 1 (an empty coarse space)");
+            "a priori basis option pgd_max_modes + pgd_increment_modes = 0: must be >= 1 (an empty coarse space)");
 }
 
 TEST(FasOptions, RefusesANegativeAndersonDepthAndASafeguardGrowthBelowOne) {

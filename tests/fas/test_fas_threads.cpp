@@ -5,15 +5,15 @@
 
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/core/threads.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 
 namespace {
 
 stc::SolveResult solveOn(int threads, const std::string& name, const stc::Problem& problem, const stc::Scene& scene) {
   const stc::ThreadCountScope scope(threads);
   stc::SolverSpec spec = scene.solver;
-  spec.tolerance = 1e-8;
-  return stc::solveByName(name, problem, spec);
+  spec.setTolerance(1e-8);
+  return stc::solve(stc::strategyNamed(name), problem, spec);
 }
 
 }  // namespace

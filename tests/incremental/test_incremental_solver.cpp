@@ -236,7 +236,7 @@ TEST(IncrementalSolver, SummaryHasOneRecordPerInstant) {
 
 TEST(IncrementalSolver, CallbackReturningFalseStopsAfterThatInstant) {
   const stc::Problem problem = stc::buildProblem(seedScene(31, 41));
-  const auto result = stc::solveIncremental(problem, {}, [](const stc::IterationRecord& r) { return r.iteration < 12; });
+  const auto result = stc::solveIncremental(problem, {}, {.callback = [](const stc::IterationRecord& r) { return r.iteration < 12; }});
   EXPECT_EQ(result.summary.termination, stc::Termination::StoppedByCallback);
   EXPECT_EQ(result.summary.history.size(), 12u);
   EXPECT_EQ(result.interface.v.rightCols(41 - 12).cwiseAbs().maxCoeff(), 0.0);
@@ -278,12 +278,12 @@ TEST(IncrementalOptions, ValidateNamesTheFieldTheValueAndTheRule) {
   for (double bad : {0.0, -1e-13, 1.0, std::nan(""), HUGE_VAL}) {
     stc::IncrementalOptions o;
     o.tolerance = bad;
-    EXPECT_NE(message(o).find("IncrementalOptions.tolerance = "), std::string::npos) << message(o);
-    EXPECT_NE(message(o).find("(0, 1)"), std::string::npos);
+    EXPECT_NE(message(o).find("incremental option tolerance = "), std::string::npos) << message(o);
+    EXPECT_NE(message(o).find("must be in (0, 1)"), std::string::npos);
   }
   stc::IncrementalOptions o;
   o.max_newton_iterations = 0;
-  EXPECT_EQ(message(o), "IncrementalOptions.max_newton_iterations = 0 must be >= 1");
+  EXPECT_EQ(message(o), "incremental option max_newton_iterations = 0: must be >= 1");
   const stc::Problem problem = stc::buildProblem(seedScene(31, 41));
   EXPECT_THROW(stc::solveIncremental(problem, o), stc::InputError);
 }

@@ -4,6 +4,8 @@
 
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/error_reference.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/indicator.hpp"
@@ -56,8 +58,8 @@ TEST(LatinSolver, ConvergesToTheIncrementalSolution) {
   const stc::ErrorReference reference(problem, K, stc::CondensedInterface::build(problem, K).delassus,
                                       ref.interface.lambda);
   stc::latin::LatinOptions options;
-  options.tolerance = 1e-8;
-  const stc::SolveResult result = stc::latin::solveLatin(problem, options, &reference);
+  options.stop.tolerance = 1e-8;
+  const stc::SolveResult result = stc::latin::solveLatin(problem, options, {.reference = &reference});
   ASSERT_TRUE(result.summary.converged()) << result.summary.message;
   // LATIN converges linearly; on these small settings the true energy error stays below the
   // indicator (measured ratio ~0.2–0.5), so 1e-8 on η bounds the error well under 1e-7.
@@ -70,7 +72,7 @@ TEST(LatinSolver, ConvergesToTheIncrementalSolution) {
 TEST(LatinSolver, RelaxationStillConverges) {
   const stc::Problem problem = smallSeed();
   stc::latin::LatinOptions options;
-  options.tolerance = 1e-6;
+  options.stop.tolerance = 1e-6;
   options.relaxation = 0.7;
   const stc::SolveResult result = stc::latin::solveLatin(problem, options);
   EXPECT_TRUE(result.summary.converged()) << result.summary.message;
@@ -79,15 +81,15 @@ TEST(LatinSolver, RelaxationStillConverges) {
 TEST(LatinSolver, IterationCountIsDeterministic) {
   const stc::Problem problem = smallSeed();
   stc::latin::LatinOptions options;
-  options.tolerance = 1e-6;
+  options.stop.tolerance = 1e-6;
   const int first = stc::latin::solveLatin(problem, options).summary.iterations;
   EXPECT_EQ(stc::latin::solveLatin(problem, options).summary.iterations, first);
 }
 
 TEST(LatinSolver, CallbackCanStopTheSolve) {
   const stc::Problem problem = smallSeed();
-  const auto result = stc::latin::solveLatin(problem, {}, nullptr,
-                                             [](const stc::IterationRecord& r) { return r.iteration < 5; });
+  const auto result = stc::latin::solveLatin(
+      problem, {}, {.callback = [](const stc::IterationRecord& r) { return r.iteration < 5; }});
   EXPECT_EQ(result.summary.termination, stc::Termination::StoppedByCallback);
   EXPECT_EQ(result.summary.iterations, 5);
 }
@@ -95,7 +97,7 @@ TEST(LatinSolver, CallbackCanStopTheSolve) {
 TEST(LatinSolver, IterationLimitIsAStatusNotAnError) {
   const stc::Problem problem = smallSeed();
   stc::latin::LatinOptions options;
-  options.max_iterations = 3;
+  options.stop.max_iterations = 3;
   const auto result = stc::latin::solveLatin(problem, options);
   EXPECT_EQ(result.summary.termination, stc::Termination::MaxIterations);
   EXPECT_EQ(result.summary.history.size(), 3u);
@@ -112,6 +114,6 @@ TEST(LatinOptions, ValidateNamesTheField) {
     EXPECT_NE(std::string(e.what()).find("relaxation"), std::string::npos);
   }
   options = {};
-  options.tolerance = 0.0;
+  options.stop.tolerance = 0.0;
   EXPECT_THROW(options.validate(), stc::InputError);
 }

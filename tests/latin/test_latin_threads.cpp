@@ -86,7 +86,7 @@ TEST(GlobalStage, ThreadsGiveBitwiseTheSerialResult) {
 
 TEST(LatinSolver, ThreadsGiveBitwiseTheSerialIterates) {
   stc::latin::LatinOptions options;
-  options.tolerance = 1e-8;
+  options.stop.tolerance = 1e-8;
   auto run = [&](int threads) {
     const stc::ThreadCountScope scope(threads);
     return stc::latin::solveLatin(problem(), options);

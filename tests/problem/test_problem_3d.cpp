@@ -6,7 +6,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/problem/problem.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 
 namespace {
 
@@ -70,8 +70,8 @@ TEST(Problem3d, CubePressedOnThePlaneSolvesTheSameByIncrementalAndLatin) {
   const stc::SolveResult incremental = stc::solveIncremental(p);
   ASSERT_TRUE(incremental.summary.converged()) << incremental.summary.message;
   stc::SolverSpec spec = scene.solver;
-  spec.tolerance = 1e-9;
-  const stc::SolveResult latin = stc::solveByName("latin", p, spec, {});
+  spec.setTolerance(1e-9);
+  const stc::SolveResult latin = stc::solve(stc::strategyNamed("latin"), p, spec, {});
   ASSERT_TRUE(latin.summary.converged()) << latin.summary.message;
   const Eigen::VectorXd a = incremental.interface.lambda.col(4), b = latin.interface.lambda.col(4);
   double normal = 0.0;

@@ -49,7 +49,7 @@ TEST(SceneOverrides, ArcNodesOverrideReplacesTheValue) {
 TEST(SceneOverrides, PlaneAcceptsAQuotedStringOrABareWord) {
   EXPECT_EQ(seedWith({"model.plane=\"stress\""}).plane, PlaneModel::Stress);
   EXPECT_EQ(seedWith({"model.plane=stress"}).plane, PlaneModel::Stress);
-  EXPECT_EQ(seedWith({"solver.name=latin-pgd"}).solver.name, "latin-pgd");
+  EXPECT_EQ(seedWith({"solver.name=latin-pgd"}).solver.strategy, stc::Strategy::LatinPgd);
 }
 
 TEST(SceneOverrides, TopLevelKeyCanBeOverridden) {

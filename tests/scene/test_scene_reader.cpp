@@ -110,11 +110,11 @@ TEST(SceneReader, ExampleSeedSceneHasEveryValueOfInterfaceMd) {
   EXPECT_EQ(s.dirichlet[1].history.times, (std::vector<double>{0.0, 0.2, 1.0}));
   EXPECT_EQ(s.dirichlet[1].history.values, (std::vector<double>{0.0, -0.01, -0.11}));
   EXPECT_TRUE(s.loads.empty());
-  EXPECT_EQ(s.solver.name, "fas-apriori");
-  EXPECT_EQ(s.solver.tolerance, 1e-6);
-  EXPECT_EQ(s.solver.max_iterations, 2000);
+  EXPECT_EQ(s.solver.strategy, stc::Strategy::FasApriori);
+  EXPECT_EQ(s.solver.tolerance(), 1e-6);
+  EXPECT_EQ(s.solver.latin.stop.max_iterations, 2000);
   EXPECT_EQ(s.solver.search_scale, 4.0);
-  EXPECT_EQ(s.solver.relaxation, 1.0);
+  EXPECT_EQ(s.solver.latin.relaxation, 1.0);
   EXPECT_TRUE(s.output.vtu);
   EXPECT_EQ(s.output.vtu_stride, 1);
 }
@@ -153,10 +153,10 @@ TEST(SceneReader, OptionalKeysOverrideTheirDefaults) {
   EXPECT_EQ(s.contact.length_scale, 2.0);
   EXPECT_EQ(s.time.steps, 3);
   EXPECT_EQ(s.time.end, 2.5);
-  EXPECT_EQ(s.solver.tolerance, 1e-8);
-  EXPECT_EQ(s.solver.max_iterations, 50);
+  EXPECT_EQ(s.solver.tolerance(), 1e-8);
+  EXPECT_EQ(s.solver.fas_apriori.fas.stop.max_iterations, 50);
   EXPECT_EQ(s.solver.search_scale, 2.0);
-  EXPECT_EQ(s.solver.relaxation, 0.5);
+  EXPECT_EQ(s.solver.latin.relaxation, 0.5);
   EXPECT_FALSE(s.output.vtu);
   EXPECT_EQ(s.output.vtu_stride, 5);
   ASSERT_EQ(s.loads.size(), 1u);
@@ -171,8 +171,8 @@ TEST(SceneReader, OmittedOptionalSectionsTakeDefaults) {
   text = text.substr(0, text.find("[solver]"));
   const Scene s = parseScene(text, kSource);
   EXPECT_EQ(s.plane, PlaneModel::Strain);
-  EXPECT_EQ(s.solver.name, "fas-apriori");
-  EXPECT_EQ(s.solver.tolerance, 1e-6);
+  EXPECT_EQ(s.solver.strategy, stc::Strategy::FasApriori);
+  EXPECT_EQ(s.solver.tolerance(), 1e-6);
   EXPECT_TRUE(s.output.vtu);
 }
 
@@ -343,41 +343,67 @@ TEST(SceneReader, FasKeysAreRead) {
                                      "pgd_increment_modes = 7\npgd_gap_share = 0.2\ncoarse_start = \"mismatch\"\n"
                                      "adapt_coarse_iterations = false\ncoarse_anderson = 0\nsafeguard_growth = 1\n"
                                      "pgd_anticipate = false\ncoarse_zone = false\nreduce_interface = false\n"
-                                     "nested_instants = 0\n",
+                                     "nested_instants = 0\nzone_margin = 0.25\nzone_reach_margin = 0.01\n"
+                                     "zone_rounds = 2\nzone_whole_share = 0.5\nnested_tolerance = 1e-5\n",
                              kSource);
-  EXPECT_EQ(s.solver.fas.pre_relaxations, 2);
-  EXPECT_EQ(s.solver.fas.post_relaxations, 0);
-  EXPECT_EQ(s.solver.fas.coarse_iterations, 7);
-  EXPECT_EQ(s.solver.fas.residual_vectors, 5);
-  EXPECT_EQ(s.solver.fas.svd_modes, 4);
-  EXPECT_EQ(s.solver.fas.pgd_max_modes, 12);
-  EXPECT_EQ(s.solver.fas.pgd_increment_modes, 7);
-  EXPECT_EQ(s.solver.fas.pgd_gap_share, 0.2);
-  EXPECT_EQ(s.solver.fas.coarse_start, stc::CoarseStart::InterfaceMismatch);
-  EXPECT_FALSE(s.solver.fas.adapt_coarse_iterations);
-  EXPECT_FALSE(s.solver.fas.pgd_anticipate);
-  EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.pgd_anticipate);  // the default
-  EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.adapt_coarse_iterations);  // the default
-  EXPECT_FALSE(s.solver.fas.coarse_zone);
-  EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.coarse_zone);  // the default
-  EXPECT_FALSE(s.solver.fas.reduce_interface);
-  EXPECT_TRUE(parseScene(kSeed, kSource).solver.fas.reduce_interface);  // the default
-  EXPECT_EQ(s.solver.fas.nested_instants, 0);
-  EXPECT_EQ(parseScene(kSeed, kSource).solver.fas.nested_instants, 201);  // the default
-  EXPECT_EQ(parseScene(kSeed + "nested_instants = 51\n", kSource).solver.fas.nested_instants, 51);
-  EXPECT_EQ(s.solver.fas.coarse_anderson, 0);
-  EXPECT_EQ(s.solver.fas.safeguard_growth, 1.0);
-  EXPECT_EQ(parseScene(kSeed, kSource).solver.fas.coarse_anderson, 2);        // the defaults
-  EXPECT_FALSE(parseScene(kSeed, kSource).solver.fas.safeguard_growth);  // the dimension's default
-  EXPECT_TRUE(s.warnings.empty());
+  const stc::fas::FasAprioriOptions& apriori = s.solver.fas_apriori;
+  const stc::fas::FasAposterioriOptions& aposteriori = s.solver.fas_aposteriori;
+  for (const stc::fas::FasOptions* fas : {&apriori.fas, &aposteriori.fas}) {  // a key of both FAS strategies
+    EXPECT_EQ(fas->pre_relaxations, 2);
+    EXPECT_EQ(fas->post_relaxations, 0);
+    EXPECT_EQ(fas->coarse_iterations, 7);
+    EXPECT_EQ(fas->start, stc::fas::CoarseStart::InterfaceMismatch);
+    EXPECT_FALSE(fas->adapt_coarse_iterations);
+    EXPECT_FALSE(fas->coarse_zone);
+    EXPECT_EQ(fas->coarse_anderson, 0);
+    EXPECT_EQ(fas->safeguard_growth, 1.0);
+  }
+  EXPECT_EQ(aposteriori.basis.residual_vectors, 5);
+  EXPECT_EQ(aposteriori.basis.svd_modes, 4);
+  EXPECT_EQ(apriori.basis.modes, 12);
+  EXPECT_EQ(apriori.basis.increment_modes, 7);
+  EXPECT_FALSE(apriori.basis.anticipate);
+  EXPECT_EQ(apriori.stage.gap_share, 0.2);
+  EXPECT_EQ(s.solver.latin_pgd.stage.gap_share, 0.2);  // a key of latin-pgd and fas-apriori
+  EXPECT_FALSE(apriori.zone.enabled);
+  EXPECT_EQ(apriori.zone.margin, 0.25);
+  EXPECT_EQ(apriori.zone.reach_margin, 0.01);
+  EXPECT_EQ(apriori.zone.rounds, 2);
+  EXPECT_EQ(apriori.zone.whole_share, 0.5);
+  EXPECT_EQ(apriori.nested.instants, 0);
+  EXPECT_EQ(apriori.nested.tolerance, 1e-5);
 }
 
-TEST(SceneReader, DeprecatedKeysAreAcceptedWithAWarningEach) {
-  // docs/changelog.md, 0.2.0: pgd_modes_per_cycle and pgd_seed_share have no effect.
-  const Scene s = parseScene(kSeed + "pgd_modes_per_cycle = 2\npgd_seed_share = 0.25\n", kSource);
-  ASSERT_EQ(s.warnings.size(), 2u);
-  EXPECT_THAT(s.warnings[0], HasSubstr("'solver.pgd_modes_per_cycle' has no effect since version 0.2.0"));
-  EXPECT_THAT(s.warnings[1], HasSubstr("'solver.pgd_seed_share' has no effect since version 0.2.0"));
+TEST(SceneReader, OmittedFasKeysTakeTheOptionsDefaults) {
+  const stc::SolverSpec read = parseScene(kSeed, kSource).solver;
+  const stc::fas::FasAprioriOptions defaults;
+  EXPECT_EQ(read.fas_apriori.fas.coarse_anderson, defaults.fas.coarse_anderson);
+  EXPECT_EQ(read.fas_apriori.fas.coarse_zone, defaults.fas.coarse_zone);
+  EXPECT_EQ(read.fas_apriori.fas.adapt_coarse_iterations, defaults.fas.adapt_coarse_iterations);
+  EXPECT_FALSE(read.fas_apriori.fas.safeguard_growth);  // the dimension's default
+  EXPECT_EQ(read.fas_apriori.basis.anticipate, defaults.basis.anticipate);
+  EXPECT_EQ(read.fas_apriori.zone.enabled, defaults.zone.enabled);
+  EXPECT_EQ(read.fas_apriori.nested.instants, defaults.nested.instants);
+  EXPECT_EQ(parseScene(kSeed + "nested_instants = 51\n", kSource).solver.fas_apriori.nested.instants, 51);
+}
+
+TEST(SceneReader, AKeyOfSeveralStrategiesSetsEachOfThem) {
+  const stc::SolverSpec s = parseScene(kSeed + "max_iterations = 77\n", kSource).solver;
+  for (const auto& [name, strategy] : stc::kStrategies) {
+    if (strategy == stc::Strategy::Incremental) {
+      EXPECT_EQ(s.stopping(strategy), nullptr);
+      continue;
+    }
+    ASSERT_NE(s.stopping(strategy), nullptr) << name;
+    EXPECT_EQ(s.stopping(strategy)->tolerance, 1e-6) << name;
+    EXPECT_EQ(s.stopping(strategy)->max_iterations, 77) << name;
+  }
+}
+
+TEST(SceneReader, KeysRemovedIn030AreRefusedWithTheReason) {
+  // docs/changelog.md: pgd_modes_per_cycle and pgd_seed_share had no effect since 0.2.0.
+  for (const char* key : {"pgd_modes_per_cycle = 2\n", "pgd_seed_share = 0.25\n"})
+    EXPECT_THAT(errorOf(kSeed + key), HasSubstr("was removed in version 0.3.0")) << key;
 }
 
 TEST(SceneReaderErrors, FasRangesAreChecked) {
@@ -385,9 +411,6 @@ TEST(SceneReaderErrors, FasRangesAreChecked) {
   EXPECT_THAT(errorOf(kSeed + "post_relaxations = -1\n"), HasSubstr("'solver.post_relaxations' = -1"));
   EXPECT_THAT(errorOf(kSeed + "coarse_iterations = 0\n"), HasSubstr("'solver.coarse_iterations' = 0"));
   EXPECT_THAT(errorOf(kSeed + "pgd_max_modes = -1\n"), HasSubstr("'solver.pgd_max_modes' = -1"));
-  EXPECT_THAT(errorOf(kSeed + "pgd_modes_per_cycle = 0\n"), HasSubstr("'solver.pgd_modes_per_cycle' = 0"));
-  EXPECT_THAT(errorOf(kSeed + "pgd_seed_share = 1.5\n"), HasSubstr("'solver.pgd_seed_share' = 1.5"));
-  EXPECT_THAT(errorOf(kSeed + "pgd_seed_share = -0.1\n"), HasSubstr("'solver.pgd_seed_share' = -0.1"));
   EXPECT_THAT(errorOf(kSeed + "pgd_gap_share = 1\n"), HasSubstr("'solver.pgd_gap_share' = 1"));
   EXPECT_THAT(errorOf(kSeed + "pgd_increment_modes = -1\n"), HasSubstr("'solver.pgd_increment_modes' = -1"));
   EXPECT_THAT(errorOf(kSeed + "pgd_gap_share = 0\n"), HasSubstr("'solver.pgd_gap_share' = 0"));

@@ -13,14 +13,14 @@ stc::InterfaceHistory zeros() { return stc::InterfaceHistory::zerosWithRows(2, 2
 // cases test the bookkeeping alone (the estimate: tests/solver/test_error_estimate.cpp).
 
 TEST(IterationMonitor, NaNIsANumericalIssue) {
-  stc::IterationMonitor monitor("test", {1e-6, 100, 0}, nullptr);
+  stc::IterationMonitor monitor("test", {{1e-6, 100, 0}}, nullptr);
   EXPECT_FALSE(monitor.record(1, 0.5, zeros(), 0, 0));
   EXPECT_TRUE(monitor.record(2, std::numeric_limits<double>::quiet_NaN(), zeros(), 0, 0));
   EXPECT_EQ(monitor.finish().termination, stc::Termination::NumericalIssue);
 }
 
 TEST(IterationMonitor, NoProgressIsStagnation) {
-  stc::IterationMonitor monitor("test", {1e-6, 1000, 10}, nullptr);
+  stc::IterationMonitor monitor("test", {{1e-6, 1000, 10}}, nullptr);
   int iterations = 0;
   while (!monitor.record(++iterations, 0.1, zeros(), 0, 0)) ASSERT_LT(iterations, 100);
   const auto summary = monitor.finish();
@@ -29,7 +29,7 @@ TEST(IterationMonitor, NoProgressIsStagnation) {
 }
 
 TEST(IterationMonitor, ToleranceConverges) {
-  stc::IterationMonitor monitor("test", {1e-3, 100, 0}, nullptr);
+  stc::IterationMonitor monitor("test", {{1e-3, 100, 0}}, nullptr);
   EXPECT_FALSE(monitor.record(1, 1e-2, zeros(), 0, 0));
   EXPECT_TRUE(monitor.record(2, 1e-4, zeros(), 0, 0));
   const auto summary = monitor.finish();

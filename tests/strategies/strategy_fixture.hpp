@@ -4,8 +4,9 @@
 #include <string>
 
 #include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/error_reference.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 
 namespace stc::test {
 
@@ -19,10 +20,10 @@ struct StrategyFixture {
 
   SolveResult solve(const std::string& name, double tolerance) const {
     SolverSpec spec = scene.solver;
-    spec.tolerance = tolerance;
-    StrategyInputs inputs;
+    spec.setTolerance(tolerance);
+    SolveInputs inputs;
     inputs.reference = &reference;
-    return solveByName(name, problem, spec, inputs);
+    return stc::solve(strategyNamed(name), problem, spec, inputs);
   }
 };
 

@@ -89,7 +89,6 @@ TEST(FasApriori, MeetsTheToleranceAtAnExtremeSearchScale) {
   ASSERT_TRUE(r.summary.error.has_value());
   EXPECT_LE(*r.summary.error, 1e-6);
   EXPECT_GE(r.summary.error_estimate, *r.summary.error);
-  EXPECT_EQ(stc::pgd::ControlledStageOptions{}.floor_share, 0.0);
 }
 
 TEST(AprioriBasis, AnExpansionThatFitsIsTheWholeCoarseSpace) {

@@ -8,7 +8,7 @@
 
 #include "fixtures/hemisphere_scene.hpp"
 #include "fixtures/slab_scene.hpp"
-#include "stcontact/core/solver_settings.hpp"
+#include "stcontact/options/fas_options.hpp"
 #include "stcontact/solver/contact_law_check.hpp"
 #include "strategies/strategy_fixture.hpp"
 
@@ -55,11 +55,11 @@ TEST(ThreeD, FasAprioriNeedsFewerRelaxationsThanLatin) {
 // everywhere: at 5, 21 the adapted i_C takes 37 against 29, at 5, 41 both take 22.
 TEST(ThreeD, AdaptedCoarseIterationsSaveRelaxationsWhereCorrectionsOvershoot) {
   stc::Scene scene = stc::test::hemisphereScene(6, 21);
-  scene.solver.fas.coarse_iterations = 15;
-  scene.solver.fas.coarse_anderson = 0;
-  scene.solver.fas.safeguard_growth = 1.0;
+  scene.solver.fas_apriori.fas.coarse_iterations = 15;
+  scene.solver.fas_apriori.fas.coarse_anderson = 0;
+  scene.solver.fas_apriori.fas.safeguard_growth = 1.0;
   const stc::test::StrategyFixture adapted(scene);
-  scene.solver.fas.adapt_coarse_iterations = false;
+  scene.solver.fas_apriori.fas.adapt_coarse_iterations = false;
   const stc::test::StrategyFixture fixed(scene);
   const auto a = adapted.solve("fas-apriori", 1e-6), b = fixed.solve("fas-apriori", 1e-6);
   ASSERT_TRUE(a.summary.converged() && b.summary.converged()) << a.summary.message << " | " << b.summary.message;
@@ -71,7 +71,7 @@ TEST(ThreeD, AdaptedCoarseIterationsSaveRelaxationsWhereCorrectionsOvershoot) {
             << a.summary.message << "); fixed: " << b.summary.relaxations << " (" << b.summary.message << ")\n";
 }
 
-// In 3D the safeguard's default growth is θ = 1 (defaults::safeguardGrowth; docs/method.md §4): the
+// In 3D the safeguard's default growth is θ = 1 (fas::defaultSafeguardGrowth; docs/method.md §4): the
 // corrections that raise the indicator raise the true error too. A 3D scene without the key solves
 // as with θ = 1, and the plane meshes' default θ = 5 takes a different path here (measured: 27
 // relaxations against 43; 29 at θ = 1.5).
@@ -80,18 +80,18 @@ TEST(ThreeD, TheSafeguardDefaultsToNoGrowth) {
   // On the whole interface: on its contact zone this small hemisphere takes 20 relaxations at either
   // θ, and the last assertion, which shows that the default is the one in force, needs a case where
   // θ matters.
-  scene.solver.fas.reduce_interface = false;
-  ASSERT_FALSE(scene.solver.fas.safeguard_growth);
+  scene.solver.fas_apriori.zone.enabled = false;
+  ASSERT_FALSE(scene.solver.fas_apriori.fas.safeguard_growth);
   const auto by_default = stc::test::StrategyFixture(scene).solve("fas-apriori", 1e-6);
-  scene.solver.fas.safeguard_growth = 1.0;
+  scene.solver.fas_apriori.fas.safeguard_growth = 1.0;
   const auto strict = stc::test::StrategyFixture(scene).solve("fas-apriori", 1e-6);
-  scene.solver.fas.safeguard_growth = stc::defaults::safeguard_growth_2d;
+  scene.solver.fas_apriori.fas.safeguard_growth = stc::fas::defaultSafeguardGrowth(2, false);
   const auto tolerant = stc::test::StrategyFixture(scene).solve("fas-apriori", 1e-6);
   EXPECT_EQ(by_default.summary.relaxations, strict.summary.relaxations);
   EXPECT_EQ(by_default.summary.message, strict.summary.message);
   EXPECT_NE(tolerant.summary.relaxations, strict.summary.relaxations);
   std::cout << "[ measured ] 3D fas-apriori to 1e-6: theta = 1 " << strict.summary.relaxations
-            << " relaxations, theta = " << stc::defaults::safeguard_growth_2d << " (the plane default) "
+            << " relaxations, theta = " << stc::fas::defaultSafeguardGrowth(2, false) << " (the plane default) "
             << tolerant.summary.relaxations << "\n";
 }
 

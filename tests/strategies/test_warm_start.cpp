@@ -1,4 +1,4 @@
-// Warm starts through solveByName (src/solver/warm_start.hpp): a solve begun from a neighbouring
+// Warm starts through the registry (strategies/registry.hpp) (src/solver/warm_start.hpp): a solve begun from a neighbouring
 // friction's solution (and, for the a priori bases, its interface directions) reaches the incremental
 // solution of its own friction, in fewer relaxations than from zero; a start of the wrong size is
 // refused. Small seed scene (21 contact nodes, 21 instants), as the sweep's command-line test.
@@ -10,8 +10,9 @@
 
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
+#include "stcontact/incremental/error_reference.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
-#include "stcontact/strategies/solve_by_name.hpp"
+#include "stcontact/strategies/registry.hpp"
 
 namespace {
 
@@ -26,7 +27,7 @@ struct Value {
   static stc::Scene make(double mu) {
     stc::Scene scene = stc::test::seedScene(21, 21);
     scene.contact.friction = mu;
-    scene.solver.tolerance = 1e-6;
+    scene.solver.setTolerance(1e-6);
     return scene;
   }
   stc::Scene scene;
@@ -43,15 +44,15 @@ const Value& value(double mu) {
 
 stc::SolveResult solve(const std::string& solver, const Value& v, const stc::SolveResult* previous = nullptr,
                        bool reduce_interface = true) {
-  stc::StrategyInputs inputs;
+  stc::SolveInputs inputs;
   inputs.reference = v.reference.get();
   if (previous) {
     inputs.start = &previous->interface;
     if (previous->interface_directions.cols() > 0) inputs.basis_seed = &previous->interface_directions;
   }
   stc::SolverSpec spec = v.scene.solver;
-  spec.fas.reduce_interface = reduce_interface;
-  return stc::solveByName(solver, v.problem, spec, inputs);
+  spec.fas_apriori.zone.enabled = reduce_interface;
+  return stc::solve(stc::strategyNamed(solver), v.problem, spec, inputs);
 }
 
 const std::vector<std::string>& iterativeSolvers() {
@@ -97,8 +98,8 @@ TEST(WarmStart, FromItsOwnSolutionStopsSoon) {
   for (const std::string& solver : iterativeSolvers()) {
     const Value& v = value(0.15);
     stc::SolverSpec tight = v.scene.solver;
-    tight.tolerance = 1e-8;
-    const stc::SolveResult converged = stc::solveByName(solver, v.problem, tight);
+    tight.setTolerance(1e-8);
+    const stc::SolveResult converged = stc::solve(stc::strategyNamed(solver), v.problem, tight);
     ASSERT_TRUE(converged.summary.converged()) << solver;
     const stc::SolveResult restart = solve(solver, v, &converged);
     EXPECT_TRUE(restart.summary.converged()) << solver;
@@ -130,13 +131,13 @@ TEST(WarmStart, AStartOfTheWrongSizeIsRefused) {
   const stc::InterfaceHistory wrong = stc::InterfaceHistory::zerosWithRows(v.problem.contact.rows() + 2, v.problem.numSteps());
   const Eigen::MatrixXd wrong_modes = Eigen::MatrixXd::Zero(2 * v.problem.contact.size() + 2, 3);
   for (const std::string& solver : iterativeSolvers()) {
-    stc::StrategyInputs inputs;
+    stc::SolveInputs inputs;
     inputs.start = &wrong;
-    EXPECT_THROW(stc::solveByName(solver, v.problem, v.scene.solver, inputs), std::invalid_argument) << solver;
+    EXPECT_THROW(stc::solve(stc::strategyNamed(solver), v.problem, v.scene.solver, inputs), std::invalid_argument) << solver;
   }
-  stc::StrategyInputs inputs;
+  stc::SolveInputs inputs;
   inputs.basis_seed = &wrong_modes;
-  EXPECT_THROW(stc::solveByName("fas-apriori", v.problem, v.scene.solver, inputs), std::invalid_argument);
+  EXPECT_THROW(stc::solve(stc::strategyNamed("fas-apriori"), v.problem, v.scene.solver, inputs), std::invalid_argument);
 }
 
 // Spatial modes are rebuilt after the last iteration only when asked for: without them the solve is
@@ -144,10 +145,10 @@ TEST(WarmStart, AStartOfTheWrongSizeIsRefused) {
 TEST(WarmStart, SpatialModesOnlyWhenAskedFor) {
   const Value& v = value(0.15);
   for (const std::string solver : {"latin-pgd", "fas-apriori"}) {
-    stc::StrategyInputs without;
+    stc::SolveInputs without;
     without.spatial_modes = false;
-    const stc::SolveResult bare = stc::solveByName(solver, v.problem, v.scene.solver, without);
-    const stc::SolveResult full = stc::solveByName(solver, v.problem, v.scene.solver);
+    const stc::SolveResult bare = stc::solve(stc::strategyNamed(solver), v.problem, v.scene.solver, without);
+    const stc::SolveResult full = stc::solve(stc::strategyNamed(solver), v.problem, v.scene.solver);
     EXPECT_EQ(bare.spatial_modes.size(), 0) << solver;
     EXPECT_GT(full.spatial_modes.cols(), 0) << solver;
     EXPECT_EQ(bare.summary.relaxations, full.summary.relaxations) << solver;

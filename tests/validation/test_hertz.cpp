@@ -115,7 +115,7 @@ TEST(Hertz, HertzLineContactLatinMatchesIncrementalOnCoarsestMesh) {
   const Problem problem = buildProblem(hertzScene(201));
   const SolveResult reference = solveIncremental(problem);
   latin::LatinOptions options;
-  options.tolerance = kLatinTolerance;
+  options.stop.tolerance = kLatinTolerance;
   const SolveResult latin = latin::solveLatin(problem, options);
   ASSERT_TRUE(latin.summary.converged()) << latin.summary.message;
   const HertzComparison c = compareWithHertz(problem, latin.interface.lambda);

@@ -17,7 +17,7 @@ const SeedSolutions& seedSolutions() {
     s->problem = buildProblem(scene);
     s->incremental = solveIncremental(s->problem);
     latin::LatinOptions options;
-    options.tolerance = kSeedLatinTolerance;
+    options.stop.tolerance = kSeedLatinTolerance;
     s->latin = latin::solveLatin(s->problem, options);
     s->stiffness_free = std::make_unique<SpdFactor>(s->problem.stiffness_free, "K_ff");
     return s;

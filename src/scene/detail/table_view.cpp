@@ -65,11 +65,15 @@ const toml::table& asTable(const toml::node& node, std::string_view path,
 
 TableView::TableView(const toml::table& table, std::string path, const ErrorReporter& errors,
                      std::initializer_list<std::string_view> keys)
+    : TableView(table, std::move(path), errors, std::vector<std::string_view>(keys)) {}
+
+TableView::TableView(const toml::table& table, std::string path, const ErrorReporter& errors,
+                     const std::vector<std::string_view>& keys)
     : table_(&table), path_(std::move(path)), errors_(&errors) {
   rejectUnknownKeys(keys);
 }
 
-void TableView::rejectUnknownKeys(std::initializer_list<std::string_view> keys) const {
+void TableView::rejectUnknownKeys(const std::vector<std::string_view>& keys) const {
   for (const auto& [key, node] : *table_) {
     if (std::find(keys.begin(), keys.end(), key.str()) != keys.end()) continue;
     std::string allowed;
@@ -136,6 +140,13 @@ std::optional<TableView> TableView::optionalTable(
     std::string_view key, std::initializer_list<std::string_view> keys) const {
   if (!has(key)) return std::nullopt;
   return requiredTable(key, keys);
+}
+
+std::optional<TableView> TableView::optionalTable(std::string_view key,
+                                                  const std::vector<std::string_view>& keys) const {
+  if (!has(key)) return std::nullopt;
+  const std::string path = keyPath(key);
+  return TableView(asTable(require(key), path, *errors_), path, *errors_, keys);
 }
 
 }  // namespace stc::detail

@@ -32,6 +32,8 @@ class TableView {
   /// `path` is the table's dotted path ("" for the document); `keys` its allowed keys.
   TableView(const toml::table& table, std::string path, const ErrorReporter& errors,
             std::initializer_list<std::string_view> keys);
+  TableView(const toml::table& table, std::string path, const ErrorReporter& errors,
+            const std::vector<std::string_view>& keys);
 
   const std::string& path() const { return path_; }
   const ErrorReporter& errors() const { return *errors_; }
@@ -57,9 +59,10 @@ class TableView {
   /// A sub-table with its own schema, or nullopt when absent.
   std::optional<TableView> optionalTable(std::string_view key,
                                          std::initializer_list<std::string_view> keys) const;
+  std::optional<TableView> optionalTable(std::string_view key, const std::vector<std::string_view>& keys) const;
 
  private:
-  void rejectUnknownKeys(std::initializer_list<std::string_view> keys) const;
+  void rejectUnknownKeys(const std::vector<std::string_view>& keys) const;
 
   const toml::table* table_;
   std::string path_;

@@ -18,16 +18,16 @@ const stc::test::StrategyFixture& fixture() {
   return f;
 }
 
-stc::SolveResult solveApriori(int nested_instants, const stc::StrategyInputs& given = {}, int max_iterations = 0,
+stc::SolveResult solveApriori(int nested_instants, const stc::SolveInputs& given = {}, int max_iterations = 0,
                               bool reduce_interface = true) {
   stc::SolverSpec spec = fixture().scene.solver;
-  spec.tolerance = 1e-6;
-  spec.fas.nested_instants = nested_instants;
-  spec.fas.reduce_interface = reduce_interface;
-  if (max_iterations > 0) spec.max_iterations = max_iterations;
-  stc::StrategyInputs inputs = given;
+  spec.setTolerance(1e-6);
+  spec.fas_apriori.nested.instants = nested_instants;
+  spec.fas_apriori.zone.enabled = reduce_interface;
+  if (max_iterations > 0) spec.setMaxIterations(max_iterations);
+  stc::SolveInputs inputs = given;
   inputs.reference = &fixture().reference;
-  return stc::solveByName("fas-apriori", fixture().problem, spec, inputs);
+  return stc::solve(stc::strategyNamed("fas-apriori"), fixture().problem, spec, inputs);
 }
 
 bool says(const stc::SolveResult& r, const std::string& words) {
@@ -37,13 +37,13 @@ bool says(const stc::SolveResult& r, const std::string& words) {
 }  // namespace
 
 TEST(NestedInTime, StrideKeepsAtLeastTheSubgridsInstants) {
-  EXPECT_EQ(stc::nestedStride(2001, 201), 10);
-  EXPECT_EQ(stc::nestedStride(1001, 201), 5);
-  EXPECT_EQ(stc::nestedStride(401, 201), 2);
-  EXPECT_EQ(stc::nestedStride(400, 201), 0);  // every instant: nothing to nest
-  EXPECT_EQ(stc::nestedStride(201, 201), 0);
-  EXPECT_EQ(stc::nestedStride(2001, 0), 0);   // off
-  EXPECT_EQ(stc::nestedStride(2001, 2), 2000);
+  EXPECT_EQ(stc::fas::nestedStride(2001, 201), 10);
+  EXPECT_EQ(stc::fas::nestedStride(1001, 201), 5);
+  EXPECT_EQ(stc::fas::nestedStride(401, 201), 2);
+  EXPECT_EQ(stc::fas::nestedStride(400, 201), 0);  // every instant: nothing to nest
+  EXPECT_EQ(stc::fas::nestedStride(201, 201), 0);
+  EXPECT_EQ(stc::fas::nestedStride(2001, 0), 0);   // off
+  EXPECT_EQ(stc::fas::nestedStride(2001, 2), 2000);
 }
 
 // The true error on the whole grid is below the tolerance, as without the sub-grid; the first
@@ -68,7 +68,7 @@ TEST(NestedInTime, StartsFromTheSubgridAndMeetsTheWholeGridsTolerance) {
 }
 
 TEST(NestedInTime, AWarmStartTurnsItOff) {
-  stc::StrategyInputs inputs;
+  stc::SolveInputs inputs;
   inputs.start = &fixture().incremental.interface;
   const stc::SolveResult r = solveApriori(101, inputs);
   EXPECT_FALSE(says(r, "every")) << r.summary.message;
@@ -78,7 +78,7 @@ TEST(NestedInTime, AWarmStartTurnsItOff) {
 // sub-grid): the sub-grid's sparse solves and time included.
 TEST(NestedInTime, TheCallbackSeesTheRecordsOfTheResult) {
   std::vector<stc::IterationRecord> seen;
-  stc::StrategyInputs inputs;
+  stc::SolveInputs inputs;
   inputs.callback = [&](const stc::IterationRecord& r) {
     seen.push_back(r);
     return true;

@@ -23,8 +23,8 @@ const stc::test::StrategyFixture& fixture() {
 
 stc::SolverSpec specAt(double tolerance, bool reduce) {
   stc::SolverSpec spec = fixture().scene.solver;
-  spec.tolerance = tolerance;
-  spec.fas.reduce_interface = reduce;
+  spec.setTolerance(tolerance);
+  spec.fas_apriori.zone.enabled = reduce;
   return spec;
 }
 
@@ -58,7 +58,7 @@ TEST(ErrorOnRows, MeasuresTheForcesOfTheRowsLeftOutAsZero) {
   const auto& f = fixture();
   const Eigen::MatrixXd& lambda = f.incremental.interface.lambda;
   const std::vector<int> rows = {0, 1, 2, 3, 10, 11};
-  const stc::ErrorOnRows measure(f.reference, rows, f.problem.contact.rows());
+  const stc::fas::ErrorOnRows measure(f.reference, rows, f.problem.contact.rows());
   Eigen::MatrixXd whole = Eigen::MatrixXd::Zero(lambda.rows(), lambda.cols());
   whole(rows, Eigen::all) = lambda(rows, Eigen::all);
   EXPECT_DOUBLE_EQ(measure.relativeError(lambda(rows, Eigen::all)), f.reference.relativeError(whole));
@@ -70,9 +70,9 @@ TEST(ErrorOnRows, MeasuresTheForcesOfTheRowsLeftOutAsZero) {
 // unloaded and clear of the obstacle, the lifted iterate in equilibrium to the sparse solves' accuracy.
 TEST(ReducedInterface, SolvesTheWholeProblemOnItsContactZone) {
   const auto& f = fixture();
-  stc::StrategyInputs inputs;
+  stc::SolveInputs inputs;
   inputs.reference = &f.reference;
-  const stc::SolveResult r = stc::solveByName("fas-apriori", f.problem, specAt(1e-6, true), inputs);
+  const stc::SolveResult r = stc::solve(stc::strategyNamed("fas-apriori"), f.problem, specAt(1e-6, true), inputs);
   ASSERT_TRUE(r.summary.converged()) << r.summary.message;
   EXPECT_NE(r.summary.message.find("within reach of the prescribed motion"), std::string::npos) << r.summary.message;
   ASSERT_TRUE(r.summary.error.has_value());
@@ -118,11 +118,11 @@ TEST(ReducedInterface, WithAnAppliedForceTheZoneComesFromAFirstRelaxation) {
   scene.loads.push_back({"arc", stc::Component::Y, {{0.0, 1.0}, {0.0, 1.0}}});  // 1 N up, spread on the arc
   const stc::test::StrategyFixture pushed(scene);
   stc::SolverSpec spec = pushed.scene.solver;
-  spec.tolerance = 1e-6;
-  spec.fas.reduce_interface = true;
-  stc::StrategyInputs inputs;
+  spec.setTolerance(1e-6);
+  spec.fas_apriori.zone.enabled = true;
+  stc::SolveInputs inputs;
   inputs.reference = &pushed.reference;
-  const stc::SolveResult r = stc::solveByName("fas-apriori", pushed.problem, spec, inputs);
+  const stc::SolveResult r = stc::solve(stc::strategyNamed("fas-apriori"), pushed.problem, spec, inputs);
   ASSERT_TRUE(r.summary.converged()) << r.summary.message;
   EXPECT_NE(r.summary.message.find("first relaxation on all"), std::string::npos) << r.summary.message;
   ASSERT_TRUE(r.summary.error.has_value());
@@ -139,11 +139,11 @@ TEST(ReducedInterface, WithAnAppliedForceTheZoneComesFromAFirstRelaxation) {
 // problem's solution.
 TEST(ReducedInterface, ACheckOfTheNodesLeftOutCompletesAZoneThatMissesContact) {
   const auto& f = fixture();
-  stc::StrategyInputs inputs;
+  stc::SolveInputs inputs;
   inputs.reference = &f.reference;
-  stc::ZoneStart from;  // from s = 0
+  stc::fas::ZoneStart from;  // from s = 0
   const int nearest = f.problem.contact.size() / 2;  // the half-disc's lowest arc node
-  const stc::SolveResult r = stc::solveAprioriOnZone(f.problem, specAt(1e-6, true), inputs, {nearest}, from);
+  const stc::SolveResult r = stc::fas::solveAprioriOnZone(f.problem, specAt(1e-6, true).fas_apriori, inputs, {nearest}, from);
   ASSERT_TRUE(r.summary.converged()) << r.summary.message;
   EXPECT_NE(r.summary.message.find("penetrating"), std::string::npos) << r.summary.message;
   std::cout << "[ measured ] " << r.summary.message << "\n";
@@ -156,10 +156,10 @@ TEST(ReducedInterface, ACheckOfTheNodesLeftOutCompletesAZoneThatMissesContact) {
 // same reference, so (triangle inequality in the energy norm) within about twice it of each other.
 TEST(ReducedInterface, AgreesWithTheWholeInterface) {
   const auto& f = fixture();
-  stc::StrategyInputs inputs;
+  stc::SolveInputs inputs;
   inputs.reference = &f.reference;
-  const stc::SolveResult reduced = stc::solveByName("fas-apriori", f.problem, specAt(1e-6, true), inputs);
-  const stc::SolveResult whole = stc::solveByName("fas-apriori", f.problem, specAt(1e-6, false), inputs);
+  const stc::SolveResult reduced = stc::solve(stc::strategyNamed("fas-apriori"), f.problem, specAt(1e-6, true), inputs);
+  const stc::SolveResult whole = stc::solve(stc::strategyNamed("fas-apriori"), f.problem, specAt(1e-6, false), inputs);
   ASSERT_TRUE(reduced.summary.converged() && whole.summary.converged());
   EXPECT_EQ(whole.summary.message.find("solved on"), std::string::npos);
   const stc::ErrorReference against_whole(f.problem, f.K, stc::CondensedInterface::build(f.problem, f.K).delassus,

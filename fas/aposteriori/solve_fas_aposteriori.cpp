@@ -1,0 +1,26 @@
+#include "stcontact/fas/aposteriori/solve_fas_aposteriori.hpp"
+
+#include "stcontact/fas/aposteriori/aposteriori_basis.hpp"
+#include "stcontact/fas/basis_provider.hpp"
+#include "stcontact/fas/fas_solver.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/global_stage.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
+
+namespace stc::fas {
+
+SolveResult solveFasAposteriori(const Problem& problem, const FasAposterioriOptions& options,
+                                const SolveInputs& inputs) {
+  options.validate();
+  const SpdFactor K(problem.stiffness_free, "K_ff");
+  Eigen::MatrixXd lambda;
+  if (inputs.converged_lambda) lambda = *inputs.converged_lambda;
+  else lambda = solveIncremental(problem).interface.lambda;
+  const Eigen::MatrixXd modes = aposterioriModes(problem, K, lambda, options.basis.svd_modes);
+  latin::GlobalStage global(problem);
+  global.keepDisplacements(true);
+  FixedBasisProvider provider(modes, options.basis.residual_vectors, global, problem.contact.B);
+  return solveFas(problem, global, provider, options.fas, inputs, "fas-aposteriori");
+}
+
+}  // namespace stc::fas

@@ -1,0 +1,105 @@
+#pragma once
+// Options of `fas-apriori` (docs/method.md §5): the two-level FAS on the separated global stage, its
+// coarse space from the expansion built during the iterations (fas/apriori/apriori_basis.hpp), solved
+// on the contact nodes that can touch (fas/apriori/reduced_interface.hpp) and, on long grids, from a
+// solve on a sub-grid of instants (fas/apriori/nested_in_time.hpp).
+#include "stcontact/options/fas_options.hpp"
+#include "stcontact/options/option_fields.hpp"
+#include "stcontact/options/separated_stage_options.hpp"
+
+namespace stc::fas {
+
+/// The a priori coarse space (fas/apriori/apriori_basis.hpp): the `modes` leading energy modes of the
+/// expansion and the `increment_modes` leading modes of its change since the previous coarse step.
+struct AprioriBasisOptions {
+  /// 15 + 30: fewer relaxations than 30 + 15 from the seed scene (20 against 18–20) to arc_nodes 401
+  /// (30 against 52, with no rejected correction) and 801 (66 against 366; docs/floor.md).
+  int modes = 15;
+  int increment_modes = 30;
+  /// The coarse space from the expansion the next global stage would give (true) or the last one's.
+  bool anticipate = true;
+
+  template <class Self, class Visit>
+  static void fields(Self& o, Visit&& visit) {
+    visit("pgd_max_modes", o.modes, atLeast(0));
+    visit("pgd_increment_modes", o.increment_modes, atLeast(0));
+    visit("pgd_anticipate", o.anticipate, anyFlag());
+  }
+  void validate() const;  ///< the fields, and at least one mode in all
+};
+
+/// The reduced interface (fas/apriori/reduced_interface.hpp; docs/method.md §5, "The reduced
+/// interface"): the solve on the contact nodes that can touch, the others checked open afterwards.
+struct ReducedInterfaceOptions {
+  bool enabled = true;
+  /// The zone's margin, a share of the first relaxation's largest normal jump δ (fas/coarse_zone.hpp):
+  /// nodes closed, or within margin · δ of the obstacle (δ itself when that leaves none). Measured on
+  /// the hard cases (relaxations to true error 1e-6, 14 cases without κ = 0.01): 377 at 1, 349 at
+  /// 0.5, 362 at 0.25; at 0.25 the 3D hemisphere's zone misses nodes and takes a second round (44
+  /// relaxations against 26 at 0.5): docs/floor.md, "The reduced interface".
+  double margin = 0.5;
+  /// The margin of the zone within reach of the prescribed motion (src/problem/prescribed_reach.hpp),
+  /// in the scene's length unit: none. The rigid motion overestimates how far the nodes near the
+  /// contact move; on the 15 hard cases and the four example scenes no node left out penetrated
+  /// (docs/floor.md, "The zone before any solve").
+  double reach_margin = 0.0;
+  /// Restricted solves before the whole interface is solved.
+  int rounds = 3;
+  /// A zone above this share of the contact nodes is the whole interface.
+  double whole_share = 0.75;
+
+  template <class Self, class Visit>
+  static void fields(Self& o, Visit&& visit) {
+    visit("reduce_interface", o.enabled, anyFlag());
+    visit("zone_margin", o.margin, atLeast(0));
+    visit("zone_reach_margin", o.reach_margin, atLeast(0));
+    visit("zone_rounds", o.rounds, atLeast(1));
+    visit("zone_whole_share", o.whole_share, inUnitClosed());
+  }
+  void validate() const { validateFields(*this, "reduced interface"); }
+};
+
+/// Nested iteration in time (fas/apriori/nested_in_time.hpp; docs/method.md §5): on a grid of m
+/// instants, first the same problem on every q-th instant, q = ⌊(m − 1) / (instants − 1)⌋, when q ≥ 2.
+struct NestedInTimeOptions {
+  /// Instants of the sub-grid, about: 201 is the seed scene's grid. 0: never.
+  int instants = 201;
+  /// The sub-grid's tolerance is at least this: below it the start it gives stops improving, its
+  /// distance to the whole grid's solution is the time step's (seed scene at 401 arc nodes, 2001
+  /// instants, every 10th instant: true error of the start 4.4e-4, 1.0e-4, 9.5e-5 at sub-grid
+  /// tolerances 1e-3, 1e-4, 1e-5; docs/floor.md, "Long grids: nested iteration in time").
+  double tolerance = 1e-4;
+
+  template <class Self, class Visit>
+  static void fields(Self& o, Visit&& visit) {
+    visit("nested_instants", o.instants, offOrAtLeast(2));
+    visit("nested_tolerance", o.tolerance, positive());
+  }
+  void validate() const { validateFields(*this, "nested iteration"); }
+};
+
+struct FasAprioriOptions {
+  FasOptions fas;
+  AprioriBasisOptions basis;
+  pgd::ControlledStageOptions stage;
+  ReducedInterfaceOptions zone;
+  NestedInTimeOptions nested;
+
+  template <class Self, class Visit>
+  static void fields(Self& o, Visit&& visit) {
+    FasOptions::fields(o.fas, visit);
+    AprioriBasisOptions::fields(o.basis, visit);
+    pgd::ControlledStageOptions::fields(o.stage, visit);
+    ReducedInterfaceOptions::fields(o.zone, visit);
+    NestedInTimeOptions::fields(o.nested, visit);
+  }
+  void validate() const {
+    fas.validate();
+    basis.validate();
+    stage.validate();
+    zone.validate();
+    nested.validate();
+  }
+};
+
+}  // namespace stc::fas

@@ -1,0 +1,28 @@
+#pragma once
+// Options of `incremental`, the reference solver (src/incremental/incremental_solver.hpp): the
+// time-discrete problem solved instant by instant to round-off.
+#include "stcontact/options/option_fields.hpp"
+
+namespace stc {
+
+struct IncrementalOptions {
+  /// On ‖F‖∞ / S_k (src/incremental/incremental_solver.hpp): a few hundred ulps, so the reference is
+  /// exact to round-off. In (0, 1).
+  double tolerance = 1e-13;
+  /// Per instant: the active set settles in a handful of steps; the cap only stops cycling.
+  int max_newton_iterations = 50;
+  /// Solve a 2D scene with the d-dimensional cone law and lazily computed Delassus columns
+  /// (src/incremental/cone_newton.hpp), as every 3D scene is: the same solution to round-off, memory
+  /// 16 n_C n_ever-closed bytes instead of 32 n_C².
+  bool cone_law = false;
+
+  template <class Self, class Visit>
+  static void fields(Self& o, Visit&& visit) {
+    visit("tolerance", o.tolerance, inOpenUnit(), Exposure::Library);
+    visit("max_newton_iterations", o.max_newton_iterations, atLeast(1), Exposure::Library);
+    visit("cone_law", o.cone_law, anyFlag(), Exposure::Library);
+  }
+  void validate() const { validateFields(*this, "incremental"); }
+};
+
+}  // namespace stc

@@ -1,0 +1,26 @@
+#pragma once
+// Options of the separated global stage with its error controlled (pgd/controlled_global_stage.hpp;
+// docs/method.md §5), the fine level of `latin-pgd` and `fas-apriori`.
+#include "stcontact/options/option_fields.hpp"
+
+namespace stc::pgd {
+
+struct ControlledStageOptions {
+  /// γ: the projection error is kept below γ times the previous iteration's gap ‖s − ŝ‖. Must be
+  /// small against 1 − ρ (LATIN's rate ρ ≈ 0.9 on the seed scene); 0.05 measured in docs/floor.md.
+  double gap_share = 0.05;
+  int block = 8;             ///< directions added per enrichment pass at most
+  int oversampling = 4;      ///< extra random samples of the range finder
+  int power_iterations = 1;  ///< subspace iterations of the range finder
+
+  template <class Self, class Visit>
+  static void fields(Self& o, Visit&& visit) {
+    visit("pgd_gap_share", o.gap_share, inOpenUnit());
+    visit("block", o.block, atLeast(1), Exposure::Library);
+    visit("oversampling", o.oversampling, atLeast(0), Exposure::Library);
+    visit("power_iterations", o.power_iterations, atLeast(0), Exposure::Library);
+  }
+  void validate() const { validateFields(*this, "separated global stage"); }
+};
+
+}  // namespace stc::pgd

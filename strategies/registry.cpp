@@ -1,0 +1,33 @@
+#include "stcontact/strategies/registry.hpp"
+
+#include <stdexcept>
+
+#include "stcontact/fas/aposteriori/solve_fas_aposteriori.hpp"
+#include "stcontact/fas/apriori/solve_fas_apriori.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/pgd/latin_pgd_solver.hpp"
+
+namespace stc {
+
+const std::array<StrategyRegistration, kStrategies.size()>& strategyRegistry() {
+  using P = const Problem&;
+  using S = const SolverSpec&;
+  using I = const SolveInputs&;
+  static const std::array<StrategyRegistration, kStrategies.size()> registry = {{
+      {Strategy::Latin, [](P p, S s, I in) { return latin::solveLatin(p, s.latin, in); }},
+      {Strategy::LatinPgd, [](P p, S s, I in) { return pgd::solveLatinPgd(p, s.latin_pgd, in); }},
+      {Strategy::FasAposteriori, [](P p, S s, I in) { return fas::solveFasAposteriori(p, s.fas_aposteriori, in); }},
+      {Strategy::FasApriori, [](P p, S s, I in) { return fas::solveFasApriori(p, s.fas_apriori, in); }},
+      {Strategy::Incremental, [](P p, S s, I in) { return solveIncremental(p, s.incremental, in); }},
+  }};
+  return registry;
+}
+
+SolveResult solve(Strategy strategy, const Problem& problem, const SolverSpec& spec, const SolveInputs& inputs) {
+  for (const StrategyRegistration& r : strategyRegistry())
+    if (r.strategy == strategy) return r.solve(problem, spec, inputs);
+  throw std::logic_error("strategy without a registration: " + std::string(nameOf(strategy)));
+}
+
+}  // namespace stc
