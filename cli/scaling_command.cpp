@@ -19,18 +19,13 @@
 #include "stcontact/studies/compare_runs.hpp"
 #include "stcontact/studies/number_format.hpp"
 #include "stcontact/studies/scaling_plots.hpp"
+#include "stcontact/studies/scaling_runs.hpp"
 #include "stcontact/studies/scaling_writer.hpp"
 
 namespace stc::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// One size to run: its overrides, and the series it belongs to.
-struct PlannedSize {
-  int mesh_size = 0, steps = 0;
-  bool in_mesh = false, in_time = false;
-};
 
 /// The mesh series' generator key and its sizes: arc_nodes (half_disc, half_disc_slab) or divisions
 /// (half_ball); the option of the other kind must not be given.
@@ -88,14 +83,14 @@ MeshSeries meshSeries(const ScalingArgs& a, const Scene& base) {
 }
 
 /// The mesh series at the base instants, then the time series at the base mesh; a size in both runs once.
-std::vector<PlannedSize> planSizes(const MeshSeries& mesh, const ScalingArgs& a, const Scene& base) {
-  std::vector<PlannedSize> plan;
+std::vector<ScalingSize> planSizes(const MeshSeries& mesh, const ScalingArgs& a, const Scene& base) {
+  std::vector<ScalingSize> plan;
   const std::vector<int> steps = sizeList(a.steps, "--steps", 2);
   if (mesh.sizes.empty() && steps.empty()) throw InputError("the mesh and time series are both empty: nothing to run");
   for (int n : mesh.sizes) plan.push_back({n, base.time.steps, true, false});
   for (int m : steps) {
     auto same = std::find_if(plan.begin(), plan.end(),
-                             [&](const PlannedSize& p) { return p.mesh_size == mesh.base && p.steps == m; });
+                             [&](const ScalingSize& p) { return p.mesh_size == mesh.base && p.steps == m; });
     if (same != plan.end())
       same->in_time = true;
     else
@@ -124,7 +119,7 @@ std::string commandLine(const ScalingArgs& a, const std::vector<std::string>& so
   return line;
 }
 
-Scene sceneAt(const ScalingArgs& a, const MeshSeries& mesh, const PlannedSize& size) {
+Scene sceneAt(const ScalingArgs& a, const MeshSeries& mesh, const ScalingSize& size) {
   std::vector<std::string> overrides = a.overrides;
   if (size.in_mesh) overrides.push_back("mesh." + mesh.parameter + "=" + std::to_string(size.mesh_size));
   overrides.push_back("time.steps=" + std::to_string(size.steps));
@@ -132,49 +127,6 @@ Scene sceneAt(const ScalingArgs& a, const MeshSeries& mesh, const PlannedSize& s
   scene.solver.setTolerance(a.tolerance);
   if (a.max_iterations) scene.solver.setMaxIterations(*a.max_iterations);
   return scene;
-}
-
-void printStrategy(const ScalingStudy& study, const ScalingPoint& p, const StrategyMeasurement& m) {
-  const Reach r = reachAt(study, p, m.solver);
-  std::cout << "    " << m.solver << ": "
-            << (r.wall_s ? targetLabel(study.target_error) + " in " + shortNumber(*r.wall_s, 3) + " s"
-                         : "not reached (" + reachStatus(study, p, m.solver) + ", best error " +
-                               shortNumber(m.best_error, 2) + ")")
-            << ", peak " << shortNumber(m.memory.peak_mb, 4) << " MB";
-  if (m.error_run_s) std::cout << ", error run " << shortNumber(*m.error_run_s, 3) << " s";
-  std::cout << std::endl;
-}
-
-/// Builds the size's problem and reference, then measures every strategy on it.
-ScalingPoint measureSize(const ScalingArgs& a, const ScalingStudy& study, const MeshSeries& mesh,
-                         const PlannedSize& size, const std::string& command) {
-  const Scene scene = sceneAt(a, mesh, size);
-  const Problem problem = buildProblem(scene);
-  ScalingPoint p;
-  p.mesh_size = size.mesh_size;
-  p.dimension = problem.contact.dimension;
-  p.free_dofs = problem.numFreeDofs();
-  p.in_mesh_series = size.in_mesh;
-  p.in_time_series = size.in_time;
-  p.comparison = describeComparison(a.scene, command, scene, problem, a.repeats);
-  if (!a.quiet)
-    std::cout << "  " << p.comparison.n_dofs << " dofs, " << p.comparison.n_contact_nodes << " contact nodes, "
-              << p.comparison.n_steps << " instants" << std::endl;
-  TerminalProgress progress(a.quiet);
-  const ReferenceSolution reference = computeReference(problem, &progress);
-  p.comparison.reference_s = reference.total_s;
-  p.factor_nonzeros = reference.factor_nonzeros;
-  if (!a.quiet) std::cout << "    reference: " << shortNumber(reference.total_s, 3) << " s" << std::endl;
-  CompareContext context{problem, scene.solver, reference, a.repeats, &progress};
-  context.stop.target_error = a.target_error;
-  context.stop.time_cap_s = a.time_cap_s;
-  for (const std::string& solver : study.solvers) {
-    p.comparison.strategies.push_back(measureStrategy(strategyNamed(solver), context));
-    if (!a.quiet) printStrategy(study, p, p.comparison.strategies.back());
-  }
-  p.comparison.memory_method = describeMemoryMethod(p.comparison.strategies.front().memory.since_reset);
-  p.comparison.load_after = loadAverage();
-  return p;
 }
 
 void validate(const ScalingArgs& a) {
@@ -220,7 +172,7 @@ int runScaling(const ScalingArgs& a) {
   validate(a);
   const Scene base = readScene(a.scene, a.overrides);
   const MeshSeries mesh = meshSeries(a, base);
-  const std::vector<PlannedSize> plan = planSizes(mesh, a, base);
+  const std::vector<ScalingSize> plan = planSizes(mesh, a, base);
   ScalingStudy study;
   study.solvers = strategyNamesOf(solverList(a.solvers));
   const std::filesystem::path out =
@@ -235,11 +187,15 @@ int runScaling(const ScalingArgs& a) {
   study.repeats = a.repeats;
   study.time_cap_s = a.time_cap_s;
   study.environment = describeRunEnvironment();
+  TerminalProgress progress(a.quiet);
+  EarlyStop stop;
+  stop.target_error = a.target_error;
+  stop.time_cap_s = a.time_cap_s;
   for (std::size_t i = 0; i < plan.size(); ++i) {
     if (!a.quiet)
       std::cout << "[" << i + 1 << "/" << plan.size() << "] " << mesh.parameter << " " << plan[i].mesh_size
                 << ", steps " << plan[i].steps << std::endl;
-    study.points.push_back(measureSize(a, study, mesh, plan[i], study.command));
+    study.points.push_back(measureScalingSize(sceneAt(a, mesh, plan[i]), plan[i], study, stop, &progress));
   }
   study.memory_method = study.points.front().comparison.memory_method;
   study.load_after = loadAverage();

@@ -16,7 +16,7 @@ struct SolveInputs {
   /// solution, src/incremental/error_reference.hpp).
   const ErrorMeasure* reference = nullptr;
   /// Called after every iteration; returning false stops the solve (Termination::StoppedByCallback).
-  IterationCallback callback;
+  IterationCallback callback = {};
   /// Warm start (src/solver/warm_start.hpp): the interface history the iterative strategies start
   /// from instead of s = 0, e.g. a neighbouring problem's SolveResult::interface (d n_C × m).
   /// Ignored by `incremental`, which marches in time from the unloaded state.

@@ -8,6 +8,7 @@
 // Sample run
 //   build/bin/compare_bases examples/scenes/hemicylinder.toml --out results/compare_bases
 //   build/bin/compare_bases examples/scenes/hemicylinder.toml --small --out /tmp/cb   (ctest case)
+//   build/bin/compare_bases --help
 // Options: SCENE, --out DIR, --set KEY=VALUE (repeatable), --small (mesh.arc_nodes=21,
 //   time.steps=21), --repeats N (timed runs per strategy, default 5), --no-verify (skip the SVD
 //   verification of the a priori basis).
@@ -40,54 +41,19 @@
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/gnuplot_runner.hpp"
+#include "stcontact/studies/programs/study_program.hpp"
+#include "stcontact/studies/work_precision.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 const std::vector<std::string> kStrategies = {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori"};
 const std::vector<double> kTargets = {1e-2, 1e-4, 1e-6};
 
-struct Options {
-  fs::path scene = "examples/scenes/hemicylinder.toml";
-  fs::path out = "results/compare_bases";
-  std::vector<std::string> overrides;
-  int repeats = 5;
+struct Options : stc::study::StudyOptions {
   bool verify = true;  ///< off with --no-verify (parameter scans)
 };
-
-Options parseArgs(int argc, char** argv) {
-  Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw stc::InputError(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--out") o.out = value();
-    else if (a == "--set") o.overrides.push_back(value());
-    else if (a == "--repeats") o.repeats = std::max(1, std::stoi(value()));
-    else if (a == "--no-verify") o.verify = false;
-    else if (a == "--small") o.overrides.insert(o.overrides.end(), {"mesh.arc_nodes=21", "time.steps=21"});
-    else if (!a.empty() && a[0] == '-') throw stc::InputError("unknown option " + a);
-    else o.scene = a;
-  }
-  return o;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-template <class F>
-double seconds(F&& f) {
-  const auto t0 = Clock::now();
-  f();
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 struct Setup {
   stc::Scene scene;
@@ -116,7 +82,7 @@ Run runStrategy(const Setup& st, const std::string& name, int repeats) {
   std::vector<double> times;
   for (int i = 0; i < repeats; ++i)
     times.push_back(stc::solve(stc::strategyNamed(name), st.problem, st.scene.solver, timed).summary.wall_s);
-  run.median_s = median(times);
+  run.median_s = stc::median(times);
   return run;
 }
 
@@ -251,8 +217,8 @@ Setup setUp(const Options& o) {
   st.scene = stc::readScene(o.scene, o.overrides);
   st.problem = stc::buildProblem(st.scene);
   std::vector<double> times;
-  for (int i = 0; i < o.repeats; ++i) times.push_back(seconds([&] { st.incremental = stc::solveIncremental(st.problem); }));
-  st.incremental_s = median(times);
+  for (int i = 0; i < o.repeats; ++i) times.push_back(stc::study::secondsOf([&] { st.incremental = stc::solveIncremental(st.problem); }));
+  st.incremental_s = stc::median(times);
   st.K = std::make_unique<stc::SpdFactor>(st.problem.stiffness_free, "K_ff");
   const auto condensed = stc::CondensedInterface::build(st.problem, *st.K);
   st.reference = std::make_unique<stc::ErrorReference>(st.problem, *st.K, condensed.delassus,
@@ -268,39 +234,45 @@ bool check(const std::vector<Run>& runs) {
          a->relaxations < l->relaxations;
 }
 
+int study(const Options& o) {
+  const Setup st = setUp(o);
+  fs::create_directories(o.out);
+  std::vector<Run> runs;
+  for (const auto& name : kStrategies) {
+    runs.push_back(runStrategy(st, name, o.repeats));
+    writeCsv(o.out / (name + ".csv"), runs.back());
+    std::cout << name << ": " << toString(runs.back().summary.termination) << ", " << runs.back().summary.relaxations
+              << " relaxations, error " << runs.back().summary.error.value_or(NAN) << ", median "
+              << runs.back().median_s << " s\n";
+  }
+  std::vector<double> svd_times;
+  for (int i = 0; i < o.repeats; ++i)
+    svd_times.push_back(stc::study::secondsOf(
+        [&] { stc::fas::aposterioriModes(st.problem, *st.K, st.incremental.interface.lambda, 20); }));
+  const Verification v = o.verify ? verify(st) : Verification{};
+  writeSummary(o.out / "summary.md", st, runs, stc::median(svd_times), v, o);
+  plot(o.out);
+  std::cout << "report: " << (o.out / "summary.md").string() << "\n";
+  if (!check(runs)) {
+    std::cerr << "check failed: fas-apriori must converge, agree with incremental to 1e-5 and beat latin to 1e-4\n";
+    return 2;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  stc::linalg::preferFastBlasKernels();  // as the command line (src/linalg/blas_kernels.hpp)
-  try {
-    const Options o = parseArgs(argc, argv);
-    const Setup st = setUp(o);
-    fs::create_directories(o.out);
-    std::vector<Run> runs;
-    for (const auto& name : kStrategies) {
-      runs.push_back(runStrategy(st, name, o.repeats));
-      writeCsv(o.out / (name + ".csv"), runs.back());
-      std::cout << name << ": " << toString(runs.back().summary.termination) << ", " << runs.back().summary.relaxations
-                << " relaxations, error " << runs.back().summary.error.value_or(NAN) << ", median "
-                << runs.back().median_s << " s\n";
-    }
-    std::vector<double> svd_times;
-    for (int i = 0; i < o.repeats; ++i)
-      svd_times.push_back(seconds([&] { stc::fas::aposterioriModes(st.problem, *st.K, st.incremental.interface.lambda, 20); }));
-    const Verification v = o.verify ? verify(st) : Verification{};
-    writeSummary(o.out / "summary.md", st, runs, median(svd_times), v, o);
-    plot(o.out);
-    std::cout << "report: " << (o.out / "summary.md").string() << "\n";
-    if (!check(runs)) {
-      std::cerr << "check failed: fas-apriori must converge, agree with incremental to 1e-5 and beat latin to 1e-4\n";
-      return 2;
-    }
-    return 0;
-  } catch (const stc::InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "internal error: " << e.what() << "\n";
-    return 3;
-  }
+  CLI::App app{"A posteriori vs a priori coarse bases (docs/compare_bases.md)"};
+  Options o;
+  o.scene = "examples/scenes/hemicylinder.toml";
+  o.out = "results/compare_bases";
+  o.repeats = 5;
+  stc::study::addStudyOptions(app, o);
+  bool no_verify = false;
+  app.add_flag("--no-verify", no_verify, "skip the SVD verification of the a priori basis");
+  return stc::study::runStudy(app, o, argc, argv, [&] {
+    o.verify = !no_verify;
+    return study(o);
+  });
 }

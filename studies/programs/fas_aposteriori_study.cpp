@@ -49,6 +49,8 @@
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/studies/gnuplot_runner.hpp"
+#include "stcontact/studies/programs/study_program.hpp"
+#include "stcontact/studies/work_precision.hpp"
 
 namespace fs = std::filesystem;
 using stc::fas::CoarseStart;
@@ -61,55 +63,11 @@ double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>
 constexpr double kStopError = 1e-8;  // a run stops once its true error is below this (callback)
 constexpr int kMaxModes = 20;
 
-struct Options {
-  fs::path scene = fs::path(STC_SOURCE_DIR) / "examples/scenes/hemicylinder.toml";
-  fs::path out = "results/fas_aposteriori";
-  std::vector<std::string> overrides;
-  bool small = false;
-  bool help = false;
+struct Options : stc::study::StudyOptions {
   bool safeguard = false;  ///< --safeguard: FAS with the coarse-step safeguard (library default)
   bool fixed_ic = false;   ///< --fixed-ic: with the safeguard, i_C fixed (adapted by default)
   int max_relaxations = 600;
-  int repeats = 31;  ///< timing repeats of step 4 (median)
 };
-
-Options parseArgs(int argc, char** argv) {
-  Options o;
-  auto value = [&](int& i) -> std::string {
-    if (i + 1 >= argc) throw stc::InputError(std::string(argv[i]) + " needs a value");
-    return argv[++i];
-  };
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--out")
-      o.out = value(i);
-    else if (a == "--set")
-      o.overrides.push_back(value(i));
-    else if (a == "--small")
-      o.small = true;
-    else if (a == "--safeguard")
-      o.safeguard = true;
-    else if (a == "--fixed-ic")
-      o.fixed_ic = true;
-    else if (a == "--max-relaxations") {
-      const std::string v = value(i);
-      try {
-        o.max_relaxations = std::stoi(v);
-      } catch (const std::exception&) {
-        throw stc::InputError("--max-relaxations: '" + v + "' is not an integer");
-      }
-    } else if (a == "--help" || a == "-h")
-      o.help = true;
-    else if (a.rfind("--", 0) == 0)
-      throw stc::InputError("unknown option '" + a + "'");
-    else
-      o.scene = a;
-  }
-  if (o.max_relaxations < 10) throw stc::InputError("--max-relaxations must be >= 10");
-  if (o.fixed_ic && !o.safeguard) throw stc::InputError("--fixed-ic needs --safeguard (the plain cycle's i_C is fixed)");
-  if (o.small) o.overrides.insert(o.overrides.begin(), {"mesh.arc_nodes=21", "time.steps=21"});
-  return o;
-}
 
 // ---- the runs ------------------------------------------------------------------------------
 
@@ -227,18 +185,6 @@ std::string finalStatus(const stc::SolveSummary& s) {
 
 // ---- step 4: the cost of a coarse step against a fine relaxation ------------------------------
 
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
-template <class F>
-double seconds(F&& work) {
-  const auto t0 = Clock::now();
-  work();
-  return secondsSince(t0);
-}
-
 struct Cost {
   double relaxation_s = 0.0;  ///< GlobalStage::solve + indicator + localStage
   double local_s = 0.0;       ///< localStage alone (i_C of them in a coarse step)
@@ -278,29 +224,29 @@ Cost measureCost(const Study& st, stc::latin::GlobalStage& global, int repeats) 
   std::vector<double> relax, local, error;
   std::vector<std::vector<double>> renew(c.rows.size()), coarse(c.rows.size()), rr(c.rows.size()), cr(c.rows.size());
   for (int i = 0; i < repeats; ++i) {
-    relax.push_back(seconds([&] {
+    relax.push_back(stc::study::secondsOf([&] {
       global.solve(hat, s2);
       volatile double eta = stc::latin::indicator(contact.search_direction, s2, hat);
       (void)eta;
       stc::latin::localStage(contact, s2, hat2);
     }));
-    local.push_back(seconds([&] { stc::latin::localStage(contact, s2, hat2); }));
-    error.push_back(seconds([&] {
+    local.push_back(stc::study::secondsOf([&] { stc::latin::localStage(contact, s2, hat2); }));
+    error.push_back(stc::study::secondsOf([&] {
       volatile double e = st.reference->relativeError(s2.lambda);
       (void)e;
     }));
     for (std::size_t j = 0; j < c.rows.size(); ++j) {
-      renew[j].push_back(seconds([&] { spaces[j] = providers[j]->coarseSpace(hat); }));
+      renew[j].push_back(stc::study::secondsOf([&] { spaces[j] = providers[j]->coarseSpace(hat); }));
       hat2 = hat;  // coarseStep overwrites its local-stage iterate: start each repeat from the same one
-      coarse[j].push_back(seconds([&] { stc::fas::coarseStep(contact, spaces[j], o, s, hat2); }));
+      coarse[j].push_back(stc::study::secondsOf([&] { stc::fas::coarseStep(contact, spaces[j], o, s, hat2); }));
       rr[j].push_back(renew[j].back() / relax.back());
       cr[j].push_back(coarse[j].back() / relax.back());
     }
   }
-  c.relaxation_s = median(relax), c.local_s = median(local), c.error_s = median(error);
+  c.relaxation_s = stc::median(relax), c.local_s = stc::median(local), c.error_s = stc::median(error);
   for (std::size_t j = 0; j < c.rows.size(); ++j) {
-    c.rows[j].renew_s = median(renew[j]), c.rows[j].coarse_s = median(coarse[j]);
-    c.rows[j].renew_ratio = median(rr[j]), c.rows[j].coarse_ratio = median(cr[j]);
+    c.rows[j].renew_s = stc::median(renew[j]), c.rows[j].coarse_s = stc::median(coarse[j]);
+    c.rows[j].renew_ratio = stc::median(rr[j]), c.rows[j].coarse_ratio = stc::median(cr[j]);
   }
   return c;
 }
@@ -550,20 +496,18 @@ int run(const Options& opt) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  stc::linalg::preferFastBlasKernels();  // as the command line (src/linalg/blas_kernels.hpp)
-  try {
-    const Options options = parseArgs(argc, argv);
-    if (options.help) {
-      std::cout << "usage: fas_aposteriori_study [SCENE] [--out DIR] [--set KEY=VALUE]... [--small] "
-                   "[--max-relaxations N] [--safeguard [--fixed-ic]]\n";
-      return 0;
-    }
-    return run(options);
-  } catch (const stc::InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "error: internal failure: " << e.what() << "\n";
-    return 3;
-  }
+  CLI::App app{"The seed's Figs. 4-5: FAS with the a posteriori basis against LATIN (docs/fas_aposteriori.md)"};
+  Options o;
+  o.scene = fs::path(STC_SOURCE_DIR) / "examples/scenes/hemicylinder.toml";
+  o.out = "results/fas_aposteriori";
+  o.repeats = 31;
+  stc::study::addStudyOptions(app, o);
+  app.add_option("--max-relaxations", o.max_relaxations, "cap of fine relaxations per run")
+      ->capture_default_str()
+      ->check(CLI::Range(10, 1000000));
+  auto* safeguard = app.add_flag("--safeguard", o.safeguard,
+                                 "FAS with the coarse-step safeguard (the library's default); off: the seed's plain cycle");
+  app.add_flag("--fixed-ic", o.fixed_ic, "with --safeguard: i_C fixed (adapted to the safeguard's verdicts by default)")
+      ->needs(safeguard);
+  return stc::study::runStudy(app, o, argc, argv, [&] { return run(o); });
 }
