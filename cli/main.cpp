@@ -29,7 +29,7 @@ int fail(int status, const std::string& message) {
   return status;
 }
 
-// The solvers allocate interface fields (2n_C × m doubles, 0.3 MB on the seed scene) at every stage.
+// The solvers allocate interface fields (d n_C × m doubles, 0.3 MB on the seed scene) at every stage.
 // glibc serves blocks above its mmap threshold (128 kB, raised on the fly up to 32 MB) by mmap and
 // returns the heap's free top to the system above its trim threshold, so that each new field costs
 // page faults and zeroing: 8 % of a fas-apriori solve of the seed scene (perf), 19 % of its time.

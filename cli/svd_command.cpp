@@ -120,7 +120,7 @@ void writeFigures(const std::filesystem::path& out, const Problem& problem, cons
   spec.singular_values = std::min(kFigureSingularValues, a.svd.size());
   spec.time_functions = drawn;
   writeFileAtomically(out / "modes_deformed.dat",
-                      deformedModesData(problem.mesh, a.svd, drawn, loc,
+                      deformedModesData(std::get<TriMesh>(problem.body), a.svd, drawn, loc,
                                              kFigureDisplacement * problem.length_scale, spec.mode_scales));
   for (int i = 0; i < drawn; ++i) spec.mode_energy.push_back(a.svd.energyFraction(i));
   writeFileAtomically(out / "svd_figures.gp", svdFiguresScript(spec));
@@ -215,7 +215,7 @@ int runSvd(const SvdArgs& args) {
   writeFileAtomically(out / "singular_values.csv", singularValuesCsv(a.svd));
   writeFileAtomically(out / "time_functions.csv", timeFunctionsCsv(a.svd, problem.times, modes));
   if (loc) writeFileAtomically(out / "localisation.csv", localisationCsv(a.svd, *loc, modes));
-  if (plane) writeFileAtomically(out / "modes.vtu", modesVtu(problem.mesh, a.svd, modes, loc.get()));
+  if (plane) writeFileAtomically(out / "modes.vtu", modesVtu(std::get<TriMesh>(problem.body), a.svd, modes, loc.get()));
   writeFileAtomically(out / "svd_summary.json", summaryJson(problem, a, loc.get(), solve_s));
   if (plane && a.svd.total_energy > 0.0) writeFigures(out, problem, a, loc.get());
   else if (plane) std::cerr << "note: zero elastic energy over the history: no figures\n";

@@ -16,12 +16,12 @@ class CoarseSpace {
   CoarseSpace(const Eigen::MatrixXd& vectors, const Eigen::SparseMatrix<double>& A,
               const Eigen::SparseMatrix<double>& B, double drop = 1e-12);
   /// A space whose basis Y is A-orthonormal by construction and kept in separated form
-  /// (pgd/separated_history.hpp): only its traces B Y (2n_C × r) are given; basis() is empty.
+  /// (pgd/separated_history.hpp): only its traces B Y (d n_C × r) are given; basis() is empty.
   static CoarseSpace fromTraces(Eigen::MatrixXd traces);
 
   int rank() const { return static_cast<int>(BY_.cols()); }
   const Eigen::MatrixXd& basis() const { return Y_; }       ///< Y, n_free × r, YᵀAY = I (may be empty)
-  const Eigen::MatrixXd& interface() const { return BY_; }  ///< B Y, 2n_C × r
+  const Eigen::MatrixXd& interface() const { return BY_; }  ///< B Y, d n_C × r
   /// Largest |YᵀAY − I| entry (a check of the orthonormalisation).
   double orthonormalityDefect(const Eigen::SparseMatrix<double>& A) const;
 

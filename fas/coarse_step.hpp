@@ -7,7 +7,7 @@
 //   2. fine local stage: ŝ ← its result (in Γ).
 // (The seed's increments Δv̂ = v̂ − Bũ, Δλ̂ = λ̂ − λ̃ give res̃ + Δλ̂ + kΔv̂ = W(ŝ) − W_s.) Start (a)
 // takes ŝ = (Bũ, λ̃), start (b) the local stage's own ŝ = (v̂, λ̃). Each iteration is two products
-// with B Y (2n_C × r), a pass over the interface fields and a local stage that forms the trial and
+// with B Y (d n_C × r), a pass over the interface fields and a local stage that forms the trial and
 // the next state node by node (latin::localStageOfTrial). Its state is
 // w = W(ŝ); with FasOptions::coarse_anderson > 0 the next w is the Anderson mixing of the last
 // images (src/linalg/anderson.hpp, in the k⁻¹ norm), the last iteration a plain one, so that the

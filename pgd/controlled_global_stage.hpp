@@ -11,7 +11,7 @@
 // of the previous iteration (observeGap). A perturbation ε_n ≤ γ ‖s_{n−1} − ŝ_{n−1}‖ keeps a
 // contraction of rate ρ a contraction of rate about ρ + γ (the gap is of the size of the distance to
 // the fixed point), and vanishes with the gap: the iteration converges to the fixed point of the
-// exact global stage. Each solve costs three products with p columns on 2n_C × m interface fields,
+// exact global stage. Each solve costs three products with p columns on d n_C × m interface fields,
 // plus one sparse solve per new direction.
 #include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/linear_stage.hpp"
@@ -32,7 +32,7 @@ class ControlledGlobalStage : public latin::LinearStage {
   int rank() const override { return basis_.size(); }
   const SpdFactor& factor() const override { return factor_; }
 
-  /// Starts the directions from `directions` (2n_C × p, e.g. a neighbouring problem's: a warm
+  /// Starts the directions from `directions` (d n_C × p, e.g. a neighbouring problem's: a warm
   /// start), k⁻¹-orthonormalised in order, dependent ones dropped. Returns the number kept.
   int seed(const Eigen::MatrixXd& directions);
 

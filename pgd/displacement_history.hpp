@@ -10,7 +10,7 @@
 
 namespace stc::pgd {
 
-/// n × m full displacements for the contact forces `lambda` (2n_C × m), one multi-right-hand-side
+/// n × m full displacements for the contact forces `lambda` (d n_C × m), one multi-right-hand-side
 /// solve with the factor of K_ff.
 Eigen::MatrixXd fullDisplacementHistory(const Problem& problem, const SpdFactor& stiffness_free,
                                         const Eigen::MatrixXd& lambda);

@@ -3,9 +3,9 @@
 // reuses (docs/method.md §5, "Separated global stage"). The global stage's right-hand sides are
 //   r_k = F g_k + Bᵀ w_k,   w_k = λ̂_k + k v̂_k   (loads in separated form, Problem::loads),
 // so its solutions are u_k = U_F g_k + A⁻¹ Bᵀ w_k with the load responses U_F = A⁻¹ F (q solves,
-// once). For the interface part the basis keeps directions Z = [z_1 … z_p] (2n_C × p, orthonormal
+// once). For the interface part the basis keeps directions Z = [z_1 … z_p] (d n_C × p, orthonormal
 // in the k⁻¹ product: Zᵀ k⁻¹ Z = I), their responses X = A⁻¹ Bᵀ Z (n_free × p: the spatial modes
-// of the separated displacement u_k ≈ U_F g_k + X c_k) and their traces T = B X (2n_C × p), and the
+// of the separated displacement u_k ≈ U_F g_k + X c_k) and their traces T = B X (d n_C × p), and the
 // Cholesky factor of the energy Gram matrix of Φ = [U_F X] (pgd/energy_factor.hpp), from traces:
 //   U_Fᵀ A U_F = U_Fᵀ F,   U_Fᵀ A X = U_Fᵀ Bᵀ Z = V_Fᵀ Z,   Xᵀ A X = Xᵀ Bᵀ Z = Tᵀ Z.
 // Nothing here is n_free × m: memory O((q + p) n_free + (q + p + m) n_C). Columns are appended to
@@ -27,22 +27,22 @@ class ResponseBasis {
   ResponseBasis(const Problem& problem, const SpdFactor& factor);
 
   int size() const { return static_cast<int>(Z_.cols()); }       ///< p
-  int maxSize() const { return static_cast<int>(Z_.rows()); }    ///< 2n_C: Z then spans every w
-  View directions() const { return Z_.view(); }                  ///< Z, 2n_C × p
+  int maxSize() const { return static_cast<int>(Z_.rows()); }    ///< d n_C: Z then spans every w
+  View directions() const { return Z_.view(); }                  ///< Z, d n_C × p
   View scaledDirections() const { return Zs_.view(); }           ///< k^{-1/2} Z: orthonormal columns
   View responses() const { return X_.view(); }                   ///< X = A⁻¹ Bᵀ Z, n_free × p
-  View traces() const { return T_.view(); }                      ///< T = B X, 2n_C × p
+  View traces() const { return T_.view(); }                      ///< T = B X, d n_C × p
   const Eigen::MatrixXd& loadResponses() const { return UF_; }   ///< U_F = A⁻¹ F, n_free × q
-  const Eigen::MatrixXd& loadTraces() const { return VF_; }      ///< V_F = B U_F, 2n_C × q
+  const Eigen::MatrixXd& loadTraces() const { return VF_; }      ///< V_F = B U_F, d n_C × q
   const Eigen::MatrixXd& loadHistories() const { return G_; }    ///< G, q × m
-  const Eigen::MatrixXd& freeResponse() const { return v0_; }    ///< V_F G: v of w = 0, 2n_C × m
+  const Eigen::MatrixXd& freeResponse() const { return v0_; }    ///< V_F G: v of w = 0, d n_C × m
   /// The Cholesky factor of ΦᵀAΦ, Φ = [U_F X] (q + p columns).
   const EnergyFactor& energyFactor() const { return energy_; }
   /// √k and 1/√k per interface row: the k⁻¹ product is the Euclidean one of k^{-1/2} w.
   const Eigen::VectorXd& sqrtK() const { return sqrt_k_; }
   const Eigen::VectorXd& invSqrtK() const { return inv_sqrt_k_; }
 
-  /// Appends the columns of `candidates` (2n_C × b), k⁻¹-orthogonalised against the directions
+  /// Appends the columns of `candidates` (d n_C × b), k⁻¹-orthogonalised against the directions
   /// (block classical Gram–Schmidt, a second pass for the columns the first one shortened by more
   /// than 1 − 1/√2) and each other (in order, twice), dropping those left with less
   /// than `drop` of their norm, and solves for their responses (one multi-right-hand-side solve).

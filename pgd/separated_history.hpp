@@ -39,7 +39,7 @@ EnergySvd energySvd(const ResponseBasis& basis, const Eigen::MatrixXd& c, int co
 
 /// The spatial modes Y = [U_F X] · combination (n_free × r): for output and warm starts only.
 Eigen::MatrixXd spatialModes(const ResponseBasis& basis, const Eigen::MatrixXd& combination);
-/// Their traces B Y = [V_F T] · combination (2n_C × r).
+/// Their traces B Y = [V_F T] · combination (d n_C × r).
 Eigen::MatrixXd modeTraces(const ResponseBasis& basis, const Eigen::MatrixXd& combination);
 
 /// B_rows u for the history with coordinates `c` (p × m, p ≤ basis.size()): B_rows (U_F G + X c), for

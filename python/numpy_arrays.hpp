@@ -1,6 +1,6 @@
 #pragma once
 // Results handed to NumPy without a second copy: the array takes ownership of the C++ storage (a
-// capsule deletes it with the array), so a 2n_C × m force history or an n × m displacement history
+// capsule deletes it with the array), so a d n_C × m force history or an n × m displacement history
 // exists once. Eigen matrices keep their column-major layout (NumPy order 'F'): column k is instant
 // t_k, contiguous, and rows 0::2 / 1::2 are strided views, not copies.
 #include <pybind11/eigen.h>

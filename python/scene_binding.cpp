@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "stcontact/core/overloaded.hpp"
 #include "stcontact/python/bindings.hpp"
 #include "stcontact/python/numpy_arrays.hpp"
 #include "stcontact/python/scene_handle.hpp"
@@ -53,8 +54,9 @@ py::dict meshArrays(const SceneHandle& handle) {
   const std::shared_ptr<const Problem> problem = handle.problem();
   py::dict mesh;
   mesh["nodes"] = movedToNumpy(Eigen::MatrixXd(problem->nodePositions().transpose()));
-  if (problem->dimension == 3) mesh["tetrahedra"] = movedToNumpy(Eigen::MatrixXi(problem->solid.tets.transpose()));
-  else mesh["triangles"] = movedToNumpy(Eigen::MatrixXi(problem->mesh.triangles.transpose()));
+  std::visit(Overloaded{[&](const TriMesh& m) { mesh["triangles"] = movedToNumpy(Eigen::MatrixXi(m.triangles.transpose())); },
+                        [&](const TetMesh& m) { mesh["tetrahedra"] = movedToNumpy(Eigen::MatrixXi(m.tets.transpose())); }},
+             problem->body);
   mesh["contact_nodes"] = movedToNumpy(std::vector<int>(problem->contact.nodes));
   mesh["initial_gap"] = movedToNumpy(Eigen::VectorXd(problem->contact.initial_gap));
   mesh["times"] = movedToNumpy(std::vector<double>(problem->times));

@@ -22,7 +22,7 @@ double segmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const
 }
 
 // d_e: centroid of element e to the nearest zone edge, or zone node (a zone may be a single node).
-double distanceToZone(const Mesh& mesh, const ContactZone& zone, const Eigen::Vector2d& p) {
+double distanceToZone(const TriMesh& mesh, const ContactZone& zone, const Eigen::Vector2d& p) {
   double d = std::numeric_limits<double>::infinity();
   for (const auto& edge : zone.edges)
     d = std::min(d, segmentDistance(p, mesh.nodes.col(edge[0]), mesh.nodes.col(edge[1])));
@@ -43,24 +43,24 @@ ContactZone ContactZone::everClosed(const Problem& problem, const InterfaceHisto
         break;
       }
   zone.nodes.assign(closed.begin(), closed.end());
-  for (const auto& [name, group] : problem.mesh.groups)
+  for (const auto& [name, group] : std::get<TriMesh>(problem.body).groups)
     for (const auto& edge : group.edges)
       if (closed.count(edge[0]) && closed.count(edge[1])) zone.edges.push_back(edge);
   std::sort(zone.edges.begin(), zone.edges.end());
   zone.edges.erase(std::unique(zone.edges.begin(), zone.edges.end()), zone.edges.end());
   if (!zone.nodes.empty()) {
-    zone.xmin = zone.xmax = problem.mesh.nodes(0, zone.nodes.front());
+    zone.xmin = zone.xmax = std::get<TriMesh>(problem.body).nodes(0, zone.nodes.front());
     for (int node : zone.nodes) {
-      zone.xmin = std::min(zone.xmin, problem.mesh.nodes(0, node));
-      zone.xmax = std::max(zone.xmax, problem.mesh.nodes(0, node));
+      zone.xmin = std::min(zone.xmin, std::get<TriMesh>(problem.body).nodes(0, node));
+      zone.xmax = std::max(zone.xmax, std::get<TriMesh>(problem.body).nodes(0, node));
     }
   }
   return zone;
 }
 
 ModeLocalisation::ModeLocalisation(const Problem& problem, ContactZone zone, std::vector<double> band_depths)
-    : triangles_(problem.mesh.triangles),
-      dofs_(problem.mesh.numDofs()),
+    : triangles_(std::get<TriMesh>(problem.body).triangles),
+      dofs_(std::get<TriMesh>(problem.body).numDofs()),
       hooke_(hookeMatrix(problem.material, problem.plane)),
       zone_(std::move(zone)),
       depths_(std::move(band_depths)) {
@@ -69,7 +69,7 @@ ModeLocalisation::ModeLocalisation(const Problem& problem, ContactZone zone, std
   for (double d : depths_)
     if (!(d > 0.0) || !std::isfinite(d))
       throw InputError("mode localisation: band depth " + std::to_string(d) + " must be positive and finite");
-  const Mesh& mesh = problem.mesh;
+  const TriMesh& mesh = std::get<TriMesh>(problem.body);
   const int elements = mesh.numElements();
   strain_.resize(elements);
   area_.resize(elements);

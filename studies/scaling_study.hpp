@@ -87,12 +87,12 @@ struct Crossover {
 Crossover crossoverAgainstIncremental(const ScalingStudy& study, const std::string& solver, Series series);
 
 /// Growth of a strategy's peak memory between consecutive sizes of the time series, per instant,
-/// in bytes and in the units that could grow with m (docs/method.md §2: interface histories 2n_C doubles
+/// in bytes and in the units that could grow with m (docs/method.md §2: interface histories d n_C doubles
 /// per instant; a displacement field n_free doubles per instant).
 struct MemorySlope {
   int m_from = 0, m_to = 0;
   double bytes_per_instant = 0.0;
-  double interface_arrays = 0.0;  ///< bytes_per_instant / (8 · 2 n_C)
+  double interface_arrays = 0.0;  ///< bytes_per_instant / (8 · d n_C)
   double free_dof_fields = 0.0;   ///< bytes_per_instant / (8 · n_free)
 };
 

@@ -79,7 +79,7 @@ std::string localisationCsv(const pgd::SpaceTimeSvd& svd, const ModeLocalisation
   return out.str();
 }
 
-std::string modesVtu(const Mesh& mesh, const pgd::SpaceTimeSvd& svd, int modes, const ModeLocalisation* localisation) {
+std::string modesVtu(const TriMesh& mesh, const pgd::SpaceTimeSvd& svd, int modes, const ModeLocalisation* localisation) {
   checkModes(svd, modes);
   std::vector<PointField> points;
   std::vector<CellField> cells;
@@ -93,7 +93,7 @@ std::string modesVtu(const Mesh& mesh, const pgd::SpaceTimeSvd& svd, int modes, 
   return vtuDocument(mesh, points, cells);
 }
 
-std::string deformedModesData(const Mesh& mesh, const pgd::SpaceTimeSvd& svd, int modes,
+std::string deformedModesData(const TriMesh& mesh, const pgd::SpaceTimeSvd& svd, int modes,
                               const ModeLocalisation* localisation, double max_displacement,
                               std::vector<double>& scales) {
   checkModes(svd, modes);

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "stcontact/mesh/mesh.hpp"
+#include "stcontact/mesh/tri_mesh.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 #include "stcontact/studies/mode_localisation.hpp"
 
@@ -26,14 +26,14 @@ std::string localisationCsv(const pgd::SpaceTimeSvd& svd, const ModeLocalisation
 
 /// modes.vtu: point fields mode_1…mode_N (Υ_i √σ_i, 2 × nodes) and, when `localisation` is given,
 /// cell fields energy_density_1… (E_e / A_e of Υ_i, energy per unit area of the unit-energy mode).
-std::string modesVtu(const Mesh& mesh, const pgd::SpaceTimeSvd& svd, int modes, const ModeLocalisation* localisation);
+std::string modesVtu(const TriMesh& mesh, const pgd::SpaceTimeSvd& svd, int modes, const ModeLocalisation* localisation);
 
 /// Gnuplot data for the deformed-mode figure: for each of the first N pairs one data block
 /// (blocks separated by two blank lines, gnuplot's `index`), each triangle of the deformed mesh
 /// x + s_i Υ_i √σ_i as four lines "x y c" (the first vertex repeated) and a blank line; c is the element's energy density
 /// relative to the mode's mean density (E_e/A_e)/(Σ E_e/Σ A_e), or 1 without `localisation`.
 /// s_i makes the largest nodal displacement `max_displacement` (e.g. 0.12 R); returned in `scales`.
-std::string deformedModesData(const Mesh& mesh, const pgd::SpaceTimeSvd& svd, int modes,
+std::string deformedModesData(const TriMesh& mesh, const pgd::SpaceTimeSvd& svd, int modes,
                               const ModeLocalisation* localisation, double max_displacement,
                               std::vector<double>& scales);
 

@@ -11,7 +11,7 @@
 namespace stc::fas {
 
 /// n_free × count: rows `problem.free_dofs` of the first `count` energy-SVD spatial modes of the
-/// full displacement history rebuilt from `converged_lambda` (2n_C × m).
+/// full displacement history rebuilt from `converged_lambda` (d n_C × m).
 Eigen::MatrixXd aposterioriModes(const Problem& problem, const SpdFactor& stiffness_free,
                                  const Eigen::MatrixXd& converged_lambda, int count);
 

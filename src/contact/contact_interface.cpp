@@ -127,7 +127,7 @@ ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>&
 
 }  // namespace
 
-ContactInterface buildContactInterface(const Mesh& mesh, const std::string& boundary, const Obstacle& obstacle,
+ContactInterface buildContactInterface(const TriMesh& mesh, const std::string& boundary, const Obstacle& obstacle,
                                        const DofStatus& dofs, double friction) {
   const BoundaryGroup& group = mesh.group(boundary);
   return build(mesh.nodes, group.nodes, group.edges, boundary, obstacle, dofs, friction);

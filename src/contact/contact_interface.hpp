@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "stcontact/contact/obstacle.hpp"
-#include "stcontact/mesh/mesh.hpp"
 #include "stcontact/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/tri_mesh.hpp"
 
 namespace stc {
 
@@ -57,7 +57,7 @@ struct DofStatus {
 /// orthogonal to its normal and held at 0 at every instant: such an axis is one of the node's
 /// tangents (see `tangents`), whose row becomes a held row. Throws InputError for any other
 /// partly prescribed node, or a node that starts inside the obstacle (g0 < 0).
-ContactInterface buildContactInterface(const Mesh& mesh, const std::string& boundary, const Obstacle& obstacle,
+ContactInterface buildContactInterface(const TriMesh& mesh, const std::string& boundary, const Obstacle& obstacle,
                                        const DofStatus& dofs, double friction);
 /// The same on a tetrahedron mesh's surface group (3 rows per node).
 ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& boundary, const Obstacle& obstacle,

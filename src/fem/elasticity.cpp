@@ -21,7 +21,7 @@ Eigen::Matrix3d hookeMatrix(const MaterialSpec& material, PlaneModel plane) {
   return D;
 }
 
-Eigen::Matrix<double, 3, 6> strainDisplacement(const Mesh& mesh, int e) {
+Eigen::Matrix<double, 3, 6> strainDisplacement(const TriMesh& mesh, int e) {
   // Shape function gradients of the linear triangle: ∂N_a/∂x = (y_b − y_c)/(2A), ∂N_a/∂y = (x_c − x_b)/(2A).
   const double area2 = mesh.twiceSignedArea(e);
   Eigen::Matrix<double, 3, 6> B = Eigen::Matrix<double, 3, 6>::Zero();
@@ -37,7 +37,7 @@ Eigen::Matrix<double, 3, 6> strainDisplacement(const Mesh& mesh, int e) {
   return B;
 }
 
-Eigen::SparseMatrix<double> assembleStiffness(const Mesh& mesh, const Eigen::Matrix3d& hooke) {
+Eigen::SparseMatrix<double> assembleStiffness(const TriMesh& mesh, const Eigen::Matrix3d& hooke) {
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(36 * static_cast<std::size_t>(mesh.numElements()));
   for (int e = 0; e < mesh.numElements(); ++e) {
@@ -66,7 +66,7 @@ double vonMises(double sxx, double syy, double sxy, double szz) {
 
 }  // namespace
 
-Eigen::Matrix<double, 5, Eigen::Dynamic> elementStresses(const Mesh& mesh, const MaterialSpec& material,
+Eigen::Matrix<double, 5, Eigen::Dynamic> elementStresses(const TriMesh& mesh, const MaterialSpec& material,
                                                           PlaneModel plane, const Eigen::VectorXd& u) {
   const Eigen::Matrix3d D = hookeMatrix(material, plane);
   Eigen::Matrix<double, 5, Eigen::Dynamic> out(5, mesh.numElements());

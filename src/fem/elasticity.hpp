@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "stcontact/mesh/mesh.hpp"
+#include "stcontact/mesh/tri_mesh.hpp"
 #include "stcontact/scene/scene.hpp"
 
 namespace stc {
@@ -15,14 +15,14 @@ namespace stc {
 Eigen::Matrix3d hookeMatrix(const MaterialSpec& material, PlaneModel plane);
 
 /// Strain–displacement matrix of element e (3 × 6, constant on the element): ε = B_e u_e.
-Eigen::Matrix<double, 3, 6> strainDisplacement(const Mesh& mesh, int e);
+Eigen::Matrix<double, 3, 6> strainDisplacement(const TriMesh& mesh, int e);
 
 /// Global stiffness K = Σ_e A_e B_eᵀ D B_e (n × n, symmetric positive semi-definite, unconstrained).
-Eigen::SparseMatrix<double> assembleStiffness(const Mesh& mesh, const Eigen::Matrix3d& hooke);
+Eigen::SparseMatrix<double> assembleStiffness(const TriMesh& mesh, const Eigen::Matrix3d& hooke);
 
 /// Per-element stresses of one displacement field u (size n): rows σ_xx, σ_yy, σ_xy, σ_zz, von Mises.
 /// σ_zz = ν(σ_xx + σ_yy) in plane strain, 0 in plane stress.
-Eigen::Matrix<double, 5, Eigen::Dynamic> elementStresses(const Mesh& mesh, const MaterialSpec& material,
+Eigen::Matrix<double, 5, Eigen::Dynamic> elementStresses(const TriMesh& mesh, const MaterialSpec& material,
                                                           PlaneModel plane, const Eigen::VectorXd& u);
 
 }  // namespace stc

@@ -11,9 +11,9 @@
 namespace stc {
 
 struct CondensedInterface {
-  Eigen::MatrixXd delassus;       ///< W (2n_C × 2n_C), symmetric positive semi-definite
-  Eigen::MatrixXd free_response;  ///< v_0 (2n_C × m)
-  int sparse_solves = 0;          ///< right-hand sides it took (2n_C + number of load terms)
+  Eigen::MatrixXd delassus;       ///< W (d n_C × d n_C), symmetric positive semi-definite
+  Eigen::MatrixXd free_response;  ///< v_0 (d n_C × m)
+  int sparse_solves = 0;          ///< right-hand sides it took (d n_C + number of load terms)
 
   static CondensedInterface build(const Problem& problem, const SpdFactor& stiffness_free);
 };

@@ -23,7 +23,7 @@ namespace stc {
 
 class ErrorReference : public ErrorMeasure {
  public:
-  /// `lambda_ref` (2n_C × m): the reference contact forces, e.g. from solveIncremental.
+  /// `lambda_ref` (d n_C × m): the reference contact forces, e.g. from solveIncremental.
   ErrorReference(const Problem& problem, const SpdFactor& stiffness_free, Eigen::MatrixXd delassus,
                  Eigen::MatrixXd lambda_ref);
   /// The same with W computed lazily (header); keeps the factor and refers to `problem`, which must

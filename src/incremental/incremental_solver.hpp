@@ -33,14 +33,15 @@
 // ‖F‖∞ / S_k set by round-off is below 1e-15 on the seed scene (measured: 4e-16), under the
 // default 1e-13.
 //
-// Cost and size. 2n_C + (load terms) sparse solves to build W and v_0, then per Newton iteration
-// O(n_C · n_A) to evaluate F and O(n_A³) for the LU (n_A: closed nodes). W is dense 2n_C × 2n_C,
-// 32 n_C² bytes: 0.3 MB for the seed (n_C = 101), 3.2 GB for n_C = 10⁴. When n_C grows large: only the
-// columns of W of nodes that ever close are needed (v = v_0 + W(:, A) λ_A, all rows to test the open
-// nodes), so compute them lazily, two sparse solves per node the first time it closes, and keep
-// 16 n_C n_A,ever bytes; when the active set itself is large, do not form W at all and solve each
-// Newton step as the sparse saddle-point system [K_ff  B_Aᵀ; B_A  0] (sparse LDLᵀ, or a Schur
-// complement by CG preconditioned with diag(W)).
+// Cost and size. The plane law (2D): 2n_C + (load terms) sparse solves to build W and v_0, then per
+// Newton iteration O(n_C · n_A) to evaluate F and O(n_A³) for the LU (n_A: closed nodes); W is dense
+// 2n_C × 2n_C, 32 n_C² bytes: 0.3 MB for the seed (n_C = 101), 3.2 GB for n_C = 10⁴. The cone law
+// (every 3D scene, IncrementalOptions::cone_law in 2D) needs only the columns of W of the nodes that
+// ever close (v = v_0 + W(:, A) λ_A, all rows to test the open nodes): computed lazily, d sparse
+// solves per node the first time it closes (lazy_delassus.hpp), 8 d² n_C n_A,ever bytes. When the
+// active set itself is large: do not form W at all and solve each Newton step as the sparse
+// saddle-point system [K_ff  B_Aᵀ; B_A  0] (sparse LDLᵀ, or a Schur complement by CG preconditioned
+// with diag(W)).
 #include "stcontact/options/incremental_options.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/solver/solve_inputs.hpp"

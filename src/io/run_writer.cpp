@@ -4,9 +4,10 @@
 #include <cstdio>
 #include <sstream>
 
+#include "stcontact/core/overloaded.hpp"
 #include "stcontact/core/threads.hpp"
 #include "stcontact/fem/elasticity.hpp"
-#include "stcontact/fem/elasticity3d.hpp"
+#include "stcontact/fem/elasticity_3d.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/contact_tables.hpp"
@@ -53,17 +54,21 @@ void writeFrame(std::ostream& out, const Problem& problem, const VtuGrid& grid, 
                 const Eigen::MatrixXd& force, const Eigen::MatrixXd& state) {
   const Eigen::MatrixXd displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), problem.dimension, problem.numNodes());
   const std::vector<PointField> nodal{{"displacement", displacement}, {"contact_force", force}, {"contact_state", state}};
-  if (problem.dimension == 3) {
-    const auto stress = elementStresses(problem.solid, problem.material, u);
-    grid.write(out, nodal, {{"stress", stress.topRows(6)}, {"von_mises", stress.bottomRows(1)}});
-  } else {
-    const auto stress = elementStresses(problem.mesh, problem.material, problem.plane, u);
-    grid.write(out, nodal, {{"stress", stress.topRows(3)}, {"von_mises", stress.bottomRows(1)}});
-  }
+  const std::vector<CellField> cells = std::visit(
+      Overloaded{[&](const TriMesh& m) {
+                   const auto stress = elementStresses(m, problem.material, problem.plane, u);  // xx, yy, xy, zz, VM
+                   return std::vector<CellField>{{"stress", stress.topRows(3)}, {"von_mises", stress.bottomRows(1)}};
+                 },
+                 [&](const TetMesh& m) {
+                   const auto stress = elementStresses(m, problem.material, u);  // six components, VM
+                   return std::vector<CellField>{{"stress", stress.topRows(6)}, {"von_mises", stress.bottomRows(1)}};
+                 }},
+      problem.body);
+  grid.write(out, nodal, cells);
 }
 
 VtuGrid gridOf(const Problem& problem) {
-  return problem.dimension == 3 ? VtuGrid(problem.solid) : VtuGrid(problem.mesh);
+  return std::visit([](const auto& mesh) { return VtuGrid(mesh); }, problem.body);
 }
 
 }  // namespace

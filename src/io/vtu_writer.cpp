@@ -141,7 +141,7 @@ std::string geometryText(const Points& points, const Cells& cells, int vtkType) 
 
 }  // namespace
 
-VtuGrid::VtuGrid(const Mesh& mesh)
+VtuGrid::VtuGrid(const TriMesh& mesh)
     : points_(mesh.nodes.cols()),
       cells_(mesh.triangles.cols()),
       geometry_(geometryText(mesh.nodes, mesh.triangles, kVtkTriangle)) {}
@@ -172,7 +172,7 @@ void VtuGrid::write(std::ostream& out, const std::vector<PointField>& pointField
   text.flushTo(out);
 }
 
-void writeVtu(std::ostream& out, const Mesh& mesh, const std::vector<PointField>& pointFields,
+void writeVtu(std::ostream& out, const TriMesh& mesh, const std::vector<PointField>& pointFields,
               const std::vector<CellField>& cellFields) {
   VtuGrid(mesh).write(out, pointFields, cellFields);
 }
@@ -182,7 +182,7 @@ void writeVtu(std::ostream& out, const TetMesh& mesh, const std::vector<PointFie
   VtuGrid(mesh).write(out, pointFields, cellFields);
 }
 
-std::string vtuDocument(const Mesh& mesh, const std::vector<PointField>& pointFields,
+std::string vtuDocument(const TriMesh& mesh, const std::vector<PointField>& pointFields,
                         const std::vector<CellField>& cellFields) {
   std::ostringstream out;
   writeVtu(out, mesh, pointFields, cellFields);

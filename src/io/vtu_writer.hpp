@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "stcontact/mesh/mesh.hpp"
 #include "stcontact/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/tri_mesh.hpp"
 
 namespace stc {
 
@@ -33,10 +33,10 @@ struct CellField {
 /// before the first byte is written: throws std::invalid_argument naming the field if a name is
 /// empty or repeated, a size does not match the mesh, or a value is NaN or infinite (VTK's
 /// ASCII reader cannot read those, and stops reading the array there).
-void writeVtu(std::ostream& out, const Mesh& mesh, const std::vector<PointField>& pointFields,
+void writeVtu(std::ostream& out, const TriMesh& mesh, const std::vector<PointField>& pointFields,
               const std::vector<CellField>& cellFields);
 /// The same document as a string.
-std::string vtuDocument(const Mesh& mesh, const std::vector<PointField>& pointFields,
+std::string vtuDocument(const TriMesh& mesh, const std::vector<PointField>& pointFields,
                         const std::vector<CellField>& cellFields);
 
 /// The same for tetrahedra (VTK_TETRA = 10), points with their z.
@@ -50,7 +50,7 @@ std::string vtuDocument(const TetMesh& mesh, const std::vector<PointField>& poin
 /// of writeVtu).
 class VtuGrid {
  public:
-  explicit VtuGrid(const Mesh& mesh);
+  explicit VtuGrid(const TriMesh& mesh);
   explicit VtuGrid(const TetMesh& mesh);
   void write(std::ostream& out, const std::vector<PointField>& pointFields,
              const std::vector<CellField>& cellFields) const;

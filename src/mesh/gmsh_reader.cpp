@@ -125,8 +125,8 @@ void readMeshFormat(LineReader& r) {
   const bool ascii = t[1] == "0";
   if (version != "4.1" || !ascii)
     r.failFile("unsupported mesh format: version " + version + (ascii ? " ASCII" : " binary") +
-               " (only MSH 4.1 ASCII is read; in Gmsh set Mesh.MshFileVersion = 4.1 and " +
-               "Mesh.Binary = 0)");
+               " (only MSH 4.1 ASCII is read; in Gmsh set TriMesh.MshFileVersion = 4.1 and " +
+               "TriMesh.Binary = 0)");
   r.expectEnd();
 }
 
@@ -292,7 +292,7 @@ long long readElementBlock(LineReader& r, GmshData& data) {
   if (accepted == kAccepted.end())
     r.fail(elementTypeName(type) + " is not supported: the reader takes " +
            (data.dimension == 3 ? "4-node tetrahedra, 3-node triangles, " : "3-node triangles, ") +
-           "2-node lines and points (set Mesh.ElementOrder = 1 and do not recombine)");
+           "2-node lines and points (set TriMesh.ElementOrder = 1 and do not recombine)");
   const auto [expected_dim, per] = accepted->second;
   if (dim != expected_dim)
     r.fail(elementTypeName(type) + " in a block of dimension " + std::to_string(dim));
@@ -351,10 +351,10 @@ GmshData readSections(std::istream& in, const std::string& source_name, int dime
   if (!seen["$Nodes"]) r.failFile("no $Nodes section (truncated file?)");
   if (!seen["$Elements"]) r.failFile("no $Elements section (truncated file?)");
   if (dimension == 2 && data.triangles.empty())
-    r.failFile("no triangles (with Mesh.SaveAll = 0, Gmsh saves only the elements of physical "
+    r.failFile("no triangles (with TriMesh.SaveAll = 0, Gmsh saves only the elements of physical "
                "groups: is there a Physical Surface?)");
   if (dimension == 3 && data.tets.empty())
-    r.failFile("no tetrahedra (with Mesh.SaveAll = 0, Gmsh saves only the elements of physical "
+    r.failFile("no tetrahedra (with TriMesh.SaveAll = 0, Gmsh saves only the elements of physical "
                "groups: is there a Physical Volume?)");
   return data;
 }
@@ -376,7 +376,7 @@ using detail::GmshData;
 using detail::RawEdge;
 
 /// Keeps the nodes that triangles use (renumbered in file order) and orients the triangles.
-void buildNodesAndTriangles(const GmshData& data, std::vector<int>& index, Mesh& mesh) {
+void buildNodesAndTriangles(const GmshData& data, std::vector<int>& index, TriMesh& mesh) {
   index.assign(data.coords.size(), -1);
   for (const auto& tri : data.triangles)
     for (int node : tri) index[node] = 0;
@@ -396,9 +396,9 @@ void buildNodesAndTriangles(const GmshData& data, std::vector<int>& index, Mesh&
 }
 
 /// After orientation: a triangle that is still clockwise (mixed orientation), or flat, is named by
-/// its Gmsh element tag and line, which a user can find in the file (Mesh::validate, which runs
+/// its Gmsh element tag and line, which a user can find in the file (TriMesh::validate, which runs
 /// next, only knows the position in the mesh). Flat: |area| <= 1e-12 x the mean, as validate.
-void checkTriangles(const GmshData& data, const Mesh& mesh, const std::string& source) {
+void checkTriangles(const GmshData& data, const TriMesh& mesh, const std::string& source) {
   double mean = 0.0;
   for (int e = 0; e < mesh.numElements(); ++e) mean += std::abs(mesh.twiceSignedArea(e));
   mean /= std::max(1, mesh.numElements());
@@ -415,7 +415,7 @@ void checkTriangles(const GmshData& data, const Mesh& mesh, const std::string& s
 
 /// Turns the line elements of every curve into edges of that curve's named physical groups.
 void buildGroups(const GmshData& data, const std::vector<int>& index, const std::string& source,
-                 Mesh& mesh) {
+                 TriMesh& mesh) {
   for (const auto& [curve, edges] : data.curve_edges) {
     const auto groups = data.curve_groups.find(curve);
     if (groups == data.curve_groups.end())
@@ -439,9 +439,9 @@ void buildGroups(const GmshData& data, const std::vector<int>& index, const std:
 
 }  // namespace
 
-Mesh parseGmsh(std::istream& in, const std::string& source_name) {
+TriMesh parseGmsh(std::istream& in, const std::string& source_name) {
   const GmshData data = detail::readSections(in, source_name, 2);
-  Mesh mesh;
+  TriMesh mesh;
   std::vector<int> index;
   buildNodesAndTriangles(data, index, mesh);
   checkTriangles(data, mesh, source_name);
@@ -450,7 +450,7 @@ Mesh parseGmsh(std::istream& in, const std::string& source_name) {
   return mesh;
 }
 
-Mesh readGmsh(const std::filesystem::path& file) {
+TriMesh readGmsh(const std::filesystem::path& file) {
   std::ifstream in = detail::openMeshFile(file);
   return parseGmsh(in, file.string());
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Reader for 2D and 3D meshes in Gmsh's MSH 4.1 ASCII format ("4.1 0 8"), the format written by
-// `Mesh.MshFileVersion = 4.1;` (Gmsh reference manual, §"MSH file format", version 4.1).
+// `TriMesh.MshFileVersion = 4.1;` (Gmsh reference manual, §"MSH file format", version 4.1).
 //
 // What is read:
 //  - $MeshFormat: must be 4.1 ASCII; any other version or the binary form is an InputError.
@@ -8,7 +8,7 @@
 //  - $Entities: which physical groups each curve carries.
 //  - $Nodes: all nodes must lie in the plane z = 0 (|z| <= 1e-12 max(1, |x|, |y|)), else
 //    "not a 2D mesh". Parametric coordinates, when present, are skipped.
-//  - $Elements: 3-node triangles (type 2) become Mesh::triangles, in file order; 2-node lines
+//  - $Elements: 3-node triangles (type 2) become TriMesh::triangles, in file order; 2-node lines
 //    (type 1) on a curve that carries physical groups become edges of a BoundaryGroup for each of
 //    that curve's group names; points (type 15) are ignored. Any other element type (quadrangles,
 //    second-order elements, 3D elements) is an InputError naming the type.
@@ -39,17 +39,17 @@
 #include <istream>
 #include <string>
 
-#include "stcontact/mesh/mesh.hpp"
 #include "stcontact/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/tri_mesh.hpp"
 
 namespace stc {
 
 /// Reads `file` (see the top of this header). A file that cannot be opened is an InputError
 /// "cannot open mesh file 'X'". The mesh is finalised (group nodes filled) and validated.
-Mesh readGmsh(const std::filesystem::path& file);
+TriMesh readGmsh(const std::filesystem::path& file);
 
 /// Parses MSH 4.1 ASCII text from `in`; `source_name` prefixes every error message.
-Mesh parseGmsh(std::istream& in, const std::string& source_name);
+TriMesh parseGmsh(std::istream& in, const std::string& source_name);
 
 /// The 3D reader (see the top of this header): finalised and validated.
 TetMesh readGmsh3d(const std::filesystem::path& file);

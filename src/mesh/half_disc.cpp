@@ -63,8 +63,8 @@ class HalfDiscBuilder {
     triangles_.push_back(area2 > 0 ? std::array<int, 3>{a, b, c} : std::array<int, 3>{a, c, b});
   }
 
-  Mesh finish() const {
-    Mesh mesh;
+  TriMesh finish() const {
+    TriMesh mesh;
     mesh.nodes.resize(2, static_cast<Eigen::Index>(points_.size()));
     for (std::size_t i = 0; i < points_.size(); ++i) mesh.nodes.col(i) << points_[i][0], points_[i][1];
     mesh.triangles.resize(3, static_cast<Eigen::Index>(triangles_.size()));
@@ -96,7 +96,7 @@ void HalfDiscOptions::validate() const {
     throw InputError("half_disc: grading = " + std::to_string(grading) + " must be in [1, 4]");
 }
 
-Mesh makeHalfDisc(const HalfDiscOptions& options) {
+TriMesh makeHalfDisc(const HalfDiscOptions& options) {
   options.validate();
   HalfDiscBuilder builder;
   int segments = options.arc_nodes + 1;
@@ -122,7 +122,7 @@ Mesh makeHalfDisc(const HalfDiscOptions& options) {
   top.push_back(centre);
   std::sort(top.begin(), top.end(), [&](int a, int b) { return builder.points()[a][0] < builder.points()[b][0]; });
 
-  Mesh mesh = builder.finish();
+  TriMesh mesh = builder.finish();
   mesh.groups["arc"] = chain(arc.ids);
   mesh.groups["top"] = chain(top);
   mesh.finalizeGroups();

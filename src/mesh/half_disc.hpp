@@ -1,7 +1,7 @@
 #pragma once
 // Built-in generator for the seed scene's body (docs/method.md §6): the half-disc
 // x² + y² ≤ R², y ≤ 0, meshed with P1 triangles in concentric half-rings.
-#include "stcontact/mesh/mesh.hpp"
+#include "stcontact/mesh/tri_mesh.hpp"
 
 namespace stc {
 
@@ -17,7 +17,7 @@ struct HalfDiscOptions {
 /// the height of an equilateral triangle of side (h_j + h_{j+1})/2; neighbouring rings are joined by
 /// a zipper triangulation and the innermost ring by a fan around the centre (0, 0).
 /// Groups: "arc" (the curved edge, corners included) and "top" (the flat edge y = 0).
-Mesh makeHalfDisc(const HalfDiscOptions& options);
+TriMesh makeHalfDisc(const HalfDiscOptions& options);
 
 }  // namespace stc
 // Sizes (tests/mesh/test_half_disc.cpp checks them): arc_nodes = 101 with the default grading

@@ -12,7 +12,7 @@ namespace {
 
 // Names the boundary triangles: on a face z = const, "front" or "back"; on a side, the half-disc
 // groups that hold the edge the triangle's nodes project onto.
-void addGroups(const Mesh& section, double thickness, TetMesh& slab) {
+void addGroups(const TriMesh& section, double thickness, TetMesh& slab) {
   const int n2d = section.numNodes();
   std::map<std::array<int, 2>, std::vector<std::string>> edgeGroups;
   for (const auto& [name, group] : section.groups)
@@ -49,7 +49,7 @@ void HalfDiscSlabOptions::validate() const {
 
 TetMesh makeHalfDiscSlab(const HalfDiscSlabOptions& options) {
   options.validate();
-  const Mesh section = makeHalfDisc(options.section);
+  const TriMesh section = makeHalfDisc(options.section);
   const int n2d = section.numNodes(), layers = options.layers;
   TetMesh slab;
   slab.nodes.resize(3, static_cast<Eigen::Index>(n2d) * (layers + 1));

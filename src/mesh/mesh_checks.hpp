@@ -1,5 +1,5 @@
 #pragma once
-// What the triangle mesh (src/mesh/mesh.hpp) and the tetrahedron mesh (src/mesh/tet_mesh.hpp)
+// What the triangle mesh (src/mesh/tri_mesh.hpp) and the tetrahedron mesh (src/mesh/tet_mesh.hpp)
 // do alike with their elements and named boundary groups: look a group up, collect its nodes,
 // check node ids and element measures. A group holds faces (edges in 2D, triangles in 3D) in the
 // member `Group::*faces` and their nodes in `nodes`.

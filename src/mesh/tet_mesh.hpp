@@ -1,6 +1,6 @@
 #pragma once
 // P1 tetrahedron mesh with named boundary groups (surface triangles and the nodes they touch):
-// the three-dimensional counterpart of Mesh (src/mesh/mesh.hpp).
+// the three-dimensional counterpart of TriMesh (src/mesh/tri_mesh.hpp).
 #include <Eigen/Core>
 #include <array>
 #include <map>

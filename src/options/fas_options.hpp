@@ -64,7 +64,7 @@ struct FasOptions {
   /// two machines); on the 3D hemisphere the corrections that raised it raised the error too
   /// (θ = 1.5 costs 3 to 12 relaxations there). A kept correction that raised it must pay back
   /// within its cycle, or the next one is judged with θ = 1 (fas_solver.cpp; docs/method.md §4,
-  /// docs/three_d.md).
+  /// docs/strategies_3d.md).
   std::optional<double> safeguard_growth;
   int max_skip = 8;  ///< the longest run of skipped coarse steps
   /// With the safeguard, i_C follows its verdicts (additive increase, multiplicative decrease): a

@@ -13,7 +13,7 @@ struct IncrementalOptions {
   int max_newton_iterations = 50;
   /// Solve a 2D scene with the d-dimensional cone law and lazily computed Delassus columns
   /// (src/incremental/cone_newton.hpp), as every 3D scene is: the same solution to round-off, memory
-  /// 16 n_C n_ever-closed bytes instead of 32 n_C².
+  /// 8 d² n_C n_ever-closed bytes instead of 32 n_C².
   bool cone_law = false;
 
   template <class Self, class Visit>

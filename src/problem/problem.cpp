@@ -4,8 +4,9 @@
 #include <sstream>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/overloaded.hpp"
 #include "stcontact/fem/elasticity.hpp"
-#include "stcontact/fem/elasticity3d.hpp"
+#include "stcontact/fem/elasticity_3d.hpp"
 #include "stcontact/fem/load_history.hpp"
 #include "stcontact/mesh/facet_measure.hpp"
 #include "stcontact/mesh/gmsh_reader.hpp"
@@ -65,8 +66,17 @@ Eigen::VectorXd facetLoadPattern(const Eigen::MatrixXd& x, const std::vector<Fac
 }
 
 Eigen::VectorXd loadPattern(const Problem& p, const LoadSpec& spec) {
-  if (p.dimension == 3) return facetLoadPattern(p.solid.nodes, p.solid.group(spec.boundary).triangles, spec);
-  return facetLoadPattern(p.mesh.nodes, p.mesh.group(spec.boundary).edges, spec);
+  return std::visit(Overloaded{[&](const TriMesh& m) { return facetLoadPattern(m.nodes, m.group(spec.boundary).edges, spec); },
+                               [&](const TetMesh& m) {
+                                 return facetLoadPattern(m.nodes, m.group(spec.boundary).triangles, spec);
+                               }},
+                    p.body);
+}
+
+Eigen::SparseMatrix<double> stiffnessOf(const Problem& p) {
+  return std::visit(Overloaded{[&](const TriMesh& m) { return assembleStiffness(m, hookeMatrix(p.material, p.plane)); },
+                               [&](const TetMesh& m) { return assembleStiffness(m, hookeMatrix3d(p.material)); }},
+                    p.body);
 }
 
 double defaultLengthScale(const Scene& scene, const Problem& p) {
@@ -120,18 +130,17 @@ auto withContext(const Scene& scene, const std::string& key, Step&& step) {
 
 }  // namespace
 
-Mesh buildMesh(const MeshSpec& spec) {
+BodyMesh buildBodyMesh(const MeshSpec& spec, int dimension) {
+  if (dimension == 3) {
+    if (!spec.file.empty()) return readGmsh3d(spec.file);
+    if (spec.generator == "half_ball") return makeHalfBall({spec.radius, spec.divisions, spec.grading, spec.core});
+    if (spec.generator == "half_disc_slab")
+      return makeHalfDiscSlab({{spec.radius, spec.arc_nodes, spec.grading}, spec.thickness, spec.layers});
+    throw InputError("mesh generator '" + spec.generator + "' is unknown (known in 3D: half_ball, half_disc_slab)");
+  }
   if (!spec.file.empty()) return readGmsh(spec.file);
   if (spec.generator == "half_disc") return makeHalfDisc({spec.radius, spec.arc_nodes, spec.grading});
   throw InputError("mesh generator '" + spec.generator + "' is unknown (known in 2D: half_disc)");
-}
-
-TetMesh buildSolidMesh(const MeshSpec& spec) {
-  if (!spec.file.empty()) return readGmsh3d(spec.file);
-  if (spec.generator == "half_ball") return makeHalfBall({spec.radius, spec.divisions, spec.grading, spec.core});
-  if (spec.generator == "half_disc_slab")
-    return makeHalfDiscSlab({{spec.radius, spec.arc_nodes, spec.grading}, spec.thickness, spec.layers});
-  throw InputError("mesh generator '" + spec.generator + "' is unknown (known in 3D: half_ball, half_disc_slab)");
 }
 
 Problem buildProblem(const Scene& scene) {
@@ -144,23 +153,18 @@ Problem buildProblem(const Scene& scene) {
                        std::to_string(p.dimension) + "D scene");
     });
   const std::string mesh_key = scene.mesh.file.empty() ? "mesh.generator" : "";
-  if (p.dimension == 3) p.solid = withContext(scene, mesh_key, [&] { return buildSolidMesh(scene.mesh); });
-  else p.mesh = withContext(scene, mesh_key, [&] { return buildMesh(scene.mesh); });
+  p.body = withContext(scene, mesh_key, [&] { return buildBodyMesh(scene.mesh, p.dimension); });
   p.material = scene.material;
   p.plane = scene.plane;
   p.times = uniformGrid(scene.time);
-  p.stiffness = p.dimension == 3 ? assembleStiffness(p.solid, hookeMatrix3d(p.material))
-                                 : assembleStiffness(p.mesh, hookeMatrix(p.material, p.plane));
-  const auto group = [&](const std::string& name) {
-    if (p.dimension == 3) p.solid.group(name);
-    else p.mesh.group(name);
-  };
+  p.stiffness = stiffnessOf(p);
+  const auto group = [&](const std::string& name) { requireGroup(p.body, name); };
   for (std::size_t j = 0; j < scene.dirichlet.size(); ++j)  // name the entry whose boundary is missing
     withContext(scene, "dirichlet[" + std::to_string(j) + "].boundary", [&] { group(scene.dirichlet[j].boundary); });
   for (std::size_t j = 0; j < scene.loads.size(); ++j)
     withContext(scene, "load[" + std::to_string(j) + "].boundary", [&] { group(scene.loads[j].boundary); });
   const std::vector<int> owner = withContext(scene, "dirichlet", [&] {
-    return p.dimension == 3 ? prescribedBy(p.solid, scene.dirichlet) : prescribedBy(p.mesh, scene.dirichlet);
+    return std::visit([&](const auto& mesh) { return prescribedBy(mesh, scene.dirichlet); }, p.body);
   });
   p.free_index.assign(p.numDofs(), -1);
   for (int dof = 0; dof < p.numDofs(); ++dof)
@@ -183,8 +187,11 @@ Problem buildProblem(const Scene& scene) {
     const Obstacle obstacle = makeObstacle(scene.obstacle);
     const std::vector<char> zero = heldAtZero(p, owner);
     const DofStatus dofs{p.free_index, zero};
-    return p.dimension == 3 ? buildContactInterface(p.solid, scene.contact.boundary, obstacle, dofs, scene.contact.friction)
-                            : buildContactInterface(p.mesh, scene.contact.boundary, obstacle, dofs, scene.contact.friction);
+    return std::visit(
+        [&](const auto& mesh) {
+          return buildContactInterface(mesh, scene.contact.boundary, obstacle, dofs, scene.contact.friction);
+        },
+        p.body);
   });
   p.length_scale = defaultLengthScale(scene, p);
   setSearchDirection(p.contact, scene.solver.search_scale, p.material.young, p.length_scale);

@@ -7,8 +7,7 @@
 #include <vector>
 
 #include "stcontact/contact/contact_interface.hpp"
-#include "stcontact/mesh/mesh.hpp"
-#include "stcontact/mesh/tet_mesh.hpp"
+#include "stcontact/mesh/body_mesh.hpp"
 #include "stcontact/scene/scene.hpp"
 
 namespace stc {
@@ -25,9 +24,8 @@ struct SeparatedLoad {
 
 struct Problem {
   std::string name;
-  int dimension = 2;                          ///< 2: `mesh` holds the body; 3: `solid` does
-  Mesh mesh;                                  ///< the plane body (dimension 2), empty in 3D
-  TetMesh solid;                              ///< the body (dimension 3), empty in 2D
+  int dimension = 2;                          ///< d: 2 (triangles) or 3 (tetrahedra), dimensionOf(body)
+  BodyMesh body;                              ///< the body's mesh
   MaterialSpec material;
   PlaneModel plane = PlaneModel::Strain;      ///< 2D only
   std::vector<double> times;                  ///< t_0 … t_{m−1}
@@ -39,11 +37,11 @@ struct Problem {
   ContactInterface contact;
   double length_scale = 1.0;                  ///< L of the search direction
 
-  int numNodes() const { return dimension == 3 ? solid.numNodes() : mesh.numNodes(); }
-  int numElements() const { return dimension == 3 ? solid.numElements() : mesh.numElements(); }
+  int numNodes() const { return stc::numNodes(body); }
+  int numElements() const { return stc::numElements(body); }
   int numDofs() const { return dimension * numNodes(); }
   /// Node coordinates, d × numNodes().
-  Eigen::MatrixXd nodePositions() const { return dimension == 3 ? Eigen::MatrixXd(solid.nodes) : Eigen::MatrixXd(mesh.nodes); }
+  Eigen::MatrixXd nodePositions() const { return stc::nodePositions(body); }
   int numFreeDofs() const { return static_cast<int>(free_dofs.size()); }
   int numSteps() const { return static_cast<int>(times.size()); }
 
@@ -60,9 +58,8 @@ struct Problem {
 /// the mesh lacks, a dof prescribed twice, initial penetration, a contact node half prescribed).
 Problem buildProblem(const Scene& scene);
 
-/// The scene's 2D mesh: built-in generator or Gmsh file.
-Mesh buildMesh(const MeshSpec& spec);
-/// The scene's 3D mesh: built-in generator (half_ball).
-TetMesh buildSolidMesh(const MeshSpec& spec);
+/// The scene's mesh in `dimension`: a built-in generator (half_disc in 2D; half_ball, half_disc_slab in
+/// 3D) or a Gmsh file.
+BodyMesh buildBodyMesh(const MeshSpec& spec, int dimension);
 
 }  // namespace stc

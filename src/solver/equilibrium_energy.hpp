@@ -29,7 +29,7 @@ class EquilibriumEnergy {
   const Problem& problem_;
   Eigen::MatrixXd load_vectors_;     ///< [F D], n_free × 2q
   Eigen::MatrixXd load_responses_;   ///< (A⁻¹[F D])ᵀ F, 2q × q
-  Eigen::MatrixXd interface_traces_; ///< B A⁻¹ [F D], 2n_C × 2q
+  Eigen::MatrixXd interface_traces_; ///< B A⁻¹ [F D], d n_C × 2q
   Eigen::MatrixXd histories_;        ///< G, q × m
   Eigen::MatrixXd prescribed_energy_;///< Pᵀ K P, q × q
 };

@@ -18,7 +18,7 @@ struct SolveResult {
   /// orthonormal in the energy product of this problem's K + Bᵀ k B; empty for the others. A solve of
   /// a neighbouring problem may start its basis from them (SolveInputs::basis_seed).
   Eigen::MatrixXd spatial_modes;
-  /// The interface directions of a separated global stage (fas-apriori, latin-pgd; 2n_C × p,
+  /// The interface directions of a separated global stage (fas-apriori, latin-pgd; d n_C × p,
   /// pgd/response_basis.hpp); empty for the others. A solve of a neighbouring problem may start its
   /// directions from them (SolveInputs::basis_seed): a warm start.
   Eigen::MatrixXd interface_directions;

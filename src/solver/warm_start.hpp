@@ -14,9 +14,9 @@
 
 namespace stc {
 
-/// True when v and λ are both 2n_C × m of `problem`.
+/// True when v and λ are both d n_C × m of `problem`.
 bool fitsProblem(const InterfaceHistory& history, const Problem& problem);
-/// True when the interface directions have 2n_C rows (pgd/response_basis.hpp).
+/// True when the interface directions have d n_C rows (pgd/response_basis.hpp).
 bool fitsProblem(const Eigen::MatrixXd& directions, const Problem& problem);
 
 /// Throw std::invalid_argument naming both sizes when the start does not fit (a caller's error).

@@ -22,7 +22,7 @@ const stc::Problem& seed() {
 TEST(ContactInterface, SeedHasTheArcNodesWithoutTheDrivenCorners) {
   const auto& c = seed().contact;
   EXPECT_EQ(c.size(), 101);
-  for (int node : c.nodes) EXPECT_LT(seed().mesh.nodes(1, node), 0.0);  // corners (y = 0) excluded
+  for (int node : c.nodes) EXPECT_LT(std::get<stc::TriMesh>(seed().body).nodes(1, node), 0.0);  // corners (y = 0) excluded
 }
 
 TEST(ContactInterface, FrameIsTheObstacleNormalAndItsRotation) {
@@ -36,7 +36,7 @@ TEST(ContactInterface, FrameIsTheObstacleNormalAndItsRotation) {
 TEST(ContactInterface, InitialGapIsTheDistanceToThePlane) {
   const auto& p = seed();
   for (int i = 0; i < p.contact.size(); ++i)
-    EXPECT_NEAR(p.contact.initial_gap[i], p.mesh.nodes(1, p.contact.nodes[i]) + 1.01, 1e-15);
+    EXPECT_NEAR(p.contact.initial_gap[i], std::get<stc::TriMesh>(p.body).nodes(1, p.contact.nodes[i]) + 1.01, 1e-15);
   EXPECT_NEAR(p.contact.initial_gap.minCoeff(), 0.01, 1e-15);  // the lowest arc node at (0, −1)
 }
 

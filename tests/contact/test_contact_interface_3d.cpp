@@ -21,8 +21,8 @@ TEST(ContactInterface3d, HasThreeRowsPerNodeAndLeavesTheDrivenRimOut) {
   const auto& p = hemisphere();
   EXPECT_EQ(p.contact.dimension, 3);
   EXPECT_EQ(p.contact.B.rows(), 3 * p.contact.size());
-  for (int node : p.contact.nodes) EXPECT_LT(p.solid.nodes(2, node), 0.0);  // the rim (z = 0) is driven
-  EXPECT_LT(p.contact.size(), static_cast<int>(p.solid.group("contact").nodes.size()));
+  for (int node : p.contact.nodes) EXPECT_LT(std::get<stc::TetMesh>(p.body).nodes(2, node), 0.0);  // the rim (z = 0) is driven
+  EXPECT_LT(p.contact.size(), static_cast<int>(std::get<stc::TetMesh>(p.body).group("contact").nodes.size()));
 }
 
 TEST(ContactInterface3d, FrameIsTheNormalAndTheCoordinateAxesOfItsPlane) {
@@ -49,13 +49,13 @@ TEST(ContactInterface3d, FrameOfATiltedPlaneIsRightHandedAndOrthonormal) {
 // keep theirs: the contact nodes' areas and the rim's add up to the group's area.
 TEST(ContactInterface3d, TributaryAreasAddUpToTheGroupArea) {
   const auto& p = hemisphere();
-  const auto& group = p.solid.group("contact");
+  const auto& group = std::get<stc::TetMesh>(p.body).group("contact");
   double total = 0.0, rim = 0.0;
   for (const auto& t : group.triangles) {
-    const double area = stc::facetMeasure(p.solid.nodes, t);
+    const double area = stc::facetMeasure(std::get<stc::TetMesh>(p.body).nodes, t);
     total += area;
     for (int node : t)
-      if (p.solid.nodes(2, node) == 0.0) rim += area / 3.0;
+      if (std::get<stc::TetMesh>(p.body).nodes(2, node) == 0.0) rim += area / 3.0;
   }
   EXPECT_NEAR(p.contact.tributary.sum() + rim, total, 1e-12 * total);
   EXPECT_NEAR(total, 2.0 * M_PI, 0.05 * 2.0 * M_PI);  // the hemisphere's area, to its faceting
@@ -86,7 +86,7 @@ TEST(ContactInterface3d, NodesHeldAtZeroAlongATangentGetAHeldRow) {
   EXPECT_EQ(c.size(), 3 * 7);  // the arc's 7 inner nodes on each of the 3 node layers
   std::vector<int> expected;
   for (int i = 0; i < c.size(); ++i) {
-    const double z = p.solid.nodes(2, c.nodes[i]);
+    const double z = std::get<stc::TetMesh>(p.body).nodes(2, c.nodes[i]);
     if (z == 0.0 || z == 0.05) expected.push_back(3 * i + 2);
     EXPECT_NEAR(c.tangents(2, 2 * i + 1), -1.0, 1e-15) << "τ_2 = n × e_x = −e_z";
   }

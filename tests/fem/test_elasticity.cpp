@@ -15,7 +15,7 @@ using Field = std::function<Eigen::Vector2d(const Eigen::Vector2d&)>;
 const stc::MaterialSpec kSteelLike{3000.0, 0.3};
 
 // Solves K u = 0 with u = exact on every boundary node (arc and top): the discrete harmonic extension.
-Eigen::VectorXd solveDirichlet(const stc::Mesh& mesh, const Eigen::SparseMatrix<double>& K, const Field& exact) {
+Eigen::VectorXd solveDirichlet(const stc::TriMesh& mesh, const Eigen::SparseMatrix<double>& K, const Field& exact) {
   std::vector<bool> fixed(mesh.numDofs(), false);
   Eigen::VectorXd u = Eigen::VectorXd::Zero(mesh.numDofs());
   for (const char* name : {"arc", "top"})
@@ -40,7 +40,7 @@ Eigen::VectorXd solveDirichlet(const stc::Mesh& mesh, const Eigen::SparseMatrix<
   return u;
 }
 
-Eigen::VectorXd interpolate(const stc::Mesh& mesh, const Field& f) {
+Eigen::VectorXd interpolate(const stc::TriMesh& mesh, const Field& f) {
   Eigen::VectorXd u(mesh.numDofs());
   for (int n = 0; n < mesh.numNodes(); ++n) u.segment<2>(2 * n) = f(mesh.nodes.col(n));
   return u;
@@ -49,7 +49,7 @@ Eigen::VectorXd interpolate(const stc::Mesh& mesh, const Field& f) {
 }  // namespace
 
 TEST(Elasticity, StiffnessIsSymmetric) {
-  const stc::Mesh mesh = stc::makeHalfDisc({1.0, 21, 1.135});
+  const stc::TriMesh mesh = stc::makeHalfDisc({1.0, 21, 1.135});
   for (auto plane : {stc::PlaneModel::Strain, stc::PlaneModel::Stress}) {
     const Eigen::SparseMatrix<double> K = stc::assembleStiffness(mesh, stc::hookeMatrix(kSteelLike, plane));
     const Eigen::SparseMatrix<double> asym = K - Eigen::SparseMatrix<double>(K.transpose());
@@ -58,7 +58,7 @@ TEST(Elasticity, StiffnessIsSymmetric) {
 }
 
 TEST(Elasticity, RigidBodyModesAreInTheKernel) {
-  const stc::Mesh mesh = stc::makeHalfDisc({1.0, 21, 1.135});
+  const stc::TriMesh mesh = stc::makeHalfDisc({1.0, 21, 1.135});
   const Eigen::SparseMatrix<double> K = stc::assembleStiffness(mesh, stc::hookeMatrix(kSteelLike, stc::PlaneModel::Strain));
   const std::vector<Field> modes = {[](const Eigen::Vector2d&) { return Eigen::Vector2d(1.0, 0.0); },
                                     [](const Eigen::Vector2d&) { return Eigen::Vector2d(0.0, 1.0); },
@@ -74,7 +74,7 @@ TEST(Elasticity, RigidBodyModesAreInTheKernel) {
 }
 
 TEST(Elasticity, PatchTestReproducesLinearFieldsExactly) {
-  const stc::Mesh mesh = stc::makeHalfDisc({1.0, 31, 1.135});
+  const stc::TriMesh mesh = stc::makeHalfDisc({1.0, 31, 1.135});
   const Field linear = [](const Eigen::Vector2d& x) {
     return Eigen::Vector2d(0.01 + 0.002 * x.x() - 0.003 * x.y(), -0.02 + 0.004 * x.x() + 0.001 * x.y());
   };
@@ -97,7 +97,7 @@ TEST(Elasticity, EnergyErrorConvergesAtOrderOne) {
   const Eigen::Matrix3d D = stc::hookeMatrix(kSteelLike, stc::PlaneModel::Strain);
   std::vector<double> log_h, log_e;
   for (int arc_nodes : {15, 31, 63, 127}) {
-    const stc::Mesh mesh = stc::makeHalfDisc({1.0, arc_nodes, 1.0});
+    const stc::TriMesh mesh = stc::makeHalfDisc({1.0, arc_nodes, 1.0});
     const Eigen::VectorXd u = solveDirichlet(mesh, stc::assembleStiffness(mesh, D), exact);
     double error2 = 0.0;
     for (int e = 0; e < mesh.numElements(); ++e) {

@@ -1,4 +1,4 @@
-// libFuzzer target: Gmsh MSH 4.1 text -> Mesh and TetMesh (src/mesh/gmsh_reader.hpp), both readers
+// libFuzzer target: Gmsh MSH 4.1 text -> TriMesh and TetMesh (src/mesh/gmsh_reader.hpp), both readers
 // on every input. InputError is the
 // expected answer to bad input; any other exception, a crash, a sanitizer report, a leak, or a
 // returned mesh that breaks the reader's promises is a finding.
@@ -21,11 +21,11 @@ void require(bool ok, const char* promise) {
   std::abort();
 }
 
-bool isNode(const stc::Mesh& mesh, int id) { return id >= 0 && id < mesh.numNodes(); }
+bool isNode(const stc::TriMesh& mesh, int id) { return id >= 0 && id < mesh.numNodes(); }
 
 /// The promises of gmsh_reader.hpp that assembly relies on: node ids in range, every triangle
 /// counter-clockwise, every kept node used by a triangle, group nodes sorted and on their edges.
-void checkMesh(const stc::Mesh& mesh) {
+void checkMesh(const stc::TriMesh& mesh) {
   require(mesh.numElements() > 0, "at least one triangle");
   std::vector<bool> used(static_cast<std::size_t>(mesh.numNodes()), false);
   for (int e = 0; e < mesh.numElements(); ++e) {

@@ -18,8 +18,8 @@ namespace stc {
 namespace {
 
 /// The unit square split along its diagonal: triangles (0 1 2) and (0 2 3).
-Mesh unitSquare() {
-  Mesh mesh;
+TriMesh unitSquare() {
+  TriMesh mesh;
   mesh.nodes.resize(2, 4);
   mesh.nodes << 0, 1, 1, 0,  //
       0, 0, 1, 1;
@@ -99,7 +99,7 @@ std::string arrayText(const std::string& document, const std::string& section,
 
 /// Displacement (2 components), a nodal scalar and a three-component element field.
 std::string sampleDocument() {
-  const Mesh mesh = unitSquare();
+  const TriMesh mesh = unitSquare();
   Eigen::MatrixXd displacement(2, 4);
   displacement << 0.1, 0.2, 0.3, 0.4,  //
       -1, -2, -3, -4;
@@ -183,7 +183,7 @@ TEST(VtuDocument, WritesScalarAndCellFieldsAsGiven) {
 }
 
 TEST(VtuDocument, KeepsTenSignificantDigits) {
-  const Mesh mesh = unitSquare();
+  const TriMesh mesh = unitSquare();
   const Eigen::RowVector4d values(1.0 / 3.0, -2e-9 / 3.0, 12345.678901234, 1e300);
   const std::string text = arrayText(vtuDocument(mesh, {{"f", values}}, {}), "PointData", "f");
   EXPECT_EQ(text, "0.3333333333 -6.666666667e-10 12345.6789 1e+300");
@@ -203,7 +203,7 @@ TEST(VtuDocument, EscapesXmlSpecialCharactersInFieldNames) {
 }
 
 TEST(VtuDocument, RejectsAFieldWithTheWrongNumberOfColumnsNamingIt) {
-  const Mesh mesh = unitSquare();
+  const TriMesh mesh = unitSquare();
   std::string message = invalidArgumentOf([&] {
     vtuDocument(mesh, {{"displacement", Eigen::MatrixXd::Zero(2, 5)}}, {});
   });
@@ -215,7 +215,7 @@ TEST(VtuDocument, RejectsAFieldWithTheWrongNumberOfColumnsNamingIt) {
 }
 
 TEST(VtuDocument, RejectsPointFieldsWithoutOneToThreeComponents) {
-  const Mesh mesh = unitSquare();
+  const TriMesh mesh = unitSquare();
   for (int rows : {0, 4}) {
     const std::string message = invalidArgumentOf([&] {
       vtuDocument(mesh, {{"tensor", Eigen::MatrixXd::Zero(rows, 4)}}, {});
@@ -225,7 +225,7 @@ TEST(VtuDocument, RejectsPointFieldsWithoutOneToThreeComponents) {
 }
 
 TEST(VtuDocument, RejectsEmptyAndRepeatedNames) {
-  const Mesh mesh = unitSquare();
+  const TriMesh mesh = unitSquare();
   const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(1, 4);
   EXPECT_THROW(vtuDocument(mesh, {{"", zero}}, {}), std::invalid_argument);
   const std::string message = invalidArgumentOf([&] {
@@ -246,7 +246,7 @@ TEST(VtuDocument, RejectsNonFiniteValuesBeforeWritingAnything) {
 }
 
 TEST(VtuDocument, StreamedAndStringDocumentsAreIdentical) {
-  const Mesh mesh = unitSquare();
+  const TriMesh mesh = unitSquare();
   const std::vector<PointField> fields = {{"gap", Eigen::RowVector4d(0, 1, 2, 3)}};
   std::ostringstream out;
   writeVtu(out, mesh, fields, {});
@@ -315,7 +315,7 @@ TEST(VtuTetDocument, RejectsAFieldWithTheWrongNumberOfColumnsNamingIt) {
 // A series writes every frame through one VtuGrid (the points and cells formatted once): each frame
 // is the document writeVtu gives for its fields, and the checks still refuse a field of the wrong size.
 TEST(VtuGrid, FramesAreTheDocumentsOfWriteVtu) {
-  const Mesh mesh = unitSquare();
+  const TriMesh mesh = unitSquare();
   const VtuGrid grid(mesh);
   for (double scale : {1.0, -2.5e-7}) {
     const Eigen::MatrixXd displacement = scale * Eigen::MatrixXd::Random(2, 4);

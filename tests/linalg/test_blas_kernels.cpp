@@ -44,7 +44,7 @@ TEST(BlasKernels, TheSwitchLeavesNoFallbackTheProcessorCouldBeat) {
 
 TEST(BlasKernels, ProductsOnTheChosenKernelsAgreeWithEigensOwn) {
   stc::linalg::preferFastBlasKernels();
-  // The coarse step's shapes (r × 2n_C by 2n_C × m) and a square one, through OpenBLAS's dgemm
+  // The coarse step's shapes (r × d n_C by d n_C × m) and a square one, through OpenBLAS's dgemm
   // itself, against Eigen's coefficient-based product.
   for (const auto& [m, k, n] : {std::tuple{45, 1602, 201}, std::tuple{300, 300, 300}, std::tuple{7, 3, 5}}) {
     std::srand(11);

@@ -69,7 +69,7 @@ $Elements
 $EndElements
 )";
 
-Mesh parse(const std::string& text) {
+TriMesh parse(const std::string& text) {
   std::istringstream in(text);
   return parseGmsh(in, "square.msh");
 }
@@ -91,7 +91,7 @@ std::string errorOf(const std::string& text) {
 }
 
 TEST(GmshReader, ParsesTwoTriangleSquareExactly) {
-  const Mesh mesh = parse(kSquare);
+  const TriMesh mesh = parse(kSquare);
   ASSERT_EQ(mesh.numNodes(), 4);  // node 9 is used by no triangle: dropped
   Eigen::Matrix<double, 2, 4> nodes;
   nodes << 0, 1, 1, 0,
@@ -106,7 +106,7 @@ TEST(GmshReader, ParsesTwoTriangleSquareExactly) {
 }
 
 TEST(GmshReader, ReadsPhysicalGroupsByName) {
-  const Mesh mesh = parse(kSquare);
+  const TriMesh mesh = parse(kSquare);
   ASSERT_EQ(mesh.groups.size(), 2u);  // "body" is a surface group, not a boundary
   EXPECT_EQ(mesh.group("bottom").edges, (std::vector<std::array<int, 2>>{{0, 1}}));
   EXPECT_EQ(mesh.group("bottom").nodes, (std::vector<int>{0, 1}));
@@ -115,12 +115,12 @@ TEST(GmshReader, ReadsPhysicalGroupsByName) {
 }
 
 TEST(GmshReader, CurveInTwoGroupsFeedsBothAndUnnamedGroupIsNamedByNumber) {
-  const Mesh mesh = parse(replaced(kSquare, "1 0 0 0 1 0 0 1 1 2", "1 0 0 0 1 0 0 2 1 7 2"));
+  const TriMesh mesh = parse(replaced(kSquare, "1 0 0 0 1 0 0 1 1 2", "1 0 0 0 1 0 0 2 1 7 2"));
   EXPECT_EQ(mesh.group("bottom").edges, mesh.group("7").edges);
 }
 
 TEST(GmshReader, FlipsMeshWhoseTrianglesAreAllClockwise) {
-  const Mesh mesh = parse(replaced(replaced(kSquare, "\n4 1 2 3\n", "\n4 1 3 2\n"), "\n5 1 3 4\n",
+  const TriMesh mesh = parse(replaced(replaced(kSquare, "\n4 1 2 3\n", "\n4 1 3 2\n"), "\n5 1 3 4\n",
                                   "\n5 1 4 3\n"));
   ASSERT_EQ(mesh.numElements(), 2);
   for (int e = 0; e < 2; ++e) EXPECT_DOUBLE_EQ(mesh.twiceSignedArea(e), 1.0);
@@ -213,7 +213,7 @@ TEST(GmshReader, RefusesMissingFileNamingIt) {
 
 constexpr double kRadius = 0.25;
 
-Mesh readPunch() { return readGmsh(std::string(STC_SOURCE_DIR) + "/examples/meshes/punch.msh"); }
+TriMesh readPunch() { return readGmsh(std::string(STC_SOURCE_DIR) + "/examples/meshes/punch.msh"); }
 
 /// Centre of the corner arc that the point p lies on, if it is on one.
 std::optional<Eigen::Vector2d> arcCentre(const Eigen::Vector2d& p) {
@@ -227,7 +227,7 @@ std::optional<Eigen::Vector2d> arcCentre(const Eigen::Vector2d& p) {
 }
 
 TEST(GmshReader, PunchHasModerateSizeAndLiesOnOrAboveYZero) {
-  const Mesh mesh = readPunch();
+  const TriMesh mesh = readPunch();
   EXPECT_GE(mesh.numNodes(), 300);
   EXPECT_LE(mesh.numNodes(), 800);
   EXPECT_DOUBLE_EQ(mesh.nodes.row(1).minCoeff(), 0.0);  // the scene's obstacle is just below
@@ -241,7 +241,7 @@ TEST(GmshReader, PunchHasModerateSizeAndLiesOnOrAboveYZero) {
 // arcs, each r^2/2 (theta - sin theta): A_mesh + sum(segments) = A up to rounding. A cruder bound
 // (sagitta c^2/(8r) times chord c, summed) checks that the gap is small as well as accounted for.
 TEST(GmshReader, PunchAreaIsGeometricAreaLessArcSegments) {
-  const Mesh mesh = readPunch();
+  const TriMesh mesh = readPunch();
   double area = 0.0;
   for (int e = 0; e < mesh.numElements(); ++e) {
     ASSERT_GT(mesh.twiceSignedArea(e), 0.0) << e;
@@ -267,7 +267,7 @@ TEST(GmshReader, PunchAreaIsGeometricAreaLessArcSegments) {
 }
 
 TEST(GmshReader, PunchTopGroupCoversTopEdge) {
-  const Mesh mesh = readPunch();
+  const TriMesh mesh = readPunch();
   const BoundaryGroup& top = mesh.group("top");
   ASSERT_FALSE(top.nodes.empty());
   for (int n : top.nodes) EXPECT_DOUBLE_EQ(mesh.nodes(1, n), 1.0) << n;
@@ -277,7 +277,7 @@ TEST(GmshReader, PunchTopGroupCoversTopEdge) {
 }
 
 TEST(GmshReader, PunchBottomGroupLiesOnFlatAndArcsAndSpansThem) {
-  const Mesh mesh = readPunch();
+  const TriMesh mesh = readPunch();
   const BoundaryGroup& bottom = mesh.group("bottom");
   ASSERT_FALSE(bottom.nodes.empty());
   double xmin = 0.0, xmax = 0.0;

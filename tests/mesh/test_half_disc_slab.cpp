@@ -17,7 +17,7 @@ stc::HalfDiscSlabOptions options(double thickness, int layers) {
   return o;
 }
 
-double sectionArea(const stc::Mesh& m) {
+double sectionArea(const stc::TriMesh& m) {
   double area = 0.0;
   for (int e = 0; e < m.numElements(); ++e) {
     const Eigen::Vector2d a = m.nodes.col(m.triangles(0, e)), b = m.nodes.col(m.triangles(1, e)),
@@ -31,7 +31,7 @@ double sectionArea(const stc::Mesh& m) {
 
 TEST(HalfDiscSlab, SizesAndVolumeAreTheSectionsTimesTheLayers) {
   const auto o = options(0.2, 3);
-  const stc::Mesh section = stc::makeHalfDisc(o.section);
+  const stc::TriMesh section = stc::makeHalfDisc(o.section);
   const stc::TetMesh slab = stc::makeHalfDiscSlab(o);
   EXPECT_EQ(slab.numNodes(), 4 * section.numNodes());
   EXPECT_EQ(slab.numElements(), 3 * 3 * section.numElements());

@@ -15,7 +15,7 @@ namespace {
 // The nodes with g0_i + min_k n_i · w(t_k) ≤ 0, w(t_k) the prescribed displacement of the first
 // node of the top edge (every node of a driven edge moves the same way).
 std::vector<int> reachedByTheTopsMotion(const stc::Problem& p) {
-  const int top = p.mesh.group("top").nodes.front();
+  const int top = std::get<stc::TriMesh>(p.body).group("top").nodes.front();
   std::vector<int> nodes;
   for (int i = 0; i < p.contact.size(); ++i) {
     double closest = p.contact.initial_gap[i];
@@ -79,7 +79,7 @@ TEST(PrescribedReach, TheRigidMotionHistoryIsTheTranslatedBodysInterfaceDisplace
   const auto W = stc::prescribedTranslation(p);
   ASSERT_TRUE(W.has_value());
   const stc::InterfaceHistory h = stc::rigidMotionHistory(p.contact, *W);
-  const int top = p.mesh.group("top").nodes.front();
+  const int top = std::get<stc::TriMesh>(p.body).group("top").nodes.front();
   for (int k = 0; k < p.numSteps(); ++k) {
     const Eigen::Vector2d w = p.fullDisplacement(Eigen::VectorXd::Zero(p.numFreeDofs()), k).segment<2>(2 * top);
     EXPECT_LT((W->col(k) - w).norm(), 1e-15) << "instant " << k;

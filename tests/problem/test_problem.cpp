@@ -9,7 +9,7 @@
 
 TEST(Problem, PrescribedDofsFollowTheirHistories) {
   const stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 11));  // t_k = k/10
-  const auto& top = p.mesh.group("top").nodes;
+  const auto& top = std::get<stc::TriMesh>(p.body).group("top").nodes;
   EXPECT_EQ(p.numDofs() - p.numFreeDofs(), 2 * static_cast<int>(top.size()));
   const Eigen::VectorXd u = p.fullDisplacement(Eigen::VectorXd::Zero(p.numFreeDofs()), 6);  // t = 0.6
   for (int node : top) {

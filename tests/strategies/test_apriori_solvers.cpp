@@ -62,7 +62,7 @@ TEST(LatinPgd, ReachesTheIncrementalSolutionWithFewSparseSolves) {
   EXPECT_LE(*r.summary.error, 1e-8);
   const auto& last = r.summary.history.back();
   EXPECT_GT(last.rank, 0);
-  // A plain LATIN iteration costs m = 41 solves; latin-pgd spends one per direction, at most 2n_C.
+  // A plain LATIN iteration costs m = 41 solves; latin-pgd spends one per direction, at most d n_C.
   EXPECT_LE(last.sparse_solves, 2 * fixture().problem.contact.size() + 2);
   EXPECT_LT(last.sparse_solves, 41L * r.summary.iterations / 4);
 }

@@ -48,7 +48,7 @@ Eigen::VectorXd randomField(int n, unsigned seed_value) {
 }
 
 // u(x) = a + ω × x + E x at every node (2D: rotation ω, constant strain E).
-Eigen::VectorXd affineField(const stc::Mesh& mesh, const Eigen::Vector2d& a, double omega, const Eigen::Matrix2d& E) {
+Eigen::VectorXd affineField(const stc::TriMesh& mesh, const Eigen::Vector2d& a, double omega, const Eigen::Matrix2d& E) {
   Eigen::VectorXd u(mesh.numDofs());
   for (int j = 0; j < mesh.numNodes(); ++j) {
     const Eigen::Vector2d x = mesh.nodes.col(j);
@@ -68,7 +68,7 @@ TEST(ModeLocalisation, ElementEnergiesAddUpToTheStiffnessQuadraticForm) {
 
 TEST(ModeLocalisation, RigidMotionCarriesNoEnergy) {
   const ModeLocalisation loc = seedLocalisation();
-  const auto& mesh = seed().problem.mesh;
+  const auto& mesh = std::get<stc::TriMesh>(seed().problem.body);
   const Eigen::VectorXd rigid = affineField(mesh, {0.3, -0.2}, 0.1, Eigen::Matrix2d::Zero());
   const Eigen::VectorXd strained = affineField(mesh, {0.0, 0.0}, 0.0, Eigen::Matrix2d::Identity() * 0.1);
   EXPECT_LT(loc.elementEnergies(rigid).cwiseAbs().maxCoeff(), 1e-14 * loc.elementEnergies(strained).sum());
@@ -78,7 +78,7 @@ TEST(ModeLocalisation, UniformStrainSpreadsItsEnergyLikeTheArea) {
   const ModeLocalisation loc = seedLocalisation();
   Eigen::Matrix2d E;
   E << 0.01, 0.004, 0.004, -0.02;
-  const auto m = loc.measure(affineField(seed().problem.mesh, {0.1, 0.0}, 0.05, E));
+  const auto m = loc.measure(affineField(std::get<stc::TriMesh>(seed().problem.body), {0.1, 0.0}, 0.05, E));
   const std::vector<double> area_share = loc.bandAreaShares();
   for (std::size_t j = 0; j < area_share.size(); ++j) EXPECT_NEAR(m.band_share[j], area_share[j], 1e-12);
   const double mean_distance = loc.areas().dot(loc.distances()) / loc.areas().sum();
@@ -100,7 +100,7 @@ TEST(ModeLocalisation, FieldLivingOnTheContactZoneIsInsideTheNarrowestBand) {
 TEST(ModeLocalisation, SeedContactZoneIsTheClosedArcSegment) {
   const ModeLocalisation loc = seedLocalisation();
   const ContactZone& zone = loc.zone();
-  const auto& mesh = seed().problem.mesh;
+  const auto& mesh = std::get<stc::TriMesh>(seed().problem.body);
   // 21 nodes at t_200 (reactions.csv of the same solve: n_contact = 21, x in [−0.303, 0.303]).
   EXPECT_EQ(zone.nodes.size(), 21u);
   EXPECT_EQ(zone.edges.size(), zone.nodes.size() - 1);  // one connected arc segment

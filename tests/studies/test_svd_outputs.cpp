@@ -85,7 +85,7 @@ TEST(SvdTables, LocalisationCsvHasOneColumnPerBandAndEmptyCellsForUnresolvedMode
 
 TEST(SvdTables, ModesVtuCarriesScaledModesAndEnergyDensities) {
   const Case& c = smallCase();
-  const std::string vtu = stc::modesVtu(c.problem.mesh, c.svd, 2, c.localisation.get());
+  const std::string vtu = stc::modesVtu(std::get<stc::TriMesh>(c.problem.body), c.svd, 2, c.localisation.get());
   EXPECT_NE(vtu.find("Name=\"mode_1\""), std::string::npos);
   EXPECT_NE(vtu.find("Name=\"mode_2\""), std::string::npos);
   EXPECT_EQ(vtu.find("Name=\"mode_3\""), std::string::npos);
@@ -95,12 +95,12 @@ TEST(SvdTables, ModesVtuCarriesScaledModesAndEnergyDensities) {
 TEST(SvdTables, DeformedModesDataHasOneClosedPolygonPerElementAndTheAskedAmplitude) {
   const Case& c = smallCase();
   std::vector<double> scales;
-  const std::string data = stc::deformedModesData(c.problem.mesh, c.svd, 2, c.localisation.get(), 0.1, scales);
+  const std::string data = stc::deformedModesData(std::get<stc::TriMesh>(c.problem.body), c.svd, 2, c.localisation.get(), 0.1, scales);
   ASSERT_EQ(scales.size(), 2u);
   int vertices = 0;
   for (const auto& line : lines(data))
     if (!line.empty() && line[0] != '#') ++vertices;
-  EXPECT_EQ(vertices, 2 * 4 * c.problem.mesh.numElements());
+  EXPECT_EQ(vertices, 2 * 4 * std::get<stc::TriMesh>(c.problem.body).numElements());
   const Eigen::VectorXd u = c.svd.space.col(0) * std::sqrt(c.svd.sigma[0]) * scales[0];
   const Eigen::Map<const Eigen::Matrix2Xd> nodal(u.data(), 2, u.size() / 2);
   EXPECT_NEAR(nodal.colwise().norm().maxCoeff(), 0.1, 1e-12);
@@ -119,7 +119,7 @@ TEST(SvdFigures, GnuplotDrawsEveryPictureAndLeavesNoTemporary) {
   spec.time_functions = 4;
   stc::writeFileAtomically(dir / "singular_values.csv", stc::singularValuesCsv(c.svd));
   stc::writeFileAtomically(dir / "time_functions.csv", stc::timeFunctionsCsv(c.svd, c.problem.times, 4));
-  stc::writeFileAtomically(dir / "modes_deformed.dat", stc::deformedModesData(c.problem.mesh, c.svd, 4,
+  stc::writeFileAtomically(dir / "modes_deformed.dat", stc::deformedModesData(std::get<stc::TriMesh>(c.problem.body), c.svd, 4,
                                                                                    c.localisation.get(), 0.1,
                                                                                    spec.mode_scales));
   for (int i = 0; i < 4; ++i) spec.mode_energy.push_back(c.svd.energyFraction(i));

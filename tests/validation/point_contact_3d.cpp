@@ -28,7 +28,7 @@ Scene pointContactScene(const PointContactSetup& setup) {
 
 std::vector<Eigen::Vector2d> contactXY(const Problem& problem) {
   std::vector<Eigen::Vector2d> xy;
-  for (int node : problem.contact.nodes) xy.push_back(problem.solid.nodes.col(node).head<2>());
+  for (int node : problem.contact.nodes) xy.push_back(std::get<stc::TetMesh>(problem.body).nodes.col(node).head<2>());
   return xy;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Shared pieces of the 3D point-contact validations (test_hertz3d.cpp, test_cattaneo3d.cpp): the
+// Shared pieces of the 3D point-contact validations (test_hertz_3d.cpp, test_cattaneo_3d.cpp): the
 // half-ball with a uniformly meshed core (src/mesh/half_ball.hpp, HalfBallOptions::core) pressed onto
 // the rigid flat, then optionally driven sideways, and the moment estimate of the radius of a
 // hemispherical traction from nodal forces.

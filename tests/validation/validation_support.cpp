@@ -36,7 +36,7 @@ Resultant resultant(const Eigen::MatrixXd& lambda, int k) {
 
 std::vector<double> contactX(const Problem& problem) {
   std::vector<double> x;
-  for (int id : problem.contact.nodes) x.push_back(problem.mesh.nodes(0, id));
+  for (int id : problem.contact.nodes) x.push_back(std::get<stc::TriMesh>(problem.body).nodes(0, id));
   return x;
 }
 

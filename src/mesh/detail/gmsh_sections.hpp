@@ -1,6 +1,6 @@
 #pragma once
 // What the Gmsh MSH 4.1 reader (src/mesh/gmsh_reader.hpp) reads from a file before it builds a mesh:
-// shared by the 2D build (gmsh_reader.cpp) and the 3D one (gmsh_reader3d.cpp). Internal.
+// shared by the 2D build (gmsh_reader.cpp) and the 3D one (gmsh_reader_3d.cpp). Internal.
 #include <Eigen/Core>
 #include <array>
 #include <filesystem>
@@ -53,7 +53,7 @@ struct GmshData {
 /// (lines on curves in 2D, triangles on surfaces in 3D). Throws InputError naming file and line.
 GmshData readSections(std::istream& in, const std::string& source_name, int dimension);
 
-/// Finalises the groups of a built mesh (Mesh or TetMesh) and validates it, prefixing any
+/// Finalises the groups of a built mesh (TriMesh or TetMesh) and validates it, prefixing any
 /// InputError with the file name.
 template <class MeshT>
 void finishMesh(MeshT& mesh, const std::string& source_name) {

@@ -1,4 +1,4 @@
-#include "stcontact/fem/elasticity3d.hpp"
+#include "stcontact/fem/elasticity_3d.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -15,7 +15,7 @@ struct BoundaryGroup {
   std::vector<std::array<int, 2>> edges;
 };
 
-struct Mesh {
+struct TriMesh {
   Eigen::Matrix2Xd nodes;      ///< coordinates, one column per node
   Eigen::Matrix3Xi triangles;  ///< node ids, one column per element, counter-clockwise
   std::map<std::string, BoundaryGroup> groups;

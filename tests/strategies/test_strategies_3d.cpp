@@ -1,6 +1,6 @@
 // Every strategy on the small 3D seed scene (tests/fixtures/hemisphere_scene.hpp), against the
 // incremental solver's cone law: the same code above the contact interface as in 2D, only the
-// interface has three rows per node. The full-size study is docs/three_d.md.
+// interface has three rows per node. The full-size study is docs/strategies_3d.md.
 #include <gtest/gtest.h>
 
 #include <iostream>

@@ -1,20 +1,20 @@
-#include "stcontact/mesh/mesh.hpp"
+#include "stcontact/mesh/tri_mesh.hpp"
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/mesh/mesh_checks.hpp"
 
 namespace stc {
 
-double Mesh::twiceSignedArea(int e) const {
+double TriMesh::twiceSignedArea(int e) const {
   const Eigen::Vector2d a = nodes.col(triangles(0, e));
   const Eigen::Vector2d b = nodes.col(triangles(1, e));
   const Eigen::Vector2d c = nodes.col(triangles(2, e));
   return (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
 }
 
-const BoundaryGroup& Mesh::group(const std::string& name) const { return mesh_checks::findGroup(groups, name); }
+const BoundaryGroup& TriMesh::group(const std::string& name) const { return mesh_checks::findGroup(groups, name); }
 
-void Mesh::validate() const {
+void TriMesh::validate() const {
   if (numElements() == 0) throw InputError("mesh has no triangles");
   mesh_checks::checkElementNodeIds(triangles, numNodes());
   mesh_checks::checkElementMeasures(
@@ -22,6 +22,6 @@ void Mesh::validate() const {
   mesh_checks::checkGroupNodeIds(groups, &BoundaryGroup::edges, numNodes());
 }
 
-void Mesh::finalizeGroups() { mesh_checks::finalizeGroupNodes(groups, &BoundaryGroup::edges); }
+void TriMesh::finalizeGroups() { mesh_checks::finalizeGroupNodes(groups, &BoundaryGroup::edges); }
 
 }  // namespace stc

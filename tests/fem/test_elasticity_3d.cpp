@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <functional>
 
-#include "stcontact/fem/elasticity3d.hpp"
+#include "stcontact/fem/elasticity_3d.hpp"
 #include "stcontact/mesh/half_ball.hpp"
 
 namespace {

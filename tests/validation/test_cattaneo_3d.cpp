@@ -1,4 +1,4 @@
-// Validation against Cattaneo–Mindlin partial slip in 3D: the half-ball of test_hertz3d.cpp is
+// Validation against Cattaneo–Mindlin partial slip in 3D: the half-ball of test_hertz_3d.cpp is
 // pressed with friction μ = 0.5 onto the rigid flat (δ = 0.005, u_x = u_y = 0), then the indentation is
 // held and the top face is driven along x, so that the tangential force Q grows from 0 towards μP.
 // Cattaneo (1938) / Mindlin (1949), sphere: a central stick disc of radius
