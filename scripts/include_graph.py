@@ -10,8 +10,12 @@ Reads every #include "stcontact/<module>/..." of the sources (src/<module>/ for 
   3. the Python module includes nothing of the program (python/ -> cli/).
 Prints the module graph (each module, its floor, the modules it includes) and every violation.
 
-Usage: scripts/include_graph.py [--dot FILE]   (--dot: the module graph for Graphviz)
-Exit status: 0 clean, 1 a violation (each printed), 2 an include that names no file.
+Usage: scripts/include_graph.py [--dot FILE] [--markdown] [--check-doc FILE]
+  --dot FILE        also write the module graph for Graphviz
+  --markdown        print the floors as the markdown table docs/architecture.md holds
+  --check-doc FILE  fail (exit 1) unless FILE holds that table, as printed, between the lines
+                    "<!-- floors: begin -->" and "<!-- floors: end -->"
+Exit status: 0 clean, 1 a violation (each printed) or a stale table, 2 an include that names no file.
 """
 import os
 import re
@@ -67,6 +71,25 @@ def resolve(include):
     return os.path.relpath(os.path.join(folder_of(module), rest), ROOT), module
 
 
+def markdown(modules, rank):
+    """The floors, top first: each module, its folder and what it includes."""
+    lines = ['| floor | module | folder | includes |', '|---:|---|---|---|']
+    for floor in reversed(FLOORS):
+        for m in floor:
+            folder = 'src/%s/' % m if m in CORE else '%s/' % m
+            below = sorted(modules[m], key=lambda x: (-rank[x], x))
+            lines.append('| %d | `%s` | `%s` | %s |' % (rank[m], m, folder, ', '.join('`%s`' % b for b in below) or '·'))
+    return '\n'.join(lines)
+
+
+def doc_table(path):
+    text = open(path, encoding='utf-8').read()
+    begin, end = '<!-- floors: begin -->\n', '\n<!-- floors: end -->'
+    if begin not in text or end not in text:
+        return None
+    return text.split(begin, 1)[1].split(end, 1)[0]
+
+
 def main():
     rank = {m: i for i, floor in enumerate(FLOORS) for m in floor}
     files = dict(sources())
@@ -99,10 +122,11 @@ def main():
             if a < b and a in modules[b] and rank[a] == rank[b]:
                 problems.append('circle: %s and %s include each other' % (a, b))
     problems += file_circles(edges)
-    for floor in reversed(FLOORS):
-        for m in floor:
-            below = sorted(modules[m], key=lambda x: -rank[x])
-            print('%-12s floor %2d  -> %s' % (m, rank[m], ', '.join(below) or '(nothing)'))
+    if '--markdown' not in sys.argv:
+        for floor in reversed(FLOORS):
+            for m in floor:
+                below = sorted(modules[m], key=lambda x: (-rank[x], x))
+                print('%-12s floor %2d  -> %s' % (m, rank[m], ', '.join(below) or '(nothing)'))
     if '--dot' in sys.argv:
         with open(sys.argv[sys.argv.index('--dot') + 1], 'w') as dot:
             dot.write('digraph includes {\n  rankdir=BT;\n')
@@ -110,12 +134,21 @@ def main():
                 for b in sorted(modules[a]):
                     dot.write('  "%s" -> "%s";\n' % (a, b))
             dot.write('}\n')
+    table = markdown(modules, rank)
+    if '--markdown' in sys.argv:
+        print(table)
+    if '--check-doc' in sys.argv:
+        doc = sys.argv[sys.argv.index('--check-doc') + 1]
+        if doc_table(doc) != table:
+            problems.append('stale: the floors table of %s is not the tree\'s (scripts/include_graph.py --markdown '
+                            'prints it)' % doc)
     for line in missing + problems:
         print(line)
     if missing:
         return 2
-    print('%d files, %d modules: %s' % (len(files), len(rank), 'no arrow up, no circle' if not problems else
-                                        '%d violations' % len(problems)))
+    if '--markdown' not in sys.argv:
+        print('%d files, %d modules: %s' % (len(files), len(rank), 'no arrow up, no circle' if not problems else
+                                            '%d violations' % len(problems)))
     return 1 if problems else 0
 
 

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -195,4 +197,20 @@ TEST(OptionFields, AKeyOutsideTheSchemaIsRefusedWithTheKeysAllowed) {
                     HasSubstr("nested_tolerance"), HasSubstr("pgd_gap_share")));
   // Library-only fields are not keys of the scene.
   EXPECT_THAT(readerError("max_skip = 3\n"), HasSubstr("unknown key 'solver.max_skip'"));
+}
+
+TEST(OptionFields, EverySolverKeyOfTheCodeIsDocumentedAndNoOther) {
+  // docs/scene_format.md lists each key as "| `solver.KEY` | ...".
+  std::ifstream page(std::string(STC_SOURCE_DIR) + "/docs/scene_format.md");
+  ASSERT_TRUE(page) << "docs/scene_format.md";
+  std::set<std::string> documented;
+  const std::regex row(R"(^\| `solver\.([a-z_]+)` \|)");
+  for (std::string line; std::getline(page, line);)
+    if (std::smatch m; std::regex_search(line, m, row)) documented.insert(m[1]);
+  std::set<std::string> code = {"name"};
+  stc::SolverSpec spec;
+  stc::SolverSpec::fields(spec, [&](const char* key, const auto&, const auto&, stc::Exposure e = stc::Exposure::SceneKey) {
+    if (e == stc::Exposure::SceneKey) code.insert(key);
+  });
+  EXPECT_EQ(documented, code);
 }
