@@ -79,11 +79,33 @@ Eigen::SparseMatrix<double> stiffnessOf(const Problem& p) {
                     p.body);
 }
 
-double defaultLengthScale(const Scene& scene, const Problem& p) {
-  if (scene.contact.length_scale) return *scene.contact.length_scale;
+/// R, the body's size: the generator's radius, else the mesh's largest extent (the default of L).
+double bodySize(const Scene& scene, const Problem& p) {
   if (!scene.mesh.generator.empty()) return scene.mesh.radius;
   const Eigen::MatrixXd x = p.nodePositions();
   return (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).maxCoeff();
+}
+
+/// The search direction k = κ E ℓ_i / L scaled to the body, κ R / L, must lie in
+/// [kMinSearchScale, kMaxSearchScale]: LATIN's contraction rate tends to 1 at both ends
+/// (docs/search_direction.md: κ ≤ 0.03 needs ≥ 2700 iterations to true error 1e-6 on the seed
+/// scene, κ = 100 needs 1152, against 97 at κ = 4), and beyond them the iterates move by less than
+/// the error estimate can resolve: it reported "converged" at true errors above 1 (L = 1e-4 R,
+/// L = 1e-12 R). The hard cases kappa_0.01 and kappa_100 sit at the ends.
+constexpr double kMinSearchScale = 1e-2;
+constexpr double kMaxSearchScale = 1e2;
+
+void requireMeaningfulSearchDirection(const Scene& scene, double size, double length_scale) {
+  const double kappa = scene.solver.search_scale;
+  const double scaled = kappa * size / length_scale;
+  if (scaled >= kMinSearchScale && scaled <= kMaxSearchScale) return;
+  std::ostringstream msg;
+  msg << "the search direction's scale κ R / L = " << scaled << " (κ = solver.search_scale = " << kappa
+      << ", L = contact.length_scale = " << length_scale << ", R = the body's size = " << size
+      << ") must be in [" << kMinSearchScale << ", " << kMaxSearchScale
+      << "]: beyond it LATIN's iterates move by less than the error estimate can resolve "
+         "(docs/search_direction.md)";
+  throw InputError(msg.str());
 }
 
 void addLoads(Problem& p, const Scene& scene, const std::vector<int>& owner) {
@@ -193,7 +215,9 @@ Problem buildProblem(const Scene& scene) {
         },
         p.body);
   });
-  p.length_scale = defaultLengthScale(scene, p);
+  const double size = bodySize(scene, p);
+  p.length_scale = scene.contact.length_scale.value_or(size);
+  withContext(scene, "", [&] { requireMeaningfulSearchDirection(scene, size, p.length_scale); });
   setSearchDirection(p.contact, scene.solver.search_scale, p.material.young, p.length_scale);
   return p;
 }

@@ -69,11 +69,20 @@ double ErrorEstimator::extend(Sequence& q, const InterfaceHistory& s, double ene
     gram.topLeftCorner(n - 1, n - 1) = full ? q.gram.bottomRightCorner(n - 1, n - 1) : q.gram;
     for (Eigen::Index i = 0; i < n; ++i) gram(i, n - 1) = gram(n - 1, i) = energyProduct(q.differences[i], q.differences.back());
     q.gram = std::move(gram);
-    const double size = std::sqrt(std::max(0.0, q.gram(n - 1, n - 1)));
+    const InterfaceHistory& w = q.differences.back();
+    const bool stands_still = w.v.isZero(0.0) && w.lambda.isZero(0.0);
+    // The energy of a difference of two iterates in equilibrium is Σ δv·δλ ≥ 0; a negative one (beyond
+    // round-off) says the iterates are not both in equilibrium, and the products mean nothing.
+    const double squared = q.gram(n - 1, n - 1);
+    const double scale = std::sqrt(w.v.squaredNorm() * w.lambda.squaredNorm());
+    const bool not_an_energy = squared < -kRoundOff * scale;
+    const double size = std::sqrt(std::max(0.0, squared));
     // A difference larger than every earlier one of the sequence: no contraction (yet).
     const bool growing = n > 1 && q.gram.diagonal().head(n - 1).maxCoeff() <= q.gram(n - 1, n - 1);
-    if (size == 0.0) {
+    if (stands_still) {
       estimate = 0.0;  // the iteration stands still: a fixed point
+    } else if (not_an_energy || size == 0.0) {
+      estimate = kInfinity;  // no energy to extrapolate from: the estimate cannot tell
     } else if (energy > 0.0 && size <= kRoundOff * std::sqrt(energy)) {
       estimate = size / std::sqrt(energy);  // a fixed point to round-off: the error is not resolved below it
     } else if (n == order_ + 1 && !growing && energy > 0.0) {

@@ -34,6 +34,10 @@ struct StoppingRule {
   double estimate_min_rate = 0.1;  ///< the smallest contraction per period it assumes
   EstimateKind estimate_kind = EstimateKind::Extrapolation;
   double calibration_safety = 2.5;  ///< s of CalibratedIndicatorEstimator
+  /// Extrapolation: records after a change of the stage's rank within which an estimate below the
+  /// tolerance needs the previous record's below it too (the order-2 extrapolation's differences
+  /// span its last 3 records; IterationMonitor::confirmed).
+  int confirm_window = 3;
 };
 
 /// The reason of a converged solve whose last record is `last` ("error estimate E <= tolerance T after
@@ -64,6 +68,7 @@ class IterationMonitor {
   bool stop(Termination termination, std::string reason);
   double estimate(const InterfaceHistory& s, double indicator);  ///< by rule_.estimate_kind
   std::optional<double> measureError(const Eigen::MatrixXd& lambda);  // and adds its time to measure_s_
+  bool confirmed(const IterationRecord& r) const;  // an estimate below the tolerance stands (a map change)
 
 
   SolveSummary summary_;
@@ -77,6 +82,7 @@ class IterationMonitor {
   double measure_s_ = 0.0;  // seconds spent in the true-error measure
   double best_indicator_ = 0.0;
   int best_iteration_ = 0;
+  int rank_changed_ = 0;  ///< the last record whose rank differs from the one before (0: none)
 
 };
 

@@ -1,0 +1,96 @@
+// The stopping rule cannot be fooled (docs/method.md §2, "Stopping"): over the ranges the scene
+// reader accepts, "converged" means a true error at most the tolerance. Every iterative strategy, in
+// 2D (the seed scene) and 3D (the hemisphere), at small settings, across
+//   - the search direction's scale κ R / L over its whole range [0.01, 100], set through κ and
+//     through L (k = κ E ℓ_i / L depends on κ / L alone);
+//   - the relaxation ω from 0.1 to 1 (latin, latin-pgd; the FAS strategies relax at ω = 1).
+// A run that ends otherwise (the iteration limit, stagnation) is an honest answer and passes; a run
+// that reports converged must have its true error, measured against the incremental solution, at
+// most the tolerance.
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fixtures/hemisphere_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "strategies/strategy_fixture.hpp"
+
+namespace {
+
+constexpr double kTolerance = 1e-6;
+
+struct ScanCase {
+  int dimension;
+  std::string strategy;
+  double search_scale = 4.0;                 ///< κ
+  std::optional<double> length_scale;        ///< L (default: the body's size R = 1)
+  double relaxation = 1.0;                   ///< ω
+};
+
+std::string nameOf(const ScanCase& c) {
+  std::string name = std::to_string(c.dimension) + "D_" + c.strategy + "_kappa" + std::to_string(c.search_scale);
+  if (c.length_scale) name += "_L" + std::to_string(*c.length_scale);
+  if (c.relaxation < 1.0) name += "_omega" + std::to_string(c.relaxation);
+  for (char& ch : name)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return name;
+}
+
+/// The scene of `dimension` at small settings, solved once by the incremental reference.
+const stc::test::StrategyFixture& reference(int dimension) {
+  static std::map<int, std::unique_ptr<stc::test::StrategyFixture>> fixtures;
+  auto& f = fixtures[dimension];
+  if (!f) {
+    const stc::Scene scene = dimension == 3 ? stc::test::hemisphereScene(4, 21) : stc::test::seedScene(21, 21);
+    f = std::make_unique<stc::test::StrategyFixture>(scene);
+  }
+  return *f;
+}
+
+std::vector<ScanCase> scanCases() {
+  std::vector<ScanCase> cases;
+  for (int dimension : {2, 3}) {
+    for (const char* strategy : {"latin", "latin-pgd", "fas-aposteriori", "fas-apriori"}) {
+      for (double kappa : {0.01, 0.1, 1.0, 10.0, 100.0}) cases.push_back({dimension, strategy, kappa});
+      cases.push_back({dimension, strategy, 4.0, 400.0});  // κ R / L = 0.01
+      cases.push_back({dimension, strategy, 4.0, 0.04});   // κ R / L = 100
+    }
+    for (const char* strategy : {"latin", "latin-pgd"})
+      for (double omega : {0.1, 0.3, 0.55, 0.8}) cases.push_back({dimension, strategy, 4.0, std::nullopt, omega});
+  }
+  return cases;
+}
+
+class StoppingScan : public ::testing::TestWithParam<ScanCase> {};
+
+TEST_P(StoppingScan, ConvergedMeansATrueErrorWithinTheTolerance) {
+  const ScanCase& c = GetParam();
+  const stc::test::StrategyFixture& base = reference(c.dimension);
+  stc::Scene scene = base.scene;
+  scene.solver.search_scale = c.search_scale;
+  scene.contact.length_scale = c.length_scale;
+  scene.solver.latin.relaxation = scene.solver.latin_pgd.latin.relaxation = c.relaxation;
+  scene.solver.setTolerance(kTolerance);
+  // The same mesh, loads and stiffness as the reference's problem: its true-error measure applies.
+  const stc::Problem problem = stc::buildProblem(scene);
+  stc::SolveInputs inputs;
+  inputs.reference = &base.reference;
+  inputs.converged_lambda = &base.incremental.interface.lambda;
+  const stc::SolveSummary s = stc::solve(stc::strategyNamed(c.strategy), problem, scene.solver, inputs).summary;
+  std::cout << "[ measured ] " << nameOf(c) << ": " << stc::toString(s.termination) << " after " << s.iterations
+            << ", true error " << s.error.value_or(-1.0) << ", estimate " << s.error_estimate << "\n";
+  ASSERT_TRUE(s.error.has_value());
+  if (!s.converged()) return;  // an honest answer
+  EXPECT_LE(*s.error, kTolerance) << s.message;
+  EXPECT_LE(s.error_estimate, kTolerance);
+}
+
+INSTANTIATE_TEST_SUITE_P(AcrossTheRanges, StoppingScan, ::testing::ValuesIn(scanCases()),
+                         [](const ::testing::TestParamInfo<ScanCase>& info) { return nameOf(info.param); });
+
+}  // namespace
