@@ -13,6 +13,7 @@
 #include "stcontact/mesh/half_ball.hpp"
 #include "stcontact/mesh/half_disc.hpp"
 #include "stcontact/mesh/half_disc_slab.hpp"
+#include "stcontact/problem/rigid_motions.hpp"
 
 namespace stc {
 namespace {
@@ -127,6 +128,23 @@ void addLoads(Problem& p, const Scene& scene, const std::vector<int>& owner) {
                        LoadHistory(spec.history).sample(p.times)});
 }
 
+// The Dirichlet conditions must hold every rigid motion (problem/rigid_motions.hpp); otherwise the
+// message names the free ones and the boundaries that could hold them.
+void requireHeldBody(const BodyMesh& body, const std::vector<int>& owner) {
+  std::vector<char> prescribed(owner.size());
+  for (std::size_t dof = 0; dof < owner.size(); ++dof) prescribed[dof] = owner[dof] >= 0;
+  const std::vector<std::string> free = freeRigidMotions(body, prescribed);
+  if (free.empty()) return;
+  std::string motions, boundaries;
+  for (const std::string& m : free) motions += (motions.empty() ? "" : "; ") + m;
+  std::visit([&](const auto& mesh) {
+    for (const auto& [name, group] : mesh.groups) boundaries += (boundaries.empty() ? "'" : ", '") + name + "'";
+  }, body);
+  throw InputError("the conditions leave the body free to move rigidly (" + motions +
+                   "): K_ff is singular and the equilibrium not unique, as contact and friction cannot hold a "
+                   "rigid motion; prescribe it on a boundary (the mesh has " + boundaries + ")");
+}
+
 // Per dof: prescribed by a [[dirichlet]] entry whose history is 0 at every instant (addLoads has
 // sampled the entries' histories, in order, as the first load terms).
 std::vector<char> heldAtZero(const Problem& p, const std::vector<int>& owner) {
@@ -188,6 +206,7 @@ Problem buildProblem(const Scene& scene) {
   const std::vector<int> owner = withContext(scene, "dirichlet", [&] {
     return std::visit([&](const auto& mesh) { return prescribedBy(mesh, scene.dirichlet); }, p.body);
   });
+  withContext(scene, "dirichlet", [&] { requireHeldBody(p.body, owner); });
   p.free_index.assign(p.numDofs(), -1);
   for (int dof = 0; dof < p.numDofs(); ++dof)
     if (owner[dof] < 0) {

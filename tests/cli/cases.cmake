@@ -103,7 +103,12 @@ set(stc_refusals
   "refuse_empty_mesh|empty\\.msh: empty file|${trunc}|--set|mesh.file=empty.msh"
   "refuse_truncated_mesh|truncated\\.msh: line 1123: expected 3 numbers \\(x y z\\) for node 455|${trunc}"
   "refuse_tol_nan|--tol must be > 0|${seed}|${small_fields}|--tol|nan"
-  "refuse_max_iterations_zero|--max-iterations must be >= 1|${seed}|${small_fields}|--max-iterations|0")
+  "refuse_max_iterations_zero|--max-iterations must be >= 1|${seed}|${small_fields}|--max-iterations|0"
+  "refuse_free_translation|key 'dirichlet': the conditions leave the body free to move rigidly \\(translation along x\\)|${bad}/free_translation.toml"
+  "refuse_loads_only|free to move rigidly \\(translation along x. translation along y. rotation about z\\)|${bad}/loads_only.toml"
+  "bad_check_free_translation|free to move rigidly \\(translation along x\\).*prescribe it on a boundary|check|${bad}/free_translation.toml"
+  "refuse_search_scale_tiny|the search direction's scale κ R / L = 1e-08 .* must be in \\[0\\.01, 100\\]|${seed}|--set|solver.search_scale=1e-8"
+  "refuse_length_scale_tiny|κ R / L = 40000 \\(κ = solver\\.search_scale = 4, L = contact\\.length_scale = 0\\.0001|${seed}|--set|contact.length_scale=1e-4")
 foreach(row IN LISTS stc_refusals)
   string(REPLACE "|" ";" fields "${row}")
   list(POP_FRONT fields name pattern)
