@@ -4,6 +4,7 @@
 #include <malloc.h>
 
 #include <iostream>
+#include <new>
 
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/compare_command.hpp"
@@ -11,6 +12,7 @@
 #include "stcontact/cli/sweep_command.hpp"
 #include "stcontact/cli/threads_option.hpp"
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/memory.hpp"
 #include "stcontact/io/output_error.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/version.hpp"
@@ -96,6 +98,8 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     return fail(1, std::string(e.what()) + " (see stcontact --help)");
+  } catch (const stc::InputError& e) {  // an option's own check (--threads)
+    return fail(1, std::string("--threads: ") + e.what());
   }
   try {
     stc::threadCount();  // a bad STC_THREADS is refused before anything is read or written
@@ -109,6 +113,11 @@ int main(int argc, char** argv) {
     return fail(1, e.what());
   } catch (const stc::OutputError& e) {
     return fail(1, e.what());
+  } catch (const std::bad_alloc&) {
+    // The scene's estimate fit (src/problem/size_estimate.hpp), the run needed more: say so, as bad
+    // input (its sizes), not as an internal failure.
+    return fail(1, "not enough memory: an allocation failed with " + stc::bytesText(stc::availableMemoryBytes()) +
+                       " left available; reduce the mesh or the number of instants");
   } catch (const std::exception& e) {
     return fail(3, std::string("internal failure: ") + e.what());
   }

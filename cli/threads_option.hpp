@@ -14,7 +14,7 @@ inline CLI::Option* addThreadsOption(CLI::App& command) {
           "threads for the local stage (over nodes) and the global stage (over blocks of instants); results are "
           "identical for every count (default: STC_THREADS, else " +
               std::to_string(stc::kDefaultThreads) + ")")
-      ->check(CLI::PositiveNumber);
+      ->type_name("N");  // 1 to stc::maxThreadCount(): setThreadCount's InputError otherwise
 }
 
 }  // namespace stc::cli

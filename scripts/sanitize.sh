@@ -4,8 +4,10 @@
 #   there. Any sanitizer report (out-of-bounds access, use after free, leak, signed overflow,
 #   misaligned or null access, ...) aborts the test that hit it, so the run fails.
 #   Left out, by ctest label:
-#     consumer  the find_package test builds an outside project against the installed libraries
-#               without the sanitizer flags, so it cannot link them; the Release run covers it.
+#     consumer       the find_package test builds an outside project against the installed libraries
+#                    without the sanitizer flags, so it cannot link them; the Release run covers it.
+#     address_space  runs the program under `ulimit -v`, which AddressSanitizer's shadow memory
+#                    cannot start in; the Release run covers it.
 #   Eigen's own dense kernels (-DSTC_EIGEN_USE_BLAS=OFF): OpenBLAS is not instrumented, so ASan cannot
 #   check it, and its SSE2 symmetric matrix-vector kernel (dsymv_L_PRESCOTT, chosen at run time on
 #   some virtual machines; Debian 12 ships OpenBLAS 0.3.21) reads past the end of an operand, the
@@ -44,4 +46,4 @@ if [ -x "$sym" ]; then common+=":external_symbolizer_path=$sym"; fi
 export ASAN_OPTIONS="$common:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export UBSAN_OPTIONS="$common:print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 cd "$build"
-ctest --output-on-failure -j "$jobs" --timeout 1800 -LE '^consumer$' "$@"
+ctest --output-on-failure -j "$jobs" --timeout 1800 -LE '^(consumer|address_space)$' "$@"

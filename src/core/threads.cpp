@@ -7,6 +7,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/worker_pool.hpp"
@@ -22,8 +23,9 @@ int fromEnvironment() {
   if (!text || !*text) return kDefaultThreads;
   char* end = nullptr;
   const long n = std::strtol(text, &end, 10);
-  if (*end != '\0' || n < 1 || n > 1024)
-    throw InputError(std::string("environment variable STC_THREADS = '") + text + "': must be an integer >= 1");
+  if (*end != '\0' || n < 1 || n > maxThreadCount())
+    throw InputError(std::string("environment variable STC_THREADS = '") + text + "': must be an integer in [1, " +
+                     std::to_string(maxThreadCount()) + "]");
   return static_cast<int>(n);
 }
 
@@ -65,8 +67,13 @@ int threadCount() {
   return environment;
 }
 
+int maxThreadCount() { return 4 * static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
 void setThreadCount(int n) {
-  if (n < 1) throw InputError("thread count " + std::to_string(n) + ": must be >= 1");
+  const int most = maxThreadCount();
+  if (n < 1 || n > most)
+    throw InputError("thread count " + std::to_string(n) + ": must be in [1, " + std::to_string(most) + "] (four times the " +
+                     std::to_string(most / 4) + " hardware threads of this machine; more only adds switching)");
   chosen.store(n);
 }
 

@@ -15,8 +15,11 @@ inline constexpr int kDefaultThreads = 2;
 /// Threads used by parallelFor: setThreadCount's value, else the environment variable
 /// STC_THREADS (an integer >= 1; anything else throws InputError naming it), else kDefaultThreads.
 int threadCount();
-/// Throws InputError unless n >= 1.
+/// Throws InputError unless 1 <= n <= maxThreadCount().
 void setThreadCount(int n);
+/// Four times the machine's hardware threads (at least 4): more threads than that only add switching
+/// (and a thread count of 2³¹ − 1 started a pool the machine could not hold).
+int maxThreadCount();
 
 /// Sets the count for one scope and restores the previous one (tests, benchmarks).
 class ThreadCountScope {

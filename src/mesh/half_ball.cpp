@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "stcontact/core/input_error.hpp"
@@ -54,12 +55,23 @@ void HalfBallOptions::validate() const {
   if (divisions < 2) throw InputError("half_ball: divisions = " + std::to_string(divisions) + " must be >= 2");
   if (!(grading >= 1.0) || !(grading <= 2.0))
     throw InputError("half_ball: grading = " + std::to_string(grading) + " must be in [1, 2]");
+  const double nodes = halfBallNodeCount(*this);
+  if (nodes * 3 > std::numeric_limits<int>::max())
+    throw InputError("half_ball: divisions = " + std::to_string(divisions) + " would make " + std::to_string(nodes) +
+                     " nodes, more than the dof numbering holds");
   if (!(core == 0.0 || (core > 0.0 && core < 1.0)))
     throw InputError("half_ball: core = " + std::to_string(core) + " must be 0 (no core) or in (0, 1)");
   // The core lies inside the hole of the outer grid, ‖x − P‖_∞ < d / (2d + 1) (src/mesh/detail/cored_box.hpp).
   if (core >= double(divisions) / (2 * divisions + 1))
     throw InputError("half_ball: core = " + std::to_string(core) + " must be below divisions / (2 divisions + 1) = " +
                      std::to_string(double(divisions) / (2 * divisions + 1)));
+}
+
+double halfBallNodeCount(const HalfBallOptions& options) {
+  const double d = options.divisions;
+  if (options.core <= 0.0) return (2 * d + 1) * (2 * d + 1) * (d + 1);
+  const double outer = 2 * d + 1;  // the outer grid's divisions (src/mesh/detail/cored_box.hpp)
+  return 3.0 * (2 * outer + 1) * (2 * outer + 1) * (outer + 1);
 }
 
 TetMesh makeHalfBall(const HalfBallOptions& options) {

@@ -47,4 +47,8 @@ struct HalfBallOptions {
 /// triangles are oriented outward. Node d + (2d + 1) d is the bottom pole.
 TetMesh makeHalfBall(const HalfBallOptions& options);
 
+/// The nodes makeHalfBall would create, in floating point: (2d + 1)² (d + 1) for the graded grid; with
+/// a core, at most three times the outer grid of 2d + 1 divisions.
+double halfBallNodeCount(const HalfBallOptions& options);
+
 }  // namespace stc

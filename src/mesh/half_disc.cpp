@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -94,6 +95,27 @@ void HalfDiscOptions::validate() const {
   if (arc_nodes < 3) throw InputError("half_disc: arc_nodes = " + std::to_string(arc_nodes) + " must be >= 3");
   if (!(grading >= 1.0) || !(grading <= 4.0))
     throw InputError("half_disc: grading = " + std::to_string(grading) + " must be in [1, 4]");
+  const double nodes = halfDiscNodeCount(*this);
+  if (nodes * 2 > std::numeric_limits<int>::max())
+    throw InputError("half_disc: arc_nodes = " + std::to_string(arc_nodes) + " with grading " + std::to_string(grading) +
+                     " would make " + std::to_string(nodes) + " nodes, more than the dof numbering holds");
+}
+
+double halfDiscNodeCount(const HalfDiscOptions& options) {
+  double segments = options.arc_nodes + 1.0;
+  double h = options.radius * pi / segments, radius = options.radius;
+  double nodes = segments + 2.0;  // the arc's ring and the centre
+  for (;;) {  // makeHalfDisc's rings, as it builds them
+    const double h_next = h * options.grading;
+    const double r_next = radius - 0.5 * std::sqrt(3.0) * 0.5 * (h + h_next);
+    const double m_next = std::round(pi * r_next / h_next);
+    if (r_next < 1.2 * h_next || m_next < 4 || nodes > 1e12) break;
+    segments = std::min(m_next, segments);
+    nodes += segments + 1.0;
+    radius = r_next;
+    h = h_next;
+  }
+  return nodes;
 }
 
 TriMesh makeHalfDisc(const HalfDiscOptions& options) {

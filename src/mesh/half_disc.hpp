@@ -19,6 +19,10 @@ struct HalfDiscOptions {
 /// Groups: "arc" (the curved edge, corners included) and "top" (the flat edge y = 0).
 TriMesh makeHalfDisc(const HalfDiscOptions& options);
 
+/// The nodes makeHalfDisc would create, counted in floating point without building them (its rings,
+/// at most as many segments as the one outside, and the centre); the count stops above 1e12.
+double halfDiscNodeCount(const HalfDiscOptions& options);
+
 }  // namespace stc
 // Sizes (tests/mesh/test_half_disc.cpp checks them): arc_nodes = 101 with the default grading
 // 1.135 gives 571 nodes, 1142 dofs, 1012 triangles (the seed paper: 1144 dofs), minimum angle 30°.

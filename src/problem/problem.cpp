@@ -14,6 +14,7 @@
 #include "stcontact/mesh/half_disc.hpp"
 #include "stcontact/mesh/half_disc_slab.hpp"
 #include "stcontact/problem/rigid_motions.hpp"
+#include "stcontact/problem/size_estimate.hpp"
 
 namespace stc {
 namespace {
@@ -192,6 +193,7 @@ Problem buildProblem(const Scene& scene) {
       throw InputError("point and normal must have " + std::to_string(p.dimension) + " entries in a " +
                        std::to_string(p.dimension) + "D scene");
     });
+  withContext(scene, "", [&] { requireFitsInMemory(scene); });  // before the mesh is built
   const std::string mesh_key = scene.mesh.file.empty() ? "mesh.generator" : "";
   p.body = withContext(scene, mesh_key, [&] { return buildBodyMesh(scene.mesh, p.dimension); });
   p.material = scene.material;

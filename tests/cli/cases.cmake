@@ -108,6 +108,9 @@ set(stc_refusals
   "refuse_loads_only|free to move rigidly \\(translation along x. translation along y. rotation about z\\)|${bad}/loads_only.toml"
   "bad_check_free_translation|free to move rigidly \\(translation along x\\).*prescribe it on a boundary|check|${bad}/free_translation.toml"
   "refuse_search_scale_tiny|the search direction's scale κ R / L = 1e-08 .* must be in \\[0\\.01, 100\\]|${seed}|--set|solver.search_scale=1e-8"
+  "refuse_arc_nodes_overflow|the problem does not fit in memory: mesh\\.arc_nodes = 2147483647|${seed}|--set|mesh.arc_nodes=2147483647"
+  "refuse_steps_huge|does not fit in memory: .*time\\.steps = 100000000|${seed}|--set|time.steps=100000000"
+  "bad_threads_huge|--threads: thread count 2147483647: must be in \\[1, [0-9]+\\]|solve|${seed}|${small_fields}|--threads|2147483647"
   "refuse_length_scale_tiny|κ R / L = 40000 \\(κ = solver\\.search_scale = 4, L = contact\\.length_scale = 0\\.0001|${seed}|--set|contact.length_scale=1e-4")
 foreach(row IN LISTS stc_refusals)
   string(REPLACE "|" ";" fields "${row}")
@@ -122,6 +125,13 @@ foreach(row IN LISTS stc_refusals)
     stc_cli_test(${name} 1 "${pattern}" ${fields})
   endif()
 endforeach()
+
+# An address-space limit below any run's need is refused at once (OpenBLAS 0.3.21 spun forever
+# under ulimit -v 100-200 MB), and nothing is written.
+add_test(NAME cli.refuse_low_address_space
+         COMMAND bash -c "ulimit -v 300000 && bash ${expect} --absent ${refused}/low_address_space 1 \
+           'address-space limit \\(ulimit -v\\) is 307 MB, below' ${cli} solve ${seed} --out ${refused}/low_address_space")
+set_tests_properties(cli.refuse_low_address_space PROPERTIES LABELS "cli;address_space")
 
 # Unwritable output folders: refused before the solve, and nothing created or changed.
 stc_cli_test(refuse_out_in_proc 1 "cannot create output folder '/proc/stcontact-out'" solve ${seed} ${small}

@@ -1,6 +1,9 @@
 // libFuzzer target: scene text (TOML) -> Scene, through the reader and all its checks
-// (src/scene/scene_reader.hpp). Leading lines "#set KEY=VALUE" (TOML comments, so the text stays
-// the same scene) are also applied as `--set` overrides, so the override parser is fuzzed too.
+// (src/scene/scene_reader.hpp), then the size estimate and, for a generator mesh small enough
+// (estimated at most kGeneratorNodes nodes), the generator with the scene's parameters
+// (src/problem/size_estimate.hpp, src/mesh/: a parameter of 2³¹ − 1 overflowed a generator).
+// Leading lines "#set KEY=VALUE" (TOML comments, so the text stays the same scene) are also applied
+// as `--set` overrides, so the override parser is fuzzed too.
 // InputError is the expected answer to bad input; any other exception, a crash, a sanitizer
 // report, a leak, or a returned scene that breaks the reader's promises is a finding.
 #include <cmath>
@@ -13,6 +16,8 @@
 #include <vector>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/problem/size_estimate.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 
 namespace {
@@ -50,12 +55,26 @@ void checkScene(const stc::Scene& scene) {
   for (const auto& l : scene.loads) checkHistory(l.history);
 }
 
+/// Generators at most this large run on every input (a few milliseconds).
+constexpr double kGeneratorNodes = 1000.0;
+
+/// The size estimate of every scene, and the generator of the small ones: InputError or a mesh.
+void generateMesh(const stc::Scene& scene) {
+  const stc::SizeEstimate size = stc::estimateSize(scene);
+  require(size.nodes >= 0.0 && size.bytes >= 0.0, "the size estimate is not negative");
+  if (scene.mesh.generator.empty() || size.nodes > kGeneratorNodes) return;
+  const stc::BodyMesh body = stc::buildBodyMesh(scene.mesh, scene.dimension);
+  require(stc::numNodes(body) <= size.nodes, "the generator makes at most the nodes estimated");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    checkScene(stc::parseScene(text, "fuzz.toml", leadingOverrides(text)));
+    const stc::Scene scene = stc::parseScene(text, "fuzz.toml", leadingOverrides(text));
+    checkScene(scene);
+    generateMesh(scene);
   } catch (const stc::InputError&) {
     // The expected answer to bad input; anything else propagates and is reported as a crash.
   }

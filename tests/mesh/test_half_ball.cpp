@@ -134,3 +134,12 @@ TEST(HalfBall, OptionsAreChecked) {
   EXPECT_THROW(stc::makeHalfBall({1.0, 8, 0.9}), stc::InputError);
   EXPECT_THROW(stc::makeHalfBall({1.0, 8, 2.5}), stc::InputError);
 }
+
+TEST(HalfBall, NodeCountIsTheGeneratorsForTheGradedGrid) {
+  for (int divisions : {2, 3, 5, 8})
+    EXPECT_EQ(stc::halfBallNodeCount({1.0, divisions, 1.5, 0.0}), stc::makeHalfBall({1.0, divisions, 1.5, 0.0}).numNodes());
+  // With a core: an upper bound (the outer grid, the core and its shells).
+  const stc::HalfBallOptions cored{1.0, 4, 1.5, 0.2};
+  EXPECT_GE(stc::halfBallNodeCount(cored), stc::makeHalfBall(cored).numNodes());
+  EXPECT_THROW(stc::makeHalfBall({1.0, 2000, 1.5, 0.0}), stc::InputError);  // 3.2e10 nodes
+}

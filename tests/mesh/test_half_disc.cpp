@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "stcontact/core/input_error.hpp"
 #include "stcontact/mesh/half_disc.hpp"
 
 namespace {
@@ -69,4 +70,18 @@ TEST(HalfDisc, RejectsBadOptions) {
   EXPECT_THROW(stc::makeHalfDisc({0.0, 101, 1.1}), std::runtime_error);
   EXPECT_THROW(stc::makeHalfDisc({1.0, 2, 1.1}), std::runtime_error);
   EXPECT_THROW(stc::makeHalfDisc({1.0, 101, 0.9}), std::runtime_error);
+}
+
+TEST(HalfDisc, NodeCountIsTheGeneratorsWithoutBuildingIt) {
+  for (int arc : {3, 21, 101, 400})
+    for (double grading : {1.0, 1.135, 2.0, 4.0}) {
+      const stc::HalfDiscOptions options{1.0, arc, grading};
+      EXPECT_EQ(stc::halfDiscNodeCount(options), stc::makeHalfDisc(options).numNodes()) << arc << " " << grading;
+    }
+}
+
+TEST(HalfDisc, RefusesASizeBeyondTheDofNumbering) {
+  // 2³¹ − 1 arc nodes overflowed the segment count and the node ids (a segmentation fault).
+  EXPECT_THROW(stc::makeHalfDisc({1.0, 2147483647, 1.135}), stc::InputError);
+  EXPECT_GT(stc::halfDiscNodeCount({1.0, 2147483647, 1.135}), 1e9);
 }
