@@ -12,7 +12,8 @@
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
 #include "stcontact/core/input_error.hpp"
-#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/core/interruption.hpp"
+#include "stcontact/io/run_folder.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/compare_plots.hpp"
@@ -64,7 +65,7 @@ int runCompare(const CompareArgs& args) {
   }
   const std::filesystem::path out =
       args.out ? std::filesystem::path(*args.out) : std::filesystem::path("results") / scene.name / "compare";
-  ensureWritableDirectory(out);  // fail before the runs, not after
+  RunFolder folder(out);  // checked and locked before the runs, written whole after them
   const Problem problem = buildProblem(scene);
   Comparison comparison = describeComparison(args.scene, commandLine(args, solvers, out), scene, problem, args.repeats);
 
@@ -78,10 +79,13 @@ int runCompare(const CompareArgs& args) {
   }
   comparison.memory_method = describeMemoryMethod(comparison.strategies.front().memory.since_reset);
   comparison.load_after = loadAverage();
-  writeComparison(out, comparison);
+  throwIfInterrupted();
+  writeComparison(folder.path(), comparison);
 
   std::string warning;
-  if (!drawWorkPrecisionPlots(out, comparison, warning)) std::cerr << "warning: " << warning << std::endl;
+  if (!drawWorkPrecisionPlots(folder.path(), comparison, warning))
+    std::cerr << "warning: " << folder.named(warning) << std::endl;
+  folder.commit();
   if (!args.quiet) std::cout << "report: " << (out / "summary.md").string() << std::endl;
   return 0;
 }

@@ -1,8 +1,10 @@
 // stcontact: the command line (docs/interface.md). Exit status: 0 converged / ok; 1 bad input or usage
-// (one "error: ..." line on stderr); 2 ran but did not converge; 3 internal failure.
+// (one "error: ..." line on stderr); 2 ran but did not converge; 3 internal failure; 130 / 143
+// stopped by SIGINT / SIGTERM (the output folder as it was before the run).
 #include <CLI/CLI.hpp>
 #include <malloc.h>
 
+#include <csignal>
 #include <iostream>
 #include <new>
 
@@ -12,6 +14,7 @@
 #include "stcontact/cli/sweep_command.hpp"
 #include "stcontact/cli/threads_option.hpp"
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/interruption.hpp"
 #include "stcontact/core/memory.hpp"
 #include "stcontact/io/output_error.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
@@ -31,6 +34,14 @@ int fail(int status, const std::string& message) {
   return status;
 }
 
+/// A run stopped by a signal: whatever it threw on the way out, it wrote nothing (src/io/run_folder.hpp).
+int interrupted() {
+  const int signal = stc::interruptionSignal();
+  std::cerr << "stopped by " << (signal == SIGTERM ? "SIGTERM" : "SIGINT")
+            << ": nothing written, the output folder is as it was before the run" << std::endl;
+  return 128 + (signal ? signal : SIGINT);
+}
+
 // The solvers allocate interface fields (d n_C × m doubles, 0.3 MB on the seed scene) at every stage.
 // glibc serves blocks above its mmap threshold (128 kB, raised on the fly up to 32 MB) by mmap and
 // returns the heap's free top to the system above its trim threshold, so that each new field costs
@@ -45,6 +56,7 @@ void keepFreedFieldsInTheHeap() {
 
 int main(int argc, char** argv) {
   keepFreedFieldsInTheHeap();
+  stc::stopOnSignals();  // SIGINT, SIGTERM: the solve stops at its next iteration, nothing is written
   stc::linalg::preferFastBlasKernels();
   CLI::App app{"stcontact " STC_VERSION
                ": quasi-static frictional contact over the whole space-time grid (LATIN, FAS, PGD)"};
@@ -109,7 +121,10 @@ int main(int argc, char** argv) {
     if (sweep_cmd->parsed()) return stc::cli::runSweep(sweep);
     if (scaling_cmd->parsed()) return stc::cli::runScaling(scaling);
     return stc::cli::runSolve(solve);
+  } catch (const stc::Interrupted&) {
+    return interrupted();
   } catch (const stc::InputError& e) {
+    if (stc::interruptionRequested()) return interrupted();
     return fail(1, e.what());
   } catch (const stc::OutputError& e) {
     return fail(1, e.what());
@@ -119,6 +134,7 @@ int main(int argc, char** argv) {
     return fail(1, "not enough memory: an allocation failed with " + stc::bytesText(stc::availableMemoryBytes()) +
                        " left available; reduce the mesh or the number of instants");
   } catch (const std::exception& e) {
+    if (stc::interruptionRequested()) return interrupted();  // e.g. a reference stopped by the signal
     return fail(3, std::string("internal failure: ") + e.what());
   }
 }

@@ -14,7 +14,8 @@
 #include "stcontact/cli/compare_command.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
 #include "stcontact/core/input_error.hpp"
-#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/core/interruption.hpp"
+#include "stcontact/io/run_folder.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/studies/compare_runs.hpp"
 #include "stcontact/studies/number_format.hpp"
@@ -177,7 +178,7 @@ int runScaling(const ScalingArgs& a) {
   study.solvers = strategyNamesOf(solverList(a.solvers));
   const std::filesystem::path out =
       a.out ? std::filesystem::path(*a.out) : std::filesystem::path("results") / base.name / "scaling";
-  ensureWritableDirectory(out);  // fail before the runs, not after
+  RunFolder folder(out);  // checked and locked before the runs, written whole after them
   study.scene_name = base.name;
   study.scene_file = a.scene;
   study.mesh_parameter = mesh.parameter;
@@ -200,9 +201,11 @@ int runScaling(const ScalingArgs& a) {
   study.memory_method = study.points.front().comparison.memory_method;
   study.load_after = loadAverage();
   study.run_s = std::chrono::duration<double>(Clock::now() - start).count();
-  writeScaling(out, study);
+  throwIfInterrupted();
+  writeScaling(folder.path(), study);
   std::string warning;
-  if (!drawScalingPlots(out, study, warning)) std::cerr << "warning: " << warning << std::endl;
+  if (!drawScalingPlots(folder.path(), study, warning)) std::cerr << "warning: " << folder.named(warning) << std::endl;
+  folder.commit();
   if (!a.quiet) std::cout << "report: " << (out / "summary.md").string() << std::endl;
   return 0;
 }

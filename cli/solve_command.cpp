@@ -6,7 +6,8 @@
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
 #include "stcontact/core/input_error.hpp"
-#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/core/interruption.hpp"
+#include "stcontact/io/run_folder.hpp"
 #include "stcontact/io/run_writer.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/strategies/registry.hpp"
@@ -47,14 +48,16 @@ int runSolve(const SolveArgs& args) {
   const std::filesystem::path out = args.out ? std::filesystem::path(*args.out)
                                              : std::filesystem::path("results") / scene.name / solver;
   const Problem problem = buildProblem(scene);  // bad input stops here, before anything is created
-  ensureWritableDirectory(out);                  // fail before the solve, not after
+  RunFolder folder(out);                         // checked and locked before the solve, written after
 
   TerminalProgress progress(args.quiet);
   std::unique_ptr<ErrorReference> reference;
   if (scene.solver.strategy != Strategy::Incremental && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes)
     reference = referenceOrWarning(problem, progress);
   const SolveResult result = runSolver(problem, scene, reference.get(), progress);
-  writeRunOutputs(out, problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
+  throwIfInterrupted();  // a solve stopped by a signal writes nothing
+  writeRunOutputs(folder.path(), problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
+  folder.commit();
 
   if (!args.quiet) {
     const auto& s = result.summary;

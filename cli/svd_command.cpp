@@ -15,9 +15,11 @@
 
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/interruption.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/json_writer.hpp"
+#include "stcontact/io/run_folder.hpp"
 #include "stcontact/pgd/displacement_history.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 #include "stcontact/scene/scene_reader.hpp"
@@ -112,8 +114,9 @@ std::string summaryJson(const Problem& problem, const Analysis& a, const ModeLoc
 }
 
 // Figures: data, script, then gnuplot; a missing or failing gnuplot is reported, not fatal.
-void writeFigures(const std::filesystem::path& out, const Problem& problem, const Analysis& a,
+void writeFigures(const RunFolder& folder, const Problem& problem, const Analysis& a,
                   const ModeLocalisation* loc) {
+  const std::filesystem::path& out = folder.path();
   const int drawn = std::min({kFigureModes, a.svd.size()});
   SvdFigureSpec spec;
   spec.scene = problem.name;
@@ -126,8 +129,8 @@ void writeFigures(const std::filesystem::path& out, const Problem& problem, cons
   writeFileAtomically(out / "svd_figures.gp", svdFiguresScript(spec));
   std::string detail;
   const FigureStatus status = drawSvdFigures(out, detail);
-  if (status == FigureStatus::GnuplotMissing) std::cerr << "note: " << detail << "\n";
-  if (status == FigureStatus::GnuplotFailed) std::cerr << "warning: " << detail << "\n";
+  if (status == FigureStatus::GnuplotMissing) std::cerr << "note: " << folder.named(detail) << "\n";
+  if (status == FigureStatus::GnuplotFailed) std::cerr << "warning: " << folder.named(detail) << "\n";
 }
 
 // The contact zone's localisation bands, or none (with a note) when no node ever closes.
@@ -186,13 +189,14 @@ int runSvd(const SvdArgs& args) {
                      "'");
   const std::filesystem::path out =
       args.out ? std::filesystem::path(*args.out) : std::filesystem::path("results") / scene.name / "svd";
-  ensureWritableDirectory(out);  // fail before the solve, not after
   const Problem problem = buildProblem(scene);
   const int m = problem.numSteps();
   if (m < 3) throw InputError("svd needs at least 3 instants (time.steps = " + std::to_string(m) + ")");
   if (args.modes < 1 || args.modes > m - 1)
     throw InputError("--modes = " + std::to_string(args.modes) + " must be in [1, " + std::to_string(m - 1) +
                      "] (time.steps - 1)");
+  RunFolder folder(out);  // every input checked (--modes 0 created the folder): locked, written whole at the end
+  const std::filesystem::path& dir = folder.path();
 
   const auto start = std::chrono::steady_clock::now();
   const SolveResult solved = solveIncremental(problem);
@@ -212,13 +216,15 @@ int runSvd(const SvdArgs& args) {
   if (!plane) std::cerr << "note: 3D scene: tables and svd_summary.json only (mode figures, localisation and modes.vtu are 2D)\n";
   const std::unique_ptr<ModeLocalisation> loc = plane ? localisation(problem, solved) : nullptr;
 
-  writeFileAtomically(out / "singular_values.csv", singularValuesCsv(a.svd));
-  writeFileAtomically(out / "time_functions.csv", timeFunctionsCsv(a.svd, problem.times, modes));
-  if (loc) writeFileAtomically(out / "localisation.csv", localisationCsv(a.svd, *loc, modes));
-  if (plane) writeFileAtomically(out / "modes.vtu", modesVtu(std::get<TriMesh>(problem.body), a.svd, modes, loc.get()));
-  writeFileAtomically(out / "svd_summary.json", summaryJson(problem, a, loc.get(), solve_s));
-  if (plane && a.svd.total_energy > 0.0) writeFigures(out, problem, a, loc.get());
+  throwIfInterrupted();
+  writeFileAtomically(dir / "singular_values.csv", singularValuesCsv(a.svd));
+  writeFileAtomically(dir / "time_functions.csv", timeFunctionsCsv(a.svd, problem.times, modes));
+  if (loc) writeFileAtomically(dir / "localisation.csv", localisationCsv(a.svd, *loc, modes));
+  if (plane) writeFileAtomically(dir / "modes.vtu", modesVtu(std::get<TriMesh>(problem.body), a.svd, modes, loc.get()));
+  writeFileAtomically(dir / "svd_summary.json", summaryJson(problem, a, loc.get(), solve_s));
+  if (plane && a.svd.total_energy > 0.0) writeFigures(folder, problem, a, loc.get());
   else if (plane) std::cerr << "note: zero elastic energy over the history: no figures\n";
+  folder.commit();
   report(out, problem, a, loc.get(), modes);
   return 0;
 }

@@ -10,7 +10,8 @@
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
 #include "stcontact/core/input_error.hpp"
-#include "stcontact/io/atomic_file.hpp"
+#include "stcontact/core/interruption.hpp"
+#include "stcontact/io/run_folder.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/gnuplot_runner.hpp"
@@ -124,19 +125,21 @@ int runSweep(const SweepArgs& args) {
   const std::string solver = solverOf(scenes.front());
   const fs::path out =
       args.out ? fs::path(*args.out) : fs::path("results") / scenes.front().name / ("sweep_" + range.key);
-  ensureWritableDirectory(out);  // every input checked: now the folder may be created
+  RunFolder folder(out);  // every input checked: now the folder may be locked, written whole at the end
   describe(sweep, args, range, scenes.front(), solver, out);
 
   TerminalProgress progress(args.quiet);
   const SweepSettings settings{strategyNamed(solver), !args.no_independent,
-                               args.write_solutions ? std::optional<fs::path>(out) : std::nullopt, &progress};
+                               args.write_solutions ? std::optional<fs::path>(folder.path()) : std::nullopt, &progress};
   WarmChain chain;
   for (std::size_t i = 0; i < scenes.size(); ++i) sweep.points.push_back(chain.solveValue(scenes[i], range, i, settings));
   sweep.load_after = loadAverage();
-  writeSweep(out, sweep);
+  throwIfInterrupted();
+  writeSweep(folder.path(), sweep);
 
   std::string warning;
-  if (!drawPlots(out, sweepPlot(sweep), warning)) std::cerr << "warning: " << warning << std::endl;
+  if (!drawPlots(folder.path(), sweepPlot(sweep), warning)) std::cerr << "warning: " << folder.named(warning) << std::endl;
+  folder.commit();
   if (!args.quiet) {
     printTotals(sweep);
     std::cout << "report: " << (out / "summary.md").string() << std::endl;

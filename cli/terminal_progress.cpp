@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <iostream>
 
+#include "stcontact/core/interruption.hpp"
+
 namespace stc::cli {
 
 TerminalProgress::TerminalProgress(bool quiet) : quiet_(quiet), tty_(!quiet && isatty(STDERR_FILENO)) {}
@@ -12,6 +14,7 @@ TerminalProgress::TerminalProgress(bool quiet) : quiet_(quiet), tty_(!quiet && i
 IterationCallback TerminalProgress::begin(const std::string& label) {
   label_ = label;
   return [this](const IterationRecord& r) {
+    if (interruptionRequested()) return false;  // SIGINT, SIGTERM: the solve stops at this iteration
     if (!tty_) return true;
     const auto now = std::chrono::steady_clock::now();
     if (drawn_ && now - last_ < std::chrono::milliseconds(200)) return true;

@@ -6,10 +6,12 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <optional>
 #include <sstream>
 
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/contact_tables.hpp"
+#include "stcontact/io/run_folder.hpp"
 #include "stcontact/io/run_writer.hpp"
 #include "stcontact/pgd/displacement_history.hpp"
 #include "stcontact/python/bindings.hpp"
@@ -149,7 +151,8 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
       withSolverOptions(options.sets, options.solver, options.tolerance, options.max_iterations));
   const Scene& scene = run.scene();
   const ProblemPtr problem = run.problem();
-  if (options.out) ensureWritableDirectory(*options.out);  // fail before the solve, not after
+  std::optional<RunFolder> folder;  // checked and locked before the solve, written whole after it
+  if (options.out) folder.emplace(*options.out);
   std::optional<InterfaceHistory> start;
   SolveInputs inputs;
   applyWarmStart(warm, *problem, start, inputs);
@@ -159,7 +162,10 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   SolveResult result = runSolve(*problem, scene, options.reference, inputs, bridge, warning);
   bridge.rethrowPending();
   if (!warning.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
-  if (options.out) writeRunOutputs(*options.out, *problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
+  if (folder) {
+    writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
+    folder->commit();
+  }
   return resultDict(problem, scene, std::move(result));
 }
 

@@ -5,10 +5,12 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/io/atomic_file.hpp"
+#include "stcontact/io/run_folder.hpp"
 #include "stcontact/pgd/displacement_history.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 #include "stcontact/python/bindings.hpp"
@@ -202,19 +204,21 @@ py::dict compare(const SceneHandle& handle, const CompareOptions& o) {
     if (!(*o.tolerance > 0.0)) throw InputError("--tol must be > 0");
     scene.solver.setTolerance(*o.tolerance);
   }
-  if (o.out) ensureWritableDirectory(*o.out);  // fail before the runs, not after
+  std::optional<RunFolder> folder;  // checked and locked before the runs, written whole after them
+  if (o.out) folder.emplace(*o.out);
   const std::shared_ptr<const Problem> problem = run.problem();
   Comparison comparison =
       describeComparison(handle.source().string(), callText(handle, solvers, o), scene, *problem, o.repeats);
   CallbackBridge bridge;
   measureAll(comparison, *problem, scene.solver, solvers, o.repeats, bridge);
   bridge.rethrowPending();
-  if (o.out) {
-    writeComparison(*o.out, comparison);
+  if (folder) {
+    writeComparison(folder->path(), comparison);
     std::string warning;
-    if (!drawWorkPrecisionPlots(*o.out, comparison, warning) &&
-        PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0)
+    if (!drawWorkPrecisionPlots(folder->path(), comparison, warning) &&
+        PyErr_WarnEx(PyExc_RuntimeWarning, folder->named(warning).c_str(), 1) != 0)
       throw py::error_already_set();
+    folder->commit();
   }
   return comparisonDict(comparison);
 }

@@ -133,6 +133,24 @@ add_test(NAME cli.refuse_low_address_space
            'address-space limit \\(ulimit -v\\) is 307 MB, below' ${cli} solve ${seed} --out ${refused}/low_address_space")
 set_tests_properties(cli.refuse_low_address_space PROPERTIES LABELS "cli;address_space")
 
+# A solve interrupted by SIGINT or SIGTERM at any moment, from its first iterations to the middle of
+# its VTU series, leaves its output folder whole (one complete run) with nothing beside it.
+add_test(NAME cli.interrupted_runs_leave_whole_folders
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/interrupt_runs.sh ${cli} ${scenes}/hemisphere.toml
+                 ${CMAKE_CURRENT_BINARY_DIR}/interrupted --set mesh.divisions=5 --set time.steps=101)
+set_tests_properties(cli.interrupted_runs_leave_whole_folders PROPERTIES LABELS cli TIMEOUT 600)
+
+# A re-run into a folder replaces it as a whole: no frame of a longer series stays behind; a folder
+# that holds other files is refused, not replaced.
+list(JOIN small " " small_text)
+add_test(NAME cli.rerun_replaces_the_folder
+         COMMAND bash -c "rm -rf ${refused}/rerun && ${cli} solve ${seed} ${small_text} --solver latin --out ${refused}/rerun --quiet \
+           && ${cli} solve ${seed} ${small_text} --solver latin --out ${refused}/rerun --quiet --set output.vtu_stride=10 \
+           && [ \"$(ls ${refused}/rerun/vtu | wc -l)\" = 3 ] && touch ${refused}/rerun/notes.txt && rm ${refused}/rerun/.stcontact-run \
+           ${refused}/rerun/summary.json && bash ${expect} 1 \"holds files that are not a run's\" ${cli} solve ${seed} ${small_text} \
+           --solver latin --out ${refused}/rerun && [ -f ${refused}/rerun/notes.txt ]")
+set_tests_properties(cli.rerun_replaces_the_folder PROPERTIES LABELS cli)
+
 # Unwritable output folders: refused before the solve, and nothing created or changed.
 stc_cli_test(refuse_out_in_proc 1 "cannot create output folder '/proc/stcontact-out'" solve ${seed} ${small}
              --solver latin --out /proc/stcontact-out)
