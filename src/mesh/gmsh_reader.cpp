@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -413,9 +414,47 @@ void checkTriangles(const GmshData& data, const TriMesh& mesh, const std::string
   }
 }
 
-/// Turns the line elements of every curve into edges of that curve's named physical groups.
-void buildGroups(const GmshData& data, const std::vector<int>& index, const std::string& source,
+/// Per undirected edge {a < b}: how many triangles have it (1 on the body's boundary, 2 inside).
+using EdgeUse = std::map<std::array<int, 2>, int>;
+
+std::array<int, 2> undirected(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+
+/// Conforming triangles (all counter-clockwise once checkTriangles has passed): a directed edge
+/// a → b belongs to one triangle at most, since an interior edge is shared by two triangles that run
+/// it in opposite directions, one on each side. A second triangle with the same directed edge lies
+/// on the same side as the first: the two repeat or overlap each other, which would count the
+/// material twice. Named by both Gmsh tags and the edge's node tags. Returns each edge's use count.
+EdgeUse checkConforming(const GmshData& data, const std::vector<int>& index, const TriMesh& mesh,
+                        const std::string& source) {
+  std::vector<long long> tag_of(static_cast<std::size_t>(mesh.numNodes()));
+  for (std::size_t i = 0; i < index.size(); ++i)
+    if (index[i] >= 0) tag_of[static_cast<std::size_t>(index[i])] = data.node_tags[i];
+  std::map<std::array<int, 2>, int> owner;  // directed edge → triangle
+  EdgeUse uses;
+  for (int e = 0; e < mesh.numElements(); ++e)
+    for (int a = 0; a < 3; ++a) {
+      const int i = mesh.triangles(a, e), j = mesh.triangles((a + 1) % 3, e);
+      const auto [it, first] = owner.emplace(std::array<int, 2>{i, j}, e);
+      ++uses[undirected(i, j)];
+      if (first) continue;
+      const auto [tag, line] = data.triangle_origin[static_cast<std::size_t>(e)];
+      const long long other = data.triangle_origin[static_cast<std::size_t>(it->second)].first;
+      const bool same = std::is_permutation(&mesh.triangles(0, e), &mesh.triangles(0, e) + 3, &mesh.triangles(0, it->second));
+      throw InputError(source + ": line " + std::to_string(line) + ": triangle " + std::to_string(tag) +
+                       (same ? " repeats triangle " + std::to_string(other) + " (the same three nodes)"
+                             : " overlaps triangle " + std::to_string(other) + " (both lie on the same side of " +
+                                   "their edge from node " + std::to_string(tag_of[i]) + " to node " +
+                                   std::to_string(tag_of[j]) + ")"));
+    }
+  return uses;
+}
+
+/// Turns the line elements of every curve into edges of that curve's named physical groups. Each
+/// must be an edge of exactly one triangle (on the body's boundary: contact, loads and normals are
+/// defined there) and appear once in a group (a repeated edge would count its length twice).
+void buildGroups(const GmshData& data, const std::vector<int>& index, const EdgeUse& uses, const std::string& source,
                  TriMesh& mesh) {
+  std::map<std::string, std::set<std::array<int, 2>>> seen;  // per group, its edges so far
   for (const auto& [curve, edges] : data.curve_edges) {
     const auto groups = data.curve_groups.find(curve);
     if (groups == data.curve_groups.end())
@@ -431,6 +470,16 @@ void buildGroups(const GmshData& data, const std::vector<int>& index, const std:
             throw InputError(source + ": line " + std::to_string(edge.line) + ": element " +
                              std::to_string(edge.tag) + " of boundary '" + name + "' uses node " +
                              std::to_string(data.node_tags[node]) + ", which no triangle uses");
+        const std::array<int, 2> key = undirected(index[edge.nodes[0]], index[edge.nodes[1]]);
+        const auto use = uses.find(key);
+        const int triangles = use == uses.end() ? 0 : use->second;
+        const std::string element = source + ": line " + std::to_string(edge.line) + ": element " +
+                                    std::to_string(edge.tag) + " of boundary '" + name + "'";
+        if (triangles != 1)
+          throw InputError(element + (triangles == 0 ? " is not an edge of any triangle"
+                                                     : " lies inside the body (two triangles share it): a boundary "
+                                                       "group holds edges of the body's boundary only"));
+        if (!seen[name].insert(key).second) throw InputError(element + " repeats an edge already in it");
         mesh.groups[name].edges.push_back({index[edge.nodes[0]], index[edge.nodes[1]]});
       }
     }
@@ -445,7 +494,8 @@ TriMesh parseGmsh(std::istream& in, const std::string& source_name) {
   std::vector<int> index;
   buildNodesAndTriangles(data, index, mesh);
   checkTriangles(data, mesh, source_name);
-  buildGroups(data, index, source_name, mesh);
+  const EdgeUse uses = checkConforming(data, index, mesh, source_name);
+  buildGroups(data, index, uses, source_name, mesh);
   detail::finishMesh(mesh, source_name);
   return mesh;
 }

@@ -26,6 +26,11 @@
 // the stiffness), renumbered 0..N-1 in the order of the file. A boundary edge that uses a node
 // no triangle uses is an InputError.
 //
+// Conformity: two elements (triangles, tetrahedra) on the same side of an edge (face) they share
+// repeat or overlap each other and are an InputError naming both tags; so is a boundary element that
+// is not on the body's boundary (a line between two triangles, a triangle between two tetrahedra)
+// or that its group already holds. Overlaps that share no edge (face) are not detected.
+//
 // Orientation: Gmsh writes the triangles of a plane surface with one orientation, that of the
 // surface's normal. If every triangle is clockwise (a surface whose normal is -z), all are
 // flipped to counter-clockwise. If only some are, nothing is flipped and the first inverted (or

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <set>
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/mesh/detail/gmsh_sections.hpp"
@@ -48,11 +49,40 @@ void orientTets(const GmshData& data, const std::string& source, TetMesh& mesh) 
   }
 }
 
+// `face` rotated so that its smallest node id comes first: the same cyclic order, so the same side.
+std::array<int, 3> rotatedToSmallest(std::array<int, 3> face) {
+  std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
+  return face;
+}
+
+// Conforming tetrahedra (all positive once orientTets has run): an outward face, with its cyclic
+// order, belongs to one tetrahedron at most, since an interior face is shared by two tetrahedra
+// that see it with opposite orders, one on each side. A second tetrahedron with the same oriented
+// face lies on the same side as the first: the two repeat or overlap each other, which would count
+// the material twice. Named by both Gmsh tags.
+void checkConforming(const GmshData& data, const std::string& source, const TetMesh& mesh) {
+  std::map<std::array<int, 3>, int> owner;  // oriented face (smallest id first) → tetrahedron
+  for (int e = 0; e < mesh.numElements(); ++e)
+    for (int f = 0; f < 4; ++f) {
+      const auto [it, first] = owner.emplace(rotatedToSmallest(outwardFace(mesh, e, f)), e);
+      if (first) continue;
+      const auto [tag, line] = data.tet_origin[static_cast<std::size_t>(e)];
+      const long long other = data.tet_origin[static_cast<std::size_t>(it->second)].first;
+      const bool same = std::is_permutation(&mesh.tets(0, e), &mesh.tets(0, e) + 4, &mesh.tets(0, it->second));
+      throw InputError(at(source, line) + "tetrahedron " + std::to_string(tag) +
+                       (same ? " repeats tetrahedron " + std::to_string(other) + " (the same four nodes)"
+                             : " overlaps tetrahedron " + std::to_string(other) +
+                                   " (both lie on the same side of a face they share)"));
+    }
+}
+
 // Every triangle of a surface with physical groups joins each group, oriented as the boundary
-// face of the body it is (outward); a triangle that is not a boundary face is an InputError.
+// face of the body it is (outward); a triangle that is not a boundary face, or that a group already
+// holds (its area would count twice), is an InputError.
 void buildSurfaceGroups(const GmshData& data, const std::vector<int>& index, const std::string& source,
                         TetMesh& mesh) {
   std::map<std::array<int, 3>, std::array<int, 3>> outward;  // sorted node ids → oriented face
+  std::map<std::string, std::set<std::array<int, 3>>> seen;   // per group, its faces so far
   for (const auto& face : boundaryTriangles(mesh)) {
     std::array<int, 3> key = face;
     std::sort(key.begin(), key.end());
@@ -74,6 +104,9 @@ void buildSurfaceGroups(const GmshData& data, const std::vector<int>& index, con
         if (key[0] < 0 || face == outward.end())
           throw InputError(at(source, t.line) + "triangle " + std::to_string(t.tag) + " of boundary '" + name +
                            "' is not a boundary face of the tetrahedra");
+        if (!seen[name].insert(key).second)
+          throw InputError(at(source, t.line) + "triangle " + std::to_string(t.tag) + " of boundary '" + name +
+                           "' repeats a face already in it");
         mesh.groups[name].triangles.push_back(face->second);
       }
     }
@@ -88,6 +121,7 @@ TetMesh parseGmsh3d(std::istream& in, const std::string& source_name) {
   std::vector<int> index;
   buildNodesAndTets(data, index, mesh);
   orientTets(data, source_name, mesh);
+  checkConforming(data, source_name, mesh);
   buildSurfaceGroups(data, index, source_name, mesh);
   detail::finishMesh(mesh, source_name);
   return mesh;

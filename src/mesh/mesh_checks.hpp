@@ -14,6 +14,18 @@
 
 namespace stc::mesh_checks {
 
+/// Range of the mean element measure (area or volume) checked below: a measure is a product of d
+/// coordinate differences, computed reliably far from double's limits (2.2e-308, 1.8e308) only.
+inline constexpr double kSmallestMeasure = 1e-200;
+inline constexpr double kLargestMeasure = 1e200;
+
+/// `value` in the shortest of fixed or scientific notation (6 significant digits), for messages.
+inline std::string numberText(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 /// The group named `name`; throws InputError listing the groups there are.
 template <class Group>
 const Group& findGroup(const std::map<std::string, Group>& groups, const std::string& name) {
@@ -67,13 +79,22 @@ void checkElementMeasures(int num_elements, Measure measure, const std::string& 
   double mean = 0.0;
   for (int e = 0; e < num_elements; ++e) mean += std::abs(measure(e));
   mean /= num_elements;
+  // Coordinates near the ends of double's range give measures (∝ size^d) that overflow or underflow.
+  if (!(mean >= kSmallestMeasure && mean <= kLargestMeasure)) {
+    std::ostringstream msg;
+    msg << "the elements' mean " << what << " is "
+        << (std::isfinite(mean) ? numberText(mean) + ": outside [1e-200, 1e200], it is" : std::string("not finite:"))
+        << " not computed reliably in double precision; state the mesh in other units (coordinates between about "
+           "1e-60 and 1e60)";
+    throw InputError(msg.str());
+  }
   for (int e = 0; e < num_elements; ++e) {
     const double m = measure(e);
     if (!(std::abs(m) > 1e-12 * mean))
-      throw InputError("element " + std::to_string(e) + " is degenerate (" + what + " " + std::to_string(m) + ")");
+      throw InputError("element " + std::to_string(e) + " is degenerate (" + what + " " + numberText(m) + ")");
     if (m < 0)
-      throw InputError("element " + std::to_string(e) + " is inverted (" + inverted_what + " " +
-                       std::to_string(m) + ")");
+      throw InputError("element " + std::to_string(e) + " is inverted (" + inverted_what + " " + numberText(m) +
+                       ")");
   }
 }
 

@@ -28,12 +28,16 @@ void TetMesh::validate() const {
 
 void TetMesh::finalizeGroups() { mesh_checks::finalizeGroupNodes(groups, &SurfaceGroup::triangles); }
 
+std::array<int, 3> outwardFace(const TetMesh& mesh, int e, int f) {
+  const int* local = kTetFaces[f];
+  return {mesh.tets(local[0], e), mesh.tets(local[1], e), mesh.tets(local[2], e)};
+}
+
 std::vector<std::array<int, 3>> boundaryTriangles(const TetMesh& mesh) {
-  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
   std::map<std::array<int, 3>, std::array<int, 3>> once;  // sorted ids → oriented face
   for (int e = 0; e < mesh.numElements(); ++e)
-    for (const auto& face : kFaces) {
-      const std::array<int, 3> oriented{mesh.tets(face[0], e), mesh.tets(face[1], e), mesh.tets(face[2], e)};
+    for (int f = 0; f < 4; ++f) {
+      const std::array<int, 3> oriented = outwardFace(mesh, e, f);
       std::array<int, 3> key = oriented;
       std::sort(key.begin(), key.end());
       auto [it, inserted] = once.emplace(key, oriented);

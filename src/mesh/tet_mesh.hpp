@@ -38,9 +38,14 @@ struct TetMesh {
   void finalizeGroups();
 };
 
-/// The faces that belong to exactly one element, each oriented outward (counter-clockwise seen
-/// from outside): for a positive tetrahedron (0, 1, 2, 3) these are (1, 2, 3), (0, 3, 2),
-/// (0, 1, 3) and (0, 2, 1).
+/// The faces of a positive tetrahedron (0, 1, 2, 3), each oriented outward (counter-clockwise seen
+/// from outside): local node numbers.
+inline constexpr int kTetFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+/// Face `f` (0–3) of element `e`, oriented outward (kTetFaces), as mesh node ids.
+std::array<int, 3> outwardFace(const TetMesh& mesh, int e, int f);
+
+/// The faces that belong to exactly one element, each oriented outward (kTetFaces).
 std::vector<std::array<int, 3>> boundaryTriangles(const TetMesh& mesh);
 
 }  // namespace stc

@@ -13,6 +13,7 @@
 #include "stcontact/mesh/half_ball.hpp"
 #include "stcontact/mesh/half_disc.hpp"
 #include "stcontact/mesh/half_disc_slab.hpp"
+#include "stcontact/problem/representable_scales.hpp"
 #include "stcontact/problem/rigid_motions.hpp"
 #include "stcontact/problem/size_estimate.hpp"
 
@@ -236,6 +237,7 @@ Problem buildProblem(const Scene& scene) {
         },
         p.body);
   });
+  withContext(scene, "", [&] { requireRepresentableScales(scene, p); });
   const double size = bodySize(scene, p);
   p.length_scale = scene.contact.length_scale.value_or(size);
   withContext(scene, "", [&] { requireMeaningfulSearchDirection(scene, size, p.length_scale); });

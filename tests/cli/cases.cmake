@@ -111,6 +111,10 @@ set(stc_refusals
   "refuse_arc_nodes_overflow|the problem does not fit in memory: mesh\\.arc_nodes = 2147483647|${seed}|--set|mesh.arc_nodes=2147483647"
   "refuse_steps_huge|does not fit in memory: .*time\\.steps = 100000000|${seed}|--set|time.steps=100000000"
   "bad_threads_huge|--threads: thread count 2147483647: must be in \\[1, [0-9]+\\]|solve|${seed}|${small_fields}|--threads|2147483647"
+  "refuse_young_overflow|key 'material\\.young': the stiffness matrix's largest entry .* is not finite|${seed}|--set|material.young=1e308"
+  "refuse_young_underflow|key 'material\\.young': .* outside \\[1e-150, 1e150\\]|${seed}|--set|material.young=1e-308"
+  "refuse_time_end_overflow|key 'time\\.end': instant t_2 = inf is not finite|${seed}|--set|time.end=1e308"
+  "refuse_radius_overflow|the elements' mean area is not finite: not computed reliably|${seed}|--set|mesh.radius=1e308"
   "refuse_length_scale_tiny|κ R / L = 40000 \\(κ = solver\\.search_scale = 4, L = contact\\.length_scale = 0\\.0001|${seed}|--set|contact.length_scale=1e-4")
 foreach(row IN LISTS stc_refusals)
   string(REPLACE "|" ";" fields "${row}")

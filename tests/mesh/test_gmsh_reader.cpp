@@ -189,6 +189,31 @@ TEST(GmshReader, RefusesUnsupportedElementTypeNamingIt) {
       << message;
 }
 
+TEST(GmshReader, RefusesARepeatedTriangleNamingBoth) {
+  EXPECT_EQ(errorOf(replaced(kSquare, "\n5 1 3 4\n", "\n5 1 2 3\n")),
+            "square.msh: line 48: triangle 5 repeats triangle 4 (the same three nodes)");
+}
+
+TEST(GmshReader, RefusesOverlappingTrianglesNamingTheirEdge) {
+  // Triangle 5 = (1, 2, 4) lies above the edge 1 → 2, as triangle 4 = (1, 2, 3) does.
+  EXPECT_EQ(errorOf(replaced(kSquare, "\n5 1 3 4\n", "\n5 1 2 4\n")),
+            "square.msh: line 48: triangle 5 overlaps triangle 4 (both lie on the same side of their edge from "
+            "node 1 to node 2)");
+}
+
+TEST(GmshReader, RefusesABoundaryElementInsideTheBody) {
+  // The diagonal 1–3, which triangles 4 and 5 share, given to "top" (3D refuses the same case).
+  EXPECT_EQ(errorOf(replaced(kSquare, "\n3 3 4\n", "\n3 1 3\n")),
+            "square.msh: line 45: element 3 of boundary 'top' lies inside the body (two triangles share it): a "
+            "boundary group holds edges of the body's boundary only");
+}
+
+TEST(GmshReader, RefusesAnEdgeRepeatedInAGroup) {
+  const std::string twice = replaced(replaced(kSquare, "4 5 1 5\n", "4 6 1 6\n"), "1 1 1 1\n2 1 2\n",
+                                     "1 1 1 2\n2 1 2\n6 2 1\n");
+  EXPECT_EQ(errorOf(twice), "square.msh: line 44: element 6 of boundary 'bottom' repeats an edge already in it");
+}
+
 TEST(GmshReader, RefusesBoundaryEdgeOnNodeNoTriangleUses) {
   const std::string message = errorOf(replaced(kSquare, "\n3 3 4\n", "\n3 3 9\n"));
   EXPECT_NE(message.find("uses node 9, which no triangle uses"), std::string::npos) << message;

@@ -83,6 +83,22 @@ TEST(GmshReader3d, RefusesABoundaryTriangleThatIsNotABoundaryFace) {
             "cube.msh: line 39: triangle 1 of boundary 'bottom' is not a boundary face of the tetrahedra");
 }
 
+TEST(GmshReader3d, RefusesARepeatedTetrahedronNamingBoth) {
+  EXPECT_EQ(error3d(replaced(cubeText(), "\n6 1 2 6 8\n", "\n6 1 2 4 8\n")),
+            "cube.msh: line 46: tetrahedron 6 repeats tetrahedron 5 (the same four nodes)");
+}
+
+TEST(GmshReader3d, RefusesOverlappingTetrahedra) {
+  // Tetrahedron 6 = (1, 2, 4, 6) lies above the face (1, 2, 4) on z = 0, as tetrahedron 5 does.
+  EXPECT_EQ(error3d(replaced(cubeText(), "\n6 1 2 6 8\n", "\n6 1 2 4 6\n")),
+            "cube.msh: line 46: tetrahedron 6 overlaps tetrahedron 5 (both lie on the same side of a face they share)");
+}
+
+TEST(GmshReader3d, RefusesAFaceRepeatedInAGroup) {
+  EXPECT_EQ(error3d(replaced(cubeText(), "\n2 1 3 4\n", "\n2 1 2 4\n")),
+            "cube.msh: line 40: triangle 2 of boundary 'bottom' repeats a face already in it");
+}
+
 TEST(GmshReader3d, RefusesOtherElementTypesNamingThem) {
   const std::string message = error3d(replaced(cubeText(), "3 1 4 6\n5 1 2 4 8", "3 1 5 6\n5 1 2 4 8"));
   EXPECT_NE(message.find("element type 5 (8-node hexahedron) is not supported: the reader takes 4-node tetrahedra"),

@@ -1,0 +1,85 @@
+#include "stcontact/problem/representable_scales.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "stcontact/core/input_error.hpp"
+
+namespace stc {
+namespace {
+
+double largestMagnitude(const Eigen::Ref<const Eigen::VectorXd>& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
+
+double largestMagnitude(const std::vector<double>& v) {
+  return largestMagnitude(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
+}
+
+double largestEntry(const Eigen::SparseMatrix<double>& K) {
+  return largestMagnitude(Eigen::Map<const Eigen::VectorXd>(K.valuePtr(), K.nonZeros()));
+}
+
+[[noreturn]] void refuse(const std::string& key, const std::string& what, double value, const std::string& rule) {
+  std::ostringstream msg;
+  msg << "key '" << key << "': " << what << " is ";
+  if (std::isfinite(value)) msg << value << ", " << rule;
+  else msg << "not finite";
+  msg << ": energies and the error indicator square it, and a double holds magnitudes in [2.2e-308, 1.8e308] only; "
+         "state the scene in other units (e.g. MPa and mm instead of Pa and m)";
+  throw InputError(msg.str());
+}
+
+/// A scale that may be zero but must not exceed kLargestScale (NaN fails too).
+void requireBelowLargest(const std::string& key, const std::string& what, double value) {
+  if (!(value <= kLargestScale)) refuse(key, what, value, "above 1e150");
+}
+
+void requireIncreasingInstants(const std::vector<double>& times) {
+  for (std::size_t k = 0; k < times.size(); ++k)
+    if (!std::isfinite(times[k]) || (k > 0 && !(times[k] > times[k - 1]))) {
+      std::ostringstream msg;
+      msg << "key 'time.end': instant t_" << k << " = " << times[k]
+          << (std::isfinite(times[k]) ? " does not follow t_" + std::to_string(k - 1) : " is not finite")
+          << " (t_k = time.end · k / (time.steps − 1) in double precision): choose a smaller time.end";
+      throw InputError(msg.str());
+    }
+}
+
+void requireStiffnessScale(const Eigen::SparseMatrix<double>& K) {
+  const double largest = largestEntry(K);
+  if (!(largest >= kSmallestScale && largest <= kLargestScale))
+    refuse("material.young", "the stiffness matrix's largest entry (∝ young · element size^(d−2))", largest,
+           "outside [1e-150, 1e150]");
+}
+
+// Dirichlet entries: their displacements and the forces −K_fD e_D u_d(t) they apply; loads: their forces.
+void requireLoadScales(const Scene& scene, const Problem& p) {
+  for (std::size_t j = 0; j < p.loads.size(); ++j) {
+    const SeparatedLoad& load = p.loads[j];
+    const bool dirichlet = j < scene.dirichlet.size();
+    const std::string key = dirichlet ? "dirichlet[" + std::to_string(j) + "].values"
+                                      : "load[" + std::to_string(j - scene.dirichlet.size()) + "].values";
+    const double value = largestMagnitude(load.values);
+    if (dirichlet) requireBelowLargest(key, "the largest prescribed displacement", value);
+    requireBelowLargest(key, dirichlet ? "the force it applies (max |K_fD| · max |u_d|)" : "the largest nodal force",
+                        largestMagnitude(load.free_force) * value);
+  }
+}
+
+void requireGapScale(const Problem& p) {
+  const double gap = largestMagnitude(p.contact.initial_gap);
+  requireBelowLargest("obstacle.point", "the largest initial gap", gap);
+  requireBelowLargest("obstacle.point", "the force of the largest initial gap (max |K| · max |g0|)",
+                      largestEntry(p.stiffness) * gap);
+}
+
+}  // namespace
+
+void requireRepresentableScales(const Scene& scene, const Problem& problem) {
+  requireIncreasingInstants(problem.times);
+  requireStiffnessScale(problem.stiffness);
+  requireLoadScales(scene, problem);
+  requireGapScale(problem);
+}
+
+}  // namespace stc
