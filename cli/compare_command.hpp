@@ -16,7 +16,7 @@ namespace stc::cli {
 
 struct CompareArgs {
   std::string scene;
-  std::string solvers;                 ///< comma-separated; empty: every available strategy
+  std::optional<std::string> solvers;  ///< comma-separated; absent: every available strategy
   std::optional<std::string> out;      ///< default results/<scene name>/compare
   int repeats = 3;                     ///< timed runs per strategy (medians over them)
   std::vector<std::string> overrides;  ///< --set section.key=value

@@ -13,7 +13,7 @@ namespace stc::cli {
 
 struct ScalingArgs {
   std::string scene;
-  std::string solvers;                        ///< comma-separated; empty: every available strategy
+  std::optional<std::string> solvers;         ///< comma-separated; absent: every available strategy
   std::optional<std::string> out;             ///< default results/<scene name>/scaling
   int repeats = 3;                            ///< timed runs per strategy and size (medians over them)
   /// Mesh series, at the scene's instants: --arc-nodes 101,201,... for half_disc and half_disc_slab

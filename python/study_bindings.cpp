@@ -199,7 +199,8 @@ py::dict compare(const SceneHandle& handle, const CompareOptions& o) {
   if (o.repeats < 1) throw InputError("--repeats must be >= 1");
   const SceneHandle run = handle.withOverrides(o.sets);
   Scene scene = run.scene();
-  const std::vector<Strategy> solvers = solverList(joined(o.solvers, ","));
+  const std::vector<Strategy> solvers =
+      solverList(o.solvers.empty() ? std::nullopt : std::optional<std::string>(joined(o.solvers, ",")));
   if (o.tolerance) {
     if (!(*o.tolerance > 0.0)) throw InputError("--tol must be > 0");
     scene.solver.setTolerance(*o.tolerance);

@@ -176,12 +176,15 @@ StrategyMeasurement measureStrategy(Strategy strategy, const CompareContext& c) 
 // Split here rather than by CLI11's ->delimiter(','): CLI11 2.1.2 (Debian 12) drops empty items, so
 // "--solvers latin,,incremental" would pass as two names instead of the documented refusal
 // "--solvers: empty name" (docs/compare.md; the ctest case cli.compare_empty_solver_name).
-std::vector<Strategy> solverList(const std::string& list) {
+std::vector<Strategy> solverList(const std::optional<std::string>& given) {
   std::vector<Strategy> strategies;
-  if (trimmed(list).empty()) {
+  if (!given) {
     for (const auto& [name, strategy] : kStrategies) strategies.push_back(strategy);
     return strategies;
   }
+  const std::string& list = *given;
+  if (trimmed(list).empty())
+    throw InputError("--solvers: the list is empty (leave the option out to run every strategy)");
   std::stringstream items(list);
   std::string item;
   while (std::getline(items, item, ',')) {

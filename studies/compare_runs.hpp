@@ -37,9 +37,9 @@ struct CompareContext {
   IterationCallback keep_going = {};
 };
 
-/// The comma-separated strategy names of a comparison (`--solvers`, Python's solvers=; empty:
-/// every strategy); InputError for an empty, unknown, unavailable or repeated name.
-std::vector<Strategy> solverList(const std::string& list);
+/// The comma-separated strategy names of a comparison (`--solvers`, Python's solvers=; absent:
+/// every strategy); InputError for an empty list or an empty, unknown, unavailable or repeated name.
+std::vector<Strategy> solverList(const std::optional<std::string>& list);
 
 /// The comparison's description before its runs: scene, sizes, command, machine and build.
 Comparison describeComparison(const std::string& scene_file, const std::string& command, const Scene& scene,

@@ -284,13 +284,15 @@ class ZoneRounds {
   }
 
   /// The summary of all rounds: their history, counts and time, and the stage that says what they did
-  /// (`rounds`, the last zone's `nodes`). A converged solve's reason counts the iterations of all.
+  /// (`rounds`, the last zone's `nodes`). A solve converged on its estimate counts the iterations of all
+  /// in its reason (one certified without contact keeps the certificate's reason).
   void finish(SolveSummary& summary, const std::string& rounds, int nodes) {
     summary.history = std::move(history_);
     summary.iterations = offsets_.iterations;
     summary.relaxations = offsets_.relaxations;
     summary.wall_s = clockOffset(0.0);
-    if (summary.converged() && !summary.history.empty())
+    if (summary.converged() && !summary.history.empty() &&
+        summary.history.back().error_estimate <= options_.fas.stop.tolerance)
       summary.reason = convergedReason(summary.history.back(), options_.fas.stop.tolerance);
     SolveStage stage{SolveStage::Kind::ContactZone, "solved on " + rounds, 0, 0, 0.0, nodes, rounds_};
     if (!from_.zone_origin.empty()) stage.description += " (" + from_.zone_origin + ")";

@@ -22,6 +22,8 @@ class EquilibriumEnergy {
 
   /// E = Σ_k u_kᵀ K u_k of the equilibrated iterate s.
   double operator()(const InterfaceHistory& s) const;
+  /// The problem whose iterates it measures (its contact interface: the rows of the iterates).
+  const Problem& problem() const { return problem_; }
   /// Sparse solves spent at set-up.
   int sparseSolves() const { return static_cast<int>(load_vectors_.cols()); }
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "stcontact/solver/contact_free_certificate.hpp"
+
 namespace stc {
 
 std::string convergedReason(const IterationRecord& last, double tolerance) {
@@ -48,7 +50,8 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
   r.relaxations = relaxations;
   r.indicator = indicator;
   if (!summary_.history.empty() && rank != summary_.history.back().rank) rank_changed_ = r.iteration;
-  r.error_estimate = energy_ ? estimate(s, indicator) : indicator;
+  const std::optional<double> energy = energy_ ? std::optional<double>((*energy_)(s)) : std::nullopt;
+  r.error_estimate = energy ? estimate(s, indicator, *energy) : indicator;
   r.error = measureError(lambda);
   r.rank = rank;
   r.sparse_solves = static_cast<int>(sparse_solves);
@@ -56,6 +59,9 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
   summary_.history.push_back(r);
   if (!std::isfinite(indicator) || !lambda.allFinite())
     return stop(Termination::NumericalIssue, "NaN or Inf in the iterate at iteration " + std::to_string(r.iteration));
+  if (energy)
+    if (auto reason = contactFreeSolution(energy_->problem().contact, s, *energy, rule_.stop.tolerance))
+      return stop(Termination::Converged, *reason);
   if (r.error_estimate <= rule_.stop.tolerance && confirmed(r))
     return stop(Termination::Converged, convergedReason(r, rule_.stop.tolerance));
   if (r.iteration == 1 || indicator < 0.99 * best_indicator_) {
@@ -88,10 +94,13 @@ bool IterationMonitor::confirmed(const IterationRecord& r) const {
   return h.size() >= 2 && h[h.size() - 2].error_estimate <= rule_.stop.tolerance;
 }
 
-double IterationMonitor::estimate(const InterfaceHistory& s, double indicator) {
-  const double energy = (*energy_)(s);
-  return rule_.estimate_kind == EstimateKind::CalibratedIndicator ? calibrated_.record(s, indicator, energy)
-                                                                  : estimator_.record(s, energy);
+// The estimate of the relative error; +∞ when the iterate stores no strain energy (a rigid motion:
+// the relative error is 0/0 and the estimate rounding noise; contact_free_certificate.hpp).
+double IterationMonitor::estimate(const InterfaceHistory& s, double indicator, double energy) {
+  const double estimate = rule_.estimate_kind == EstimateKind::CalibratedIndicator
+                              ? calibrated_.record(s, indicator, energy)
+                              : estimator_.record(s, energy);
+  return storesNoStrainEnergy(energy_->problem().contact, s, energy) ? INFINITY : estimate;
 }
 
 bool IterationMonitor::stop(Termination termination, std::string reason) {

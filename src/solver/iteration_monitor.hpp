@@ -1,8 +1,9 @@
 #pragma once
 // Shared bookkeeping of the iterative solvers: records each iteration (indicator, error estimate,
 // true error when a reference is known, rank, sparse solves, wall time), and decides when to stop:
-// converged (the error estimate of src/solver/error_estimate.hpp at most the tolerance), iteration
-// limit, stagnation, NaN/Inf (numerical issue) or the user's callback.
+// converged (the error estimate of src/solver/error_estimate.hpp at most the tolerance, or the
+// iterate certified as the solution without contact, src/solver/contact_free_certificate.hpp),
+// iteration limit, stagnation, NaN/Inf (numerical issue) or the user's callback.
 #include <Eigen/Core>
 #include <chrono>
 #include <optional>
@@ -66,7 +67,7 @@ class IterationMonitor {
 
  private:
   bool stop(Termination termination, std::string reason);
-  double estimate(const InterfaceHistory& s, double indicator);  ///< by rule_.estimate_kind
+  double estimate(const InterfaceHistory& s, double indicator, double energy);  ///< by rule_.estimate_kind
   std::optional<double> measureError(const Eigen::MatrixXd& lambda);  // and adds its time to measure_s_
   bool confirmed(const IterationRecord& r) const;  // an estimate below the tolerance stands (a map change)
 

@@ -155,6 +155,12 @@ add_test(NAME cli.rerun_replaces_the_folder
            --solver latin --out ${refused}/rerun && [ -f ${refused}/rerun/notes.txt ]")
 set_tests_properties(cli.rerun_replaces_the_folder PROPERTIES LABELS cli)
 
+# An empty --solvers list is an error (leaving the option out runs every strategy), before any folder.
+add_test(NAME cli.bad_compare_solvers_empty
+         COMMAND bash -c "bash ${expect} --absent ${refused}/solvers_empty 1 '--solvers: the list is empty' \
+           ${cli} compare ${seed} --solvers '' --out ${refused}/solvers_empty")
+set_tests_properties(cli.bad_compare_solvers_empty PROPERTIES LABELS cli)
+
 # Unwritable output folders: refused before the solve, and nothing created or changed.
 stc_cli_test(refuse_out_in_proc 1 "cannot create output folder '/proc/stcontact-out'" solve ${seed} ${small}
              --solver latin --out /proc/stcontact-out)
