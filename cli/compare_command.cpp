@@ -3,6 +3,7 @@
 // error. Writes, each atomically, into --out: work_precision.csv, summary.csv, summary.md and, through
 // gnuplot, three PNG plots. docs/compare.md describes every file and how time and memory are measured.
 #include "stcontact/cli/compare_command.hpp"
+#include "stcontact/cli/stopping_help.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -50,7 +51,7 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args) {
   cmd->add_option("--out", args.out, "report folder (default results/<scene name>/compare)");
   cmd->add_option("--repeats", args.repeats, "timed runs per strategy, medians over them")->capture_default_str();
   cmd->add_option("--set", args.overrides, "override a scene value: section.key=value")->take_all();
-  cmd->add_option("--tol", args.tolerance, "tolerance on the error estimate (default: the scene's)");
+  cmd->add_option("--tol", args.tolerance, toleranceHelp());
   cmd->add_flag("--quiet", args.quiet, "no progress, no final report");
   return cmd;
 }

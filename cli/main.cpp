@@ -11,7 +11,9 @@
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/compare_command.hpp"
 #include "stcontact/cli/scaling_command.hpp"
+#include "stcontact/cli/stopping_help.hpp"
 #include "stcontact/cli/sweep_command.hpp"
+#include "stcontact/cli/terminal_progress.hpp"
 #include "stcontact/cli/threads_option.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/interruption.hpp"
@@ -75,13 +77,14 @@ int main(int argc, char** argv) {
                         "latin | latin-pgd | fas-aposteriori | fas-apriori | incremental (default: the scene's "
                         "[solver] name, else fas-apriori)");
   solve_cmd->add_option("--out", solve.out, "output folder (default results/<scene name>/<solver>)");
-  solve_cmd->add_option("--tol", solve.tolerance, "tolerance on the error estimate");
-  solve_cmd->add_option("--max-iterations", solve.max_iterations, "iteration limit");
+  solve_cmd->add_option("--tol", solve.tolerance, stc::cli::toleranceHelp());
+  solve_cmd->add_option("--max-iterations", solve.max_iterations, stc::cli::maxIterationsHelp());
   solve_cmd->add_option("--set", solve.overrides, "override a scene value: section.key=value")->take_all();
   solve_cmd->add_flag("--quiet", solve.quiet, "no progress, no final report");
   solve_cmd->add_flag("--no-reference", solve.no_reference,
                       "do not compute the incremental reference (no true error in history.csv)");
   stc::cli::addThreadsOption(*solve_cmd);
+  stc::cli::addProgressIntervalOption(*solve_cmd);
 
   stc::cli::SvdArgs svd;
   auto* svd_cmd = app.add_subcommand("svd", "space-time SVD of the solution in the energy product (verification)");
@@ -96,13 +99,16 @@ int main(int argc, char** argv) {
   stc::cli::CompareArgs compare;
   auto* compare_cmd = stc::cli::addCompareCommand(app, compare);
   stc::cli::addThreadsOption(*compare_cmd);
+  stc::cli::addProgressIntervalOption(*compare_cmd);
 
   stc::cli::SweepArgs sweep;
   auto* sweep_cmd = stc::cli::addSweepCommand(app, sweep);
   stc::cli::addThreadsOption(*sweep_cmd);
+  stc::cli::addProgressIntervalOption(*sweep_cmd);
   stc::cli::ScalingArgs scaling;
   auto* scaling_cmd = stc::cli::addScalingCommand(app, scaling);
   stc::cli::addThreadsOption(*scaling_cmd);
+  stc::cli::addProgressIntervalOption(*scaling_cmd);
 
   try {
     app.parse(argc, argv);
@@ -110,8 +116,8 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     return fail(1, std::string(e.what()) + " (see stcontact --help)");
-  } catch (const stc::InputError& e) {  // an option's own check (--threads)
-    return fail(1, std::string("--threads: ") + e.what());
+  } catch (const stc::InputError& e) {  // an option's own check (--threads, --progress-interval)
+    return fail(1, e.what());
   }
   try {
     stc::threadCount();  // a bad STC_THREADS is refused before anything is read or written

@@ -4,6 +4,7 @@
 // exponents, crossover against incremental and memory (studies/scaling_study.hpp). Writes
 // scaling.csv, summary.md, sizes/<size>/ and, through gnuplot, the plots. docs/scaling.md.
 #include "stcontact/cli/scaling_command.hpp"
+#include "stcontact/cli/stopping_help.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -159,10 +160,10 @@ CLI::App* addScalingCommand(CLI::App& app, ScalingArgs& a) {
       ->capture_default_str();
   cmd->add_option("--target-error", a.target_error, "true error whose time is measured")->capture_default_str();
   cmd->add_option("--tol", a.tolerance, "tolerance on the error estimate")->capture_default_str();
-  cmd->add_option("--max-iterations", a.max_iterations, "iteration limit (default: the scene's)");
+  cmd->add_option("--max-iterations", a.max_iterations, maxIterationsHelp());
   cmd->add_option("--time-cap", a.time_cap_s,
                   "seconds on the solver's clock (the true-error measure left out) after which an error run "
-                  "stops: \"not reached\"");
+                  "stops: \"not reached\" (default: none)");
   cmd->add_option("--set", a.overrides, "override a scene value for every size: section.key=value")->take_all();
   cmd->add_flag("--quiet", a.quiet, "no progress, no final report");
   return cmd;

@@ -2,6 +2,7 @@
 // first (a bad range, an unknown key or a value out of range is refused before anything is written),
 // then each value is solved warm (from the previous value's solution) and cold; sweep.csv, summary.md
 // and, through gnuplot, sweep.png go into --out. docs/sweep.md describes every file.
+#include "stcontact/cli/stopping_help.hpp"
 #include "stcontact/cli/sweep_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -111,7 +112,7 @@ CLI::App* addSweepCommand(CLI::App& app, SweepArgs& args) {
   cmd->add_option("--solver", args.solver, "strategy (default: the scene's [solver] name, else fas-apriori)");
   cmd->add_option("--set", args.overrides, "override a scene value for every solve: section.key=value")->take_all();
   cmd->add_option("--out", args.out, "report folder (default results/<scene name>/sweep_<KEY>)");
-  cmd->add_option("--tol", args.tolerance, "tolerance on the error estimate (default: the scene's)");
+  cmd->add_option("--tol", args.tolerance, toleranceHelp());
   cmd->add_flag("--no-independent", args.no_independent, "warm solves only: no cold solve of each value");
   cmd->add_flag("--write-solutions", args.write_solutions, "write each value's solution into --out/value_<VALUE>/");
   cmd->add_flag("--quiet", args.quiet, "no progress, no per-value lines");

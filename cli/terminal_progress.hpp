@@ -1,13 +1,22 @@
 #pragma once
-// The program's progress (studies/progress.hpp): a line redrawn on a terminal (stderr is a tty), at
-// most every 0.2 s; never with --quiet. Notes (one line per strategy or sweep value) go to stdout
+// The program's progress (studies/progress.hpp), on standard error: on a terminal, one line redrawn
+// at most every 0.2 s; otherwise (a batch log, a pipe) a plain line at most every
+// --progress-interval seconds (default 5; 0: none), so that a long run's log shows it is alive and
+// how far it is. Never with --quiet. Notes (one line per strategy or sweep value) go to stdout
 // unless --quiet.
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <string>
 
 #include "stcontact/studies/progress.hpp"
 
 namespace stc::cli {
+
+/// Seconds between plain progress lines when standard error is not a terminal.
+inline constexpr double kDefaultLogInterval = 5.0;
+
+/// Adds --progress-interval S to `command`; InputError for a negative or non-finite S.
+CLI::Option* addProgressIntervalOption(CLI::App& command);
 
 class TerminalProgress : public ProgressReporter {
  public:
@@ -17,6 +26,9 @@ class TerminalProgress : public ProgressReporter {
   void note(const std::string& line) override;
 
  private:
+  /// The record's fields: iteration, indicator, estimate, true error, rank, seconds.
+  std::string describe(const IterationRecord& r) const;
+
   bool quiet_;
   bool tty_;
   std::string label_;

@@ -1,8 +1,18 @@
 # Each case: stc_cli_test(NAME EXIT_CODE PATTERN ARGS...). Small settings keep them fast.
 set(seed ${scenes}/hemicylinder.toml)
 set(small --set mesh.arc_nodes=21 --set time.steps=21)
+list(JOIN small " " small_text)  # the same, inside a bash -c command
 
 stc_cli_test(help 0 "Usage" --help)
+# Every command's --help works and states the defaults a user would otherwise guess.
+foreach(command check solve compare svd sweep scaling)
+  stc_cli_test(help_${command} 0 "Usage" ${command} --help)
+endforeach()
+stc_cli_test(help_solve_defaults 0 "--tol FLOAT +tolerance on the error estimate \\(default: the scene's solver.tolerance, else 1e-06\\)" solve --help)
+foreach(program compare_bases fas_aposteriori_study ex1 ex2 ex3 ex4 ex5)  # examples/ is added after tests/
+  add_test(NAME cli.help_program_${program} COMMAND bash ${expect} 0 "Usage" $<TARGET_FILE:${program}> --help)
+  set_tests_properties(cli.help_program_${program} PROPERTIES LABELS cli)
+endforeach()
 stc_cli_test(version 0 "stcontact 0\\.3\\.0" --version)
 stc_cli_test(no_command 1 "subcommand" )
 stc_cli_test(check_seed_sizes 0 "dofs +1142 \\(1088 free, 54 prescribed\\)" check ${seed})
@@ -146,7 +156,6 @@ set_tests_properties(cli.interrupted_runs_leave_whole_folders PROPERTIES LABELS 
 
 # A re-run into a folder replaces it as a whole: no frame of a longer series stays behind; a folder
 # that holds other files is refused, not replaced.
-list(JOIN small " " small_text)
 add_test(NAME cli.rerun_replaces_the_folder
          COMMAND bash -c "rm -rf ${refused}/rerun && ${cli} solve ${seed} ${small_text} --solver latin --out ${refused}/rerun --quiet \
            && ${cli} solve ${seed} ${small_text} --solver latin --out ${refused}/rerun --quiet --set output.vtu_stride=10 \
@@ -154,6 +163,20 @@ add_test(NAME cli.rerun_replaces_the_folder
            ${refused}/rerun/summary.json && bash ${expect} 1 \"holds files that are not a run's\" ${cli} solve ${seed} ${small_text} \
            --solver latin --out ${refused}/rerun && [ -f ${refused}/rerun/notes.txt ]")
 set_tests_properties(cli.rerun_replaces_the_folder PROPERTIES LABELS cli)
+
+# Progress in batch logs (docs/interface.md, "Progress and messages"): with standard error a file,
+# plain "progress:" lines (no carriage return), none with --progress-interval 0 or --quiet.
+add_test(NAME cli.progress_lines_in_a_log
+         COMMAND bash -c "set -e; d=${out}/progress_log; rm -rf $d; mkdir -p $d \
+           && ${cli} solve ${seed} ${small_text} --solver latin --out $d/run --progress-interval 0.001 2>$d/log >/dev/null \
+           && grep -Eq '^progress: latin: iteration [0-9]+  indicator [0-9.e+-]+  estimate [0-9.e+-]+' $d/log \
+           && ! grep -q $'\\r' $d/log \
+           && ${cli} solve ${seed} ${small_text} --solver latin --out $d/run --progress-interval 0 2>$d/off >/dev/null \
+           && ${cli} solve ${seed} ${small_text} --solver latin --out $d/run --quiet --progress-interval 0.001 2>$d/quiet \
+           && ! grep -q progress: $d/off $d/quiet")
+set_tests_properties(cli.progress_lines_in_a_log PROPERTIES LABELS cli)
+stc_cli_test(bad_progress_interval 1 "--progress-interval: -1 seconds: must be >= 0" solve ${seed}
+             --progress-interval -1)
 
 # An empty --solvers list is an error (leaving the option out runs every strategy), before any folder.
 add_test(NAME cli.bad_compare_solvers_empty
