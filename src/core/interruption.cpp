@@ -18,6 +18,8 @@ void requestInterruption(int signal) noexcept {
   requested.compare_exchange_strong(none, signal);  // the first request is the one reported
 }
 
+void clearInterruption() noexcept { requested.store(-1); }
+
 bool interruptionRequested() noexcept { return requested.load() >= 0; }
 
 int interruptionSignal() noexcept { return requested.load() > 0 ? requested.load() : 0; }

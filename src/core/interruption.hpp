@@ -20,6 +20,8 @@ void throwIfInterrupted();
 
 /// Records a request to stop (async-signal-safe); `signal` is 0 for a caller's request.
 void requestInterruption(int signal) noexcept;
+/// Forgets a request (a caller that handled it and goes on: the next runs are not stopped).
+void clearInterruption() noexcept;
 /// Whether a stop was requested.
 bool interruptionRequested() noexcept;
 /// The signal of the request (0: a caller's, or none).
