@@ -140,6 +140,12 @@ foreach(row IN LISTS stc_refusals)
   endif()
 endforeach()
 
+# svd checks --modes before it creates its folder.
+add_test(NAME cli.bad_svd_modes_zero
+         COMMAND bash ${expect} --absent ${refused}/svd_modes_zero 1 "--modes = 0 must be in \\[1, 20\\]"
+                 ${cli} svd ${seed} ${small} --modes 0 --out ${refused}/svd_modes_zero)
+set_tests_properties(cli.bad_svd_modes_zero PROPERTIES LABELS cli)
+
 # An address-space limit below any run's need is refused at once (OpenBLAS 0.3.21 spun forever
 # under ulimit -v 100-200 MB), and nothing is written.
 add_test(NAME cli.refuse_low_address_space

@@ -27,7 +27,8 @@ def test_bad_files_give_the_programs_message(cli, name):
 
 @pytest.mark.parametrize("override", ["material.poisson=0.5", "material.youngs=1.0", "contact.boundary=rim",
                                       "obstacle.point=[0.0, -0.99]", "time.steps=1", "solver.name=fast",
-                                      "dirichlet[2].values=[0.0]", "time.end=1e308", "material.young=1e308"])
+                                      "dirichlet[2].values=[0.0]", "time.end=1e308", "material.young=1e308",
+                                      "mesh.arc_nodes=2147483647", "time.steps=100000000"])
 def test_bad_overrides_give_the_programs_message(cli, override):
     expected = cli_error(cli, "check", SEED_SCENE, "--set", override)
     with pytest.raises(ValueError) as raised:
