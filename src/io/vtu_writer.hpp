@@ -10,10 +10,10 @@
 // the arrays: vtu_arrays.hpp.
 //
 // The appended data holds the arrays in the reverse of their order in the XML (the cells' arrays
-// first, the first point field last). VTK reads them by offset in any order; meshio 5's raw reader
-// finds each array by the text of its offset while it rewrites the offsets of those it has read, and
-// with the two orders the same an array read earlier can take the place of a later one whose offset
-// happens to equal its new one.
+// first, the first point field last). VTK reads them by offset in any order; meshio's raw reader
+// (Debian 12's python3-meshio) finds each array by the text of its offset while it rewrites the
+// offsets of those it has read, and with the two orders the same an array read earlier can take the
+// place of a later one whose offset happens to equal its new one.
 //
 // The mesh is written in every frame. VTK's XML formats cannot refer to a geometry kept in another
 // file; VTKHDF keeps one mesh for a transient series but needs ParaView >= 5.12 (Debian 12 ships

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -179,7 +180,7 @@ TEST(VtuDocument, ArraysLieBackToBackAndFillTheAppendedData) {
   EXPECT_EQ(spans.back().second, iotest::appendedSize(document));
 }
 
-// Reverse order keeps meshio 5's raw reader, which finds arrays by the text of their offsets while it
+// Reverse order keeps meshio's raw reader, which finds arrays by the text of their offsets while it
 // rewrites them, from taking one array for another (src/io/vtu_writer.hpp).
 TEST(VtuDocument, AppendedDataHoldsTheArraysInReverseXmlOrder) {
   const std::string document = sampleDocument();
