@@ -33,6 +33,9 @@ stc_require(nlohmann_json_FOUND nlohmann-json3-dev "nlohmann-json")
 find_package(CLI11 QUIET)
 stc_require(CLI11_FOUND libcli11-dev "CLI11")
 
+find_package(ZLIB QUIET)
+stc_require(ZLIB_FOUND zlib1g-dev "zlib")
+
 find_package(Threads REQUIRED)
 
 if(STC_BUILD_TESTS)

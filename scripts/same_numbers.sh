@@ -33,6 +33,7 @@ normalise() {
     */summary.json) sed -E '/^  "(wall_s|version)":/d; s/[0-9.e+-]+ s\)/# s)/g' "$1" ;;
     *.csv) timed_columns , < "$1" ;;
     *.md|*.png|*.gp) echo "(not compared: times and figures)" ;;
+    *.vtu) cat "$1" ;;  # binary frames: compared byte for byte
     *) sed -E 's/[0-9.]+ s\)/# s)/g' "$1" ;;
   esac
 }

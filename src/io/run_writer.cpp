@@ -1,5 +1,6 @@
 #include "stcontact/io/run_writer.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -48,27 +49,43 @@ void contactFields(const Problem& problem, const SolveResult& result, const Cont
   }
 }
 
-// One VTU frame: displacement, contact force and state on the nodes; stress and von Mises on the
-// elements (σ_xx, σ_yy, σ_xy in 2D; the six components xx, yy, zz, yz, xz, xy in 3D).
+/// The symmetric tensor of `stress` in VTK's order xx, yy, zz, xy, yz, xz (vtu_writer.hpp): row k of
+/// the result is row rows[k] of `stress`, or 0 where rows[k] is −1.
+Eigen::MatrixXd inVtkOrder(const Eigen::Ref<const Eigen::MatrixXd>& stress, const std::array<int, 6>& rows) {
+  Eigen::MatrixXd tensor = Eigen::MatrixXd::Zero(6, stress.cols());
+  for (int k = 0; k < 6; ++k)
+    if (rows[k] >= 0) tensor.row(k) = stress.row(rows[k]);
+  return tensor;
+}
+
+// One VTU frame: displacement, contact force and state on the nodes; the stress tensor and von Mises
+// on the elements.
 void writeFrame(std::ostream& out, const Problem& problem, const VtuGrid& grid, const Eigen::VectorXd& u,
                 const Eigen::MatrixXd& force, const Eigen::MatrixXd& state) {
   const Eigen::MatrixXd displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), problem.dimension, problem.numNodes());
-  const std::vector<PointField> nodal{{"displacement", displacement}, {"contact_force", force}, {"contact_state", state}};
+  const std::vector<PointField> nodal{{"displacement", displacement},
+                                      {"contact_force", force},
+                                      {"contact_state", state, FieldKind::Code}};
+  const auto cellFields = [](const Eigen::MatrixXd& stress, const std::array<int, 6>& vtkRows) {
+    return std::vector<CellField>{{"stress", inVtkOrder(stress, vtkRows), FieldKind::SymmetricTensor},
+                                  {"von_mises", stress.bottomRows(1)}};
+  };
   const std::vector<CellField> cells = std::visit(
       Overloaded{[&](const TriMesh& m) {
-                   const auto stress = elementStresses(m, problem.material, problem.plane, u);  // xx, yy, xy, zz, VM
-                   return std::vector<CellField>{{"stress", stress.topRows(3)}, {"von_mises", stress.bottomRows(1)}};
+                   // rows σ_xx, σ_yy, σ_xy, σ_zz, von Mises (σ_zz = ν(σ_xx + σ_yy) in plane strain,
+                   // 0 in plane stress); σ_yz = σ_xz = 0
+                   return cellFields(elementStresses(m, problem.material, problem.plane, u), {0, 1, 3, 2, -1, -1});
                  },
                  [&](const TetMesh& m) {
-                   const auto stress = elementStresses(m, problem.material, u);  // six components, VM
-                   return std::vector<CellField>{{"stress", stress.topRows(6)}, {"von_mises", stress.bottomRows(1)}};
+                   // rows σ_xx, σ_yy, σ_zz, σ_yz, σ_xz, σ_xy, von Mises
+                   return cellFields(elementStresses(m, problem.material, u), {0, 1, 2, 5, 3, 4});
                  }},
       problem.body);
   grid.write(out, nodal, cells);
 }
 
-VtuGrid gridOf(const Problem& problem) {
-  return std::visit([](const auto& mesh) { return VtuGrid(mesh); }, problem.body);
+VtuGrid gridOf(const Problem& problem, VtuPrecision precision) {
+  return std::visit([precision](const auto& mesh) { return VtuGrid(mesh, precision); }, problem.body);
 }
 
 }  // namespace
@@ -110,11 +127,11 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
 }
 
 void writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
-                         int stride) {
+                         int stride, VtuPrecision precision) {
   ensureWritableDirectory(dir / "vtu");
   const SpdFactor factor(problem.stiffness_free, "K_ff");
   const ContactStateTable states(problem.contact, result.admissible());
-  const VtuGrid grid = gridOf(problem);
+  const VtuGrid grid = gridOf(problem, precision);
   const std::vector<int> steps = frameSteps(problem.numSteps(), stride);
   // The frames are independent: each thread solves with its own workspace and writes its own files.
   const int threads = threadCount();
@@ -148,9 +165,9 @@ void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, c
     file.commit();
   }
   writeFileAtomically(dir / "history.csv", historyCsv(result.summary));
-  // VTK's ASCII reader cannot read NaN: a run that broke down numerically gets no VTU series.
+  // The VTU writer refuses non-finite values: a run that broke down numerically gets no VTU series.
   if (output.vtu && result.interface.lambda.allFinite() && result.interface.v.allFinite())
-    writeSolutionSeries(dir, problem, result, output.vtu_stride);
+    writeSolutionSeries(dir, problem, result, output.vtu_stride, output.vtu_precision);
   writeFileAtomically(dir / "summary.json", summaryJson(problem, result.summary, info));  // last: marks a complete run
 }
 

@@ -24,9 +24,9 @@ std::string historyCsv(const SolveSummary& summary);
 /// summary.json.
 std::string summaryJson(const Problem& problem, const SolveSummary& summary, const RunInfo& info);
 
-/// solution.pvd + vtu/step_XXXXX.vtu: displacement, contact force and state (nodes), stress and
-/// von Mises stress (elements) at every `stride`-th instant and the last one.
+/// solution.pvd + vtu/step_XXXXX.vtu: displacement, contact force and state (nodes), stress tensor
+/// and von Mises stress (elements) at every `stride`-th instant and the last one.
 void writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
-                         int stride);
+                         int stride, VtuPrecision precision = VtuPrecision::Float32);
 
 }  // namespace stc

@@ -1,9 +1,8 @@
 #include "stcontact/io/vtu_writer.hpp"
 
+#include <bit>
 #include <charconv>
 #include <cmath>
-#include <limits>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -13,15 +12,9 @@
 namespace stc {
 namespace {
 
-/// Significant digits of floating-point values in .vtu files: a relative rounding of 5e-11, far
-/// below any solver tolerance and any visible difference, at about 60% of the size of the 17
-/// digits an exact round trip needs. The files are for viewing; exact numbers go to the CSV and
-/// JSON outputs.
-constexpr int kVtuDigits = 10;
-constexpr int kScalarsPerLine = 12;  ///< one-component arrays; larger tuples take a line each
 constexpr int kVtkTriangle = 5;
 constexpr int kVtkTetra = 10;
-constexpr const char* kDataIndent = "          ";  ///< the values, one level inside DataArray
+constexpr const char* kByteOrder = std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
 
 /// `text` with the five XML special characters replaced by entities, for attribute values.
 std::string escapeXml(std::string_view text) {
@@ -39,160 +32,128 @@ std::string escapeXml(std::string_view text) {
   return out;
 }
 
-[[noreturn]] void badField(const char* kind, const std::string& name, const std::string& rule) {
-  throw std::invalid_argument(std::string("VTU ") + kind + " field '" + name + "': " + rule);
+/// Where the data of each of `arrays` (in XML order) starts in the appended data, which holds them in
+/// reverse order.
+std::vector<std::size_t> reverseOffsets(const std::vector<const EncodedArray*>& arrays) {
+  std::vector<std::size_t> offsets(arrays.size());
+  std::size_t at = 0;
+  for (std::size_t i = arrays.size(); i-- > 0;) {
+    offsets[i] = at;
+    at += arrays[i]->blocks.size();
+  }
+  return offsets;
 }
 
-/// Checks names (non-empty, unique), sizes and finiteness of one kind of field.
+/// The DataArray element of `array`, its data `offset` bytes into the appended data.
+void arrayTag(TextBuffer& xml, const EncodedArray& array, std::size_t offset) {
+  xml.text("        <DataArray type=\"").text(array.type).text("\" Name=\"").text(escapeXml(array.name));
+  xml.text("\" NumberOfComponents=\"").integer(array.components).put('"');
+  for (std::size_t i = 0; i < array.componentNames.size(); ++i)
+    xml.text(" ComponentName").integer(static_cast<long long>(i)).text("=\"").text(array.componentNames[i]).put('"');
+  xml.text(" format=\"appended\" offset=\"").integer(static_cast<long long>(offset)).text("\"/>\n");
+}
+
+/// Opening tag of PointData/CellData: the first scalar, vector and symmetric tensor fields become the
+/// active ones.
 template <typename Field>
-void validateFields(const std::vector<Field>& fields, const char* kind, int columns,
-                    const char* columnName, int maxRows) {
-  std::set<std::string> names;
-  for (const Field& field : fields) {
-    const auto& values = field.values;
-    if (field.name.empty()) badField(kind, field.name, "the name is empty");
-    if (!names.insert(field.name).second) badField(kind, field.name, "the name is repeated");
-    if (values.rows() < 1 || values.rows() > maxRows)
-      badField(
-          kind, field.name,
-          std::to_string(values.rows()) + " components, expected 1 to " + std::to_string(maxRows));
-    if (values.cols() != columns)
-      badField(kind, field.name,
-               std::to_string(values.cols()) + " columns, the mesh has " + std::to_string(columns) +
-                   " " + columnName);
-    for (Eigen::Index j = 0; j < values.cols(); ++j)
-      if (!values.col(j).allFinite())
-        badField(kind, field.name, "non-finite value at column " + std::to_string(j));
-  }
-}
-
-/// A Float64 DataArray of `values` (rows = components, cols = tuples); rows beyond those of
-/// `values`, up to `components`, are written as 0.
-void writeFloatArray(TextBuffer& out, const std::string& name, const Eigen::Ref<const Eigen::MatrixXd>& values,
-                     Eigen::Index components) {
-  out.text("        <DataArray type=\"Float64\" Name=\"").text(escapeXml(name)).text("\" NumberOfComponents=\"")
-      .integer(components).text("\" format=\"ascii\">\n");
-  const Eigen::Index perLine = components == 1 ? kScalarsPerLine : 1;
-  for (Eigen::Index j = 0; j < values.cols(); ++j) {
-    out.text(j % perLine == 0 ? kDataIndent : " ");
-    for (Eigen::Index i = 0; i < components; ++i) {
-      if (i > 0) out.put(' ');
-      out.number(i < values.rows() ? values(i, j) : 0.0, kVtuDigits);
-    }
-    if ((j + 1) % perLine == 0 || j + 1 == values.cols()) out.put('\n');
-  }
-  out.text("        </DataArray>\n");
-}
-
-/// An integer DataArray of `count` values value(k), `perLine` to a line.
-template <typename ValueAt>
-void writeIntArray(TextBuffer& out, const char* type, const char* name, Eigen::Index count, Eigen::Index perLine,
-                   ValueAt value) {
-  out.text("        <DataArray type=\"").text(type).text("\" Name=\"").text(name).text("\" format=\"ascii\">\n");
-  for (Eigen::Index k = 0; k < count; ++k) {
-    out.text(k % perLine == 0 ? kDataIndent : " ").integer(value(k));
-    if ((k + 1) % perLine == 0 || k + 1 == count) out.put('\n');
-  }
-  out.text("        </DataArray>\n");
-}
-
-/// Opening tag of PointData/CellData; the first vector and scalar fields become the active ones.
-template <typename Field>
-void openData(TextBuffer& out, const char* tag, const std::vector<Field>& fields) {
-  out.text("      <").text(tag);
-  for (const Field& field : fields)
-    if (field.values.rows() == 1) {
-      out.text(" Scalars=\"").text(escapeXml(field.name)).put('"');
-      break;
-    }
-  if (std::string_view(tag) == "PointData")
+void openData(TextBuffer& xml, const char* tag, const std::vector<Field>& fields) {
+  const auto declare = [&](const char* attribute, auto isOne) {
     for (const Field& field : fields)
-      if (field.values.rows() >= 2) {
-        out.text(" Vectors=\"").text(escapeXml(field.name)).put('"');
-        break;
+      if (isOne(field)) {
+        xml.put(' ').text(attribute).text("=\"").text(escapeXml(field.name)).put('"');
+        return;
       }
-  out.text(">\n");
+  };
+  xml.text("      <").text(tag);
+  declare("Scalars", [](const Field& f) { return storedComponents(f.kind, f.values.rows()) == 1; });
+  declare("Vectors", [](const Field& f) { return f.kind == FieldKind::Real && f.values.rows() >= 2; });
+  declare("Tensors", [](const Field& f) { return f.kind == FieldKind::SymmetricTensor; });
+  xml.text(">\n");
 }
 
-/// Components written for a point field: plane vectors get z = 0 (Warp By Vector needs 3).
-Eigen::Index paddedComponents(Eigen::Index rows) { return rows == 2 ? 3 : rows; }
-
-/// Cells of one type, `cells` holding the node ids of each (one column per cell).
-template <typename Cells>
-void writeCells(TextBuffer& out, const Cells& cells, int vtkType) {
-  const Eigen::Index n = cells.cols(), k = cells.rows();
-  out.text("      <Cells>\n");
-  writeIntArray(out, "Int64", "connectivity", k * n, k, [&](Eigen::Index j) { return cells(j % k, j / k); });
-  writeIntArray(out, "Int64", "offsets", n, kScalarsPerLine, [k](Eigen::Index e) { return k * (e + 1); });
-  writeIntArray(out, "UInt8", "types", n, kScalarsPerLine, [vtkType](Eigen::Index) { return vtkType; });
-  out.text("      </Cells>\n");
-}
-
-/// The <Points> and <Cells> elements for points (2 or 3 rows; z = 0 when 2) and cells of one VTK type.
-template <typename Points, typename Cells>
-std::string geometryText(const Points& points, const Cells& cells, int vtkType) {
-  TextBuffer out;
-  out.text("      <Points>\n");
-  writeFloatArray(out, "Points", points, 3);
-  out.text("      </Points>\n");
-  writeCells(out, cells, vtkType);
-  return out.str();
+template <typename Field>
+void encodeFields(const std::vector<Field>& fields, VtuPrecision precision, std::vector<EncodedArray>& arrays) {
+  for (const Field& field : fields) arrays.push_back(encodedField(field.name, field.values, field.kind, precision));
 }
 
 }  // namespace
 
-VtuGrid::VtuGrid(const TriMesh& mesh)
+VtuGrid::VtuGrid(const TriMesh& mesh, VtuPrecision precision)
     : points_(mesh.nodes.cols()),
       cells_(mesh.triangles.cols()),
-      geometry_(geometryText(mesh.nodes, mesh.triangles, kVtkTriangle)) {}
+      precision_(precision),
+      pointArray_(pointArray(mesh.nodes, precision)),
+      cellArrays_(cellArrays(mesh.triangles, points_, kVtkTriangle)) {}
 
-VtuGrid::VtuGrid(const TetMesh& mesh)
-    : points_(mesh.nodes.cols()), cells_(mesh.tets.cols()), geometry_(geometryText(mesh.nodes, mesh.tets, kVtkTetra)) {}
+VtuGrid::VtuGrid(const TetMesh& mesh, VtuPrecision precision)
+    : points_(mesh.nodes.cols()),
+      cells_(mesh.tets.cols()),
+      precision_(precision),
+      pointArray_(pointArray(mesh.nodes, precision)),
+      cellArrays_(cellArrays(mesh.tets, points_, kVtkTetra)) {}
 
 void VtuGrid::write(std::ostream& out, const std::vector<PointField>& pointFields,
                     const std::vector<CellField>& cellFields) const {
-  validateFields(pointFields, "point", static_cast<int>(points_), "nodes", 3);
-  validateFields(cellFields, "cell", static_cast<int>(cells_), "elements", std::numeric_limits<int>::max());
-  TextBuffer text;
-  text.text("<?xml version=\"1.0\"?>\n"
-            "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-            "  <UnstructuredGrid>\n"
-            "    <Piece NumberOfPoints=\"")
+  checkFields(pointFields, points_, precision_);
+  checkFields(cellFields, cells_, precision_);
+  std::vector<EncodedArray> fields;
+  encodeFields(pointFields, precision_, fields);
+  encodeFields(cellFields, precision_, fields);
+  std::vector<const EncodedArray*> arrays;  // in XML order
+  for (const EncodedArray& array : fields) arrays.push_back(&array);
+  arrays.push_back(&pointArray_);
+  for (const EncodedArray& array : cellArrays_) arrays.push_back(&array);
+  const std::vector<std::size_t> offsets = reverseOffsets(arrays);
+  std::size_t next = 0;
+  TextBuffer xml;
+  const auto tags = [&](std::size_t count) {
+    for (; count > 0; --count, ++next) arrayTag(xml, *arrays[next], offsets[next]);
+  };
+  xml.text("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"")
+      .text(kByteOrder)
+      .text("\" header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\">\n  <UnstructuredGrid>\n")
+      .text("    <Piece NumberOfPoints=\"")
       .integer(points_)
       .text("\" NumberOfCells=\"")
       .integer(cells_)
       .text("\">\n");
-  openData(text, "PointData", pointFields);
-  for (const PointField& field : pointFields)
-    writeFloatArray(text, field.name, field.values, paddedComponents(field.values.rows()));
-  text.text("      </PointData>\n");
-  openData(text, "CellData", cellFields);
-  for (const CellField& field : cellFields) writeFloatArray(text, field.name, field.values, field.values.rows());
-  text.text("      </CellData>\n").text(geometry_).text("    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
-  text.flushTo(out);
+  openData(xml, "PointData", pointFields);
+  tags(pointFields.size());
+  xml.text("      </PointData>\n");
+  openData(xml, "CellData", cellFields);
+  tags(cellFields.size());
+  xml.text("      </CellData>\n      <Points>\n");
+  tags(1);
+  xml.text("      </Points>\n      <Cells>\n");
+  tags(cellArrays_.size());
+  xml.text("      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _");
+  xml.flushTo(out);
+  for (auto it = arrays.rbegin(); it != arrays.rend(); ++it)
+    out.write((*it)->blocks.data(), static_cast<std::streamsize>((*it)->blocks.size()));
+  out << "\n  </AppendedData>\n</VTKFile>\n";
 }
 
 void writeVtu(std::ostream& out, const TriMesh& mesh, const std::vector<PointField>& pointFields,
-              const std::vector<CellField>& cellFields) {
-  VtuGrid(mesh).write(out, pointFields, cellFields);
+              const std::vector<CellField>& cellFields, VtuPrecision precision) {
+  VtuGrid(mesh, precision).write(out, pointFields, cellFields);
 }
 
 void writeVtu(std::ostream& out, const TetMesh& mesh, const std::vector<PointField>& pointFields,
-              const std::vector<CellField>& cellFields) {
-  VtuGrid(mesh).write(out, pointFields, cellFields);
+              const std::vector<CellField>& cellFields, VtuPrecision precision) {
+  VtuGrid(mesh, precision).write(out, pointFields, cellFields);
 }
 
 std::string vtuDocument(const TriMesh& mesh, const std::vector<PointField>& pointFields,
-                        const std::vector<CellField>& cellFields) {
+                        const std::vector<CellField>& cellFields, VtuPrecision precision) {
   std::ostringstream out;
-  writeVtu(out, mesh, pointFields, cellFields);
+  writeVtu(out, mesh, pointFields, cellFields, precision);
   return out.str();
 }
 
 std::string vtuDocument(const TetMesh& mesh, const std::vector<PointField>& pointFields,
-                        const std::vector<CellField>& cellFields) {
+                        const std::vector<CellField>& cellFields, VtuPrecision precision) {
   std::ostringstream out;
-  writeVtu(out, mesh, pointFields, cellFields);
+  writeVtu(out, mesh, pointFields, cellFields, precision);
   return out.str();
 }
 

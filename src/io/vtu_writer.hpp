@@ -1,63 +1,69 @@
 #pragma once
-// ParaView output (docs/interface.md: solution.pvd + vtu/): a VTK XML UnstructuredGrid of the P1
-// triangle or tetrahedron mesh with nodal and element fields, and the collection (.pvd) that makes a series of
-// them a time series. Format: "VTK File Formats", XML section (Kitware, VTK User's Guide); ASCII
-// data arrays, so the files can be read and diffed as text.
+// ParaView output (docs/interface.md "Output files": solution.pvd + vtu/): a VTK XML UnstructuredGrid
+// of the P1 triangle or tetrahedron mesh with nodal and element fields, and the collection (.pvd)
+// that makes a series of them a time series. Format: "VTK File Formats", XML section (Kitware):
+//   <VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian" header_type="UInt64"
+//            compressor="vtkZLibDataCompressor">
+// every DataArray format="appended" offset="o": its data starts o bytes after the '_' that opens
+// <AppendedData encoding="raw">, as zlib-compressed blocks behind their UInt64 header
+// (vtk_zlib_blocks.hpp). Up to that '_' the document is plain XML. The types and component names of
+// the arrays: vtu_arrays.hpp.
+//
+// The appended data holds the arrays in the reverse of their order in the XML (the cells' arrays
+// first, the first point field last). VTK reads them by offset in any order; meshio's raw reader
+// (Debian 12's python3-meshio) finds each array by the text of its offset while it rewrites the
+// offsets of those it has read, and with the two orders the same an array read earlier can take the
+// place of a later one whose offset happens to equal its new one.
+//
+// The mesh is written in every frame. VTK's XML formats cannot refer to a geometry kept in another
+// file; VTKHDF keeps one mesh for a transient series but needs ParaView >= 5.12 (Debian 12 ships
+// 5.11); XDMF and Exodus II need HDF5 or netCDF, and XDMF has no component names; EnSight Gold shares
+// its geometry file but has no compression, no integer fields and no component names. So a frame is
+// self-contained, the points and cells converted and compressed once by VtuGrid and copied into each
+// file. On the 3D hemisphere scene (2601 nodes, 12288 tetrahedra, 201 frames) the series takes 72 MB
+// in Float32 and 146 MB in Float64, against 416 MB for the ASCII Float64 files of version 0.3
+// (docs/interface.md, "solution.pvd and vtu/").
 #include <Eigen/Core>
 #include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "stcontact/io/vtu_arrays.hpp"
 #include "stcontact/mesh/tet_mesh.hpp"
 #include "stcontact/mesh/tri_mesh.hpp"
+#include "stcontact/scene/scene.hpp"
 
 namespace stc {
 
-/// Nodal values: one column per node, 1 to 3 rows (components). A two-component vector is
-/// written with z = 0, so that ParaView's Warp By Vector and Glyph filters accept it.
-struct PointField {
-  std::string name;
-  Eigen::MatrixXd values;
-};
-
-/// Element values: one column per element, one row per component (at least one), written as
-/// given (e.g. a stress as the three components xx, yy, xy, or a contact state code).
-struct CellField {
-  std::string name;
-  Eigen::MatrixXd values;
-};
-
-/// Writes the .vtu document: points (z = 0), triangles (VTK_TRIANGLE = 5), then the fields.
-/// Floating-point values carry 10 significant digits (see vtu_writer.cpp). Everything is checked
-/// before the first byte is written: throws std::invalid_argument naming the field if a name is
-/// empty or repeated, a size does not match the mesh, or a value is NaN or infinite (VTK's
-/// ASCII reader cannot read those, and stops reading the array there).
+/// Writes the .vtu document: points (z = 0 for triangles), cells (VTK_TRIANGLE = 5, VTK_TETRA = 10),
+/// then the fields. Everything is checked before the first byte is written (checkFields,
+/// pointArray): std::invalid_argument names the field and the rule broken.
 void writeVtu(std::ostream& out, const TriMesh& mesh, const std::vector<PointField>& pointFields,
-              const std::vector<CellField>& cellFields);
+              const std::vector<CellField>& cellFields, VtuPrecision precision = VtuPrecision::Float32);
+void writeVtu(std::ostream& out, const TetMesh& mesh, const std::vector<PointField>& pointFields,
+              const std::vector<CellField>& cellFields, VtuPrecision precision = VtuPrecision::Float32);
 /// The same document as a string.
 std::string vtuDocument(const TriMesh& mesh, const std::vector<PointField>& pointFields,
-                        const std::vector<CellField>& cellFields);
-
-/// The same for tetrahedra (VTK_TETRA = 10), points with their z.
-void writeVtu(std::ostream& out, const TetMesh& mesh, const std::vector<PointField>& pointFields,
-              const std::vector<CellField>& cellFields);
+                        const std::vector<CellField>& cellFields, VtuPrecision precision = VtuPrecision::Float32);
 std::string vtuDocument(const TetMesh& mesh, const std::vector<PointField>& pointFields,
-                        const std::vector<CellField>& cellFields);
+                        const std::vector<CellField>& cellFields, VtuPrecision precision = VtuPrecision::Float32);
 
-/// The document of a series of frames on one mesh: the points and cells, the same in every frame,
-/// are formatted once, at construction; write() adds the fields (the checks and the output are those
-/// of writeVtu).
+/// The documents of a series of frames on one mesh: the points and cells, the same in every frame,
+/// are converted and compressed once, at construction; write() adds the fields (the checks and the
+/// output are those of writeVtu).
 class VtuGrid {
  public:
-  explicit VtuGrid(const TriMesh& mesh);
-  explicit VtuGrid(const TetMesh& mesh);
+  explicit VtuGrid(const TriMesh& mesh, VtuPrecision precision = VtuPrecision::Float32);
+  explicit VtuGrid(const TetMesh& mesh, VtuPrecision precision = VtuPrecision::Float32);
   void write(std::ostream& out, const std::vector<PointField>& pointFields,
              const std::vector<CellField>& cellFields) const;
 
  private:
   Eigen::Index points_, cells_;
-  std::string geometry_;  ///< <Points> … </Cells>
+  VtuPrecision precision_;
+  EncodedArray pointArray_;               ///< <Points>
+  std::vector<EncodedArray> cellArrays_;  ///< <Cells>: connectivity, offsets, types
 };
 
 /// A ParaView collection listing `frames` (time, file name relative to the .pvd) in the given

@@ -372,11 +372,11 @@ SolverSpec readSolver(const TableView& root) {
 
 OutputSpec readOutput(const TableView& root) {
   OutputSpec spec;
-  const auto output = root.optionalTable("output", {"vtu", "vtu_stride"});
+  SceneKeys keys;
+  OutputSpec::fields(spec, keys);
+  const auto output = root.optionalTable("output", keys.keys());
   if (!output) return spec;
-  spec.vtu = output->optionalBool("vtu").value_or(spec.vtu);
-  spec.vtu_stride = output->optionalInt("vtu_stride").value_or(spec.vtu_stride);
-  requireRange(*output, "vtu_stride", spec.vtu_stride, spec.vtu_stride >= 1, "must be >= 1");
+  OutputSpec::fields(spec, SceneFieldReader(*output));
   return spec;
 }
 

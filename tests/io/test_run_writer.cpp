@@ -1,12 +1,17 @@
 // The run outputs (src/io/run_writer.hpp) of one solution do not depend on the thread count: the VTU
-// frames are written in parallel, each thread with its own solve workspace and files.
+// frames are written in parallel, each thread with its own solve workspace and files. A frame holds
+// the stress as VTK's symmetric tensor (xx, yy, zz, xy, yz, xz) and the contact states as Int8.
 #include "stcontact/io/run_writer.hpp"
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "fixtures/seed_scene.hpp"
+#include "io/vtu_reading.hpp"
 #include "scratch_dir.hpp"
 #include "stcontact/core/threads.hpp"
+#include "stcontact/fem/elasticity.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 
 namespace {
@@ -36,6 +41,40 @@ TEST(RunWriter, FilesAreTheSameOnOneAndTwoThreads) {
   for (const char* name : {"solution.pvd", "contact.csv", "reactions.csv"})
     EXPECT_EQ(stc::iotest::readFile(one / name), stc::iotest::readFile(two / name)) << name;
   EXPECT_NE(stc::iotest::readFile(one / "vtu" / "step_00000.vtu"), stc::iotest::readFile(one / "vtu" / "step_00080.vtu"));
+}
+
+// The displacement read back (Float64) gives, through the element stresses (rows xx, yy, xy, zz, von
+// Mises), the tensor of the frame in VTK's order, with σ_zz = ν(σ_xx + σ_yy) (plane strain) and
+// σ_yz = σ_xz = 0.
+TEST(RunWriter, FramesHoldTheStressTensorInVtkOrderAndTheStatesAsInt8) {
+  const stc::Problem problem = stc::buildProblem(stc::test::seedScene(21, 81));
+  const stc::SolveResult result = stc::solveIncremental(problem);
+  const ScratchDir scratch;
+  stc::OutputSpec output;
+  output.vtu_stride = 80;
+  output.vtu_precision = stc::VtuPrecision::Float64;
+  stc::writeRunOutputs(scratch.path(), problem, result, {}, output);
+  const auto file = stc::iotest::readVtu(stc::iotest::readFile(scratch.path() / "vtu" / "step_00080.vtu"));
+  const auto& u = file.array("PointData", "displacement").values;  // x, y, 0 per node
+  Eigen::VectorXd dofs(2 * problem.numNodes());
+  for (int j = 0; j < problem.numNodes(); ++j) dofs.segment<2>(2 * j) << u[3 * j], u[3 * j + 1];
+  const auto sigma = stc::elementStresses(std::get<stc::TriMesh>(problem.body), problem.material, problem.plane, dofs);
+  const auto& tensor = file.array("CellData", "stress").values;
+  ASSERT_EQ(tensor.size(), 6u * problem.numElements());
+  const double scale = sigma.topRows(4).cwiseAbs().maxCoeff();
+  ASSERT_GT(scale, 0.0);
+  const int vtkRowOf[6] = {0, 1, 3, 2, -1, -1};  // XX, YY, ZZ, XY, YZ, XZ from rows xx, yy, xy, zz
+  for (int e = 0; e < problem.numElements(); ++e) {
+    for (int c = 0; c < 6; ++c)
+      EXPECT_NEAR(tensor[6 * e + c], vtkRowOf[c] < 0 ? 0.0 : sigma(vtkRowOf[c], e), 1e-12 * scale) << e << ' ' << c;
+    EXPECT_NEAR(tensor[6 * e + 2], problem.material.poisson * (tensor[6 * e] + tensor[6 * e + 1]), 1e-12 * scale) << e;
+  }
+  const auto& states = file.array("PointData", "contact_state");
+  EXPECT_EQ(states.attributes.at("type"), "Int8");
+  const std::set<double> codes(states.values.begin(), states.values.end());
+  for (double code : codes) EXPECT_TRUE(code == -1 || code == 0 || code == 1 || code == 2) << code;
+  EXPECT_TRUE(codes.count(-1) && codes.count(2)) << "t = 1 slides: contact nodes slip, the others are not contact nodes";
+  EXPECT_EQ(file.array("PointData", "displacement").attributes.at("type"), "Float64");
 }
 
 }  // namespace

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -117,6 +120,7 @@ TEST(SceneReader, ExampleSeedSceneHasEveryValueOfInterfaceMd) {
   EXPECT_EQ(s.solver.latin.relaxation, 1.0);
   EXPECT_TRUE(s.output.vtu);
   EXPECT_EQ(s.output.vtu_stride, 1);
+  EXPECT_EQ(s.output.vtu_precision, VtuPrecision::Float32);
 }
 
 TEST(SceneReader, ExampleSeedSceneEqualsTheSeedOfInterfaceMd) {
@@ -137,6 +141,7 @@ relaxation = 0.5
 [output]
 vtu = false
 vtu_stride = 5
+vtu_precision = "float64"
 [[load]]
 boundary = "top"
 component = "y"
@@ -159,6 +164,7 @@ TEST(SceneReader, OptionalKeysOverrideTheirDefaults) {
   EXPECT_EQ(s.solver.latin.relaxation, 0.5);
   EXPECT_FALSE(s.output.vtu);
   EXPECT_EQ(s.output.vtu_stride, 5);
+  EXPECT_EQ(s.output.vtu_precision, VtuPrecision::Float64);
   ASSERT_EQ(s.loads.size(), 1u);
   EXPECT_EQ(s.loads[0].boundary, "top");
   EXPECT_EQ(s.loads[0].component, Component::Y);
@@ -333,8 +339,24 @@ TEST(SceneReaderErrors, OtherRangesAreChecked) {
   EXPECT_THAT(errorOf(seedWith("tolerance = 1e-6", "tolerance = 0")),
               HasSubstr("'solver.tolerance' = 0"));
   EXPECT_THAT(errorOf(kSeed + "[output]\nvtu_stride = 0\n"), HasSubstr("'output.vtu_stride' = 0"));
+  EXPECT_THAT(errorOf(kSeed + "[output]\nvtu_precision = \"float16\"\n"),
+              HasSubstr("'output.vtu_precision' = \"float16\" is not one of \"float32\", \"float64\""));
   EXPECT_THAT(errorOf(seedWith("friction = 0.15", "friction = 0.15\nlength_scale = -1")),
               HasSubstr("'contact.length_scale' = -1"));
+}
+
+TEST(SceneReader, EveryOutputKeyOfTheCodeIsDocumentedAndNoOther) {
+  // docs/scene_format.md lists each key as "| `output.KEY` | ...".
+  std::ifstream page(std::string(STC_SOURCE_DIR) + "/docs/scene_format.md");
+  ASSERT_TRUE(page) << "docs/scene_format.md";
+  std::set<std::string> documented, code;
+  const std::regex row(R"(^\| `output\.([a-z_0-9]+)` \|)");
+  for (std::string line; std::getline(page, line);)
+    if (std::smatch m; std::regex_search(line, m, row)) documented.insert(m[1]);
+  OutputSpec spec;
+  OutputSpec::fields(spec, [&](const char* key, const auto&, const auto&) { code.insert(key); });
+  EXPECT_EQ(documented, code);
+  EXPECT_EQ(code, (std::set<std::string>{"vtu", "vtu_stride", "vtu_precision"}));
 }
 
 TEST(SceneReader, FasKeysAreRead) {
