@@ -17,7 +17,9 @@ void bindSolve(py::module_& module);    ///< solve_binding.cpp: solve, Iteration
 void bindStudies(py::module_& module);  ///< study_bindings.cpp: svd, compare
 
 /// The command line's --threads for one call: the STC_THREADS check first (a bad value is refused
-/// before anything runs), then `threads` for the call's duration, the previous count restored after.
+/// before anything runs), then `threads` for the call's duration on the calling thread only
+/// (stc::ThreadCountScope), which runs the whole call, the lock released or not: concurrent calls
+/// from other Python threads keep their own counts, and each summary records its own.
 class ThreadsForCall {
  public:
   explicit ThreadsForCall(std::optional<int> threads) {

@@ -12,7 +12,8 @@ The command line's work from Python (docs/python.md):
 
 A scene is a TOML file, a TOML text or a dict with the file's keys; either way the command line's
 reader checks it, and bad input raises InputError (a ValueError) with the command line's message.
-Solves release the interpreter's lock and stop on Ctrl-C (KeyboardInterrupt).
+Solves release the interpreter's lock and stop on Ctrl-C (KeyboardInterrupt); threads= applies to
+that call alone.
 """
 
 import json
@@ -138,7 +139,7 @@ def solve(scene, solver=None, *, tol=None, max_iterations=None, sets=None, refer
     max_iterations   iteration limit                                         (--max-iterations)
     sets             overrides, ["KEY=VALUE", ...] or {KEY: value}           (--set)
     reference        False: no incremental reference, no true error          (--no-reference)
-    threads          threads for this call                                   (--threads)
+    threads          threads for this call only (other Python threads keep theirs) (--threads)
     out              also write the command line's output files there        (--out)
     start            warm start: a previous SolveResult of the same sizes (its interface histories
                      and, with seed_basis, its interface directions seed fas-apriori's and
