@@ -11,9 +11,9 @@ The command line's work from Python (docs/python.md):
     stcontact.svd(scene), stcontact.compare(scene, ["latin", "fas-apriori"], repeats=1)
 
 A scene is a TOML file, a TOML text or a dict with the file's keys; either way the command line's
-reader checks it, and bad input raises InputError (a ValueError) with the command line's message.
-Solves release the interpreter's lock and stop on Ctrl-C (KeyboardInterrupt); threads= applies to
-that call alone.
+reader checks it, and bad input raises InputError (a ValueError) with the command line's message
+(FileNotFoundError for a scene or mesh file that does not exist). Solves release the interpreter's
+lock and stop on Ctrl-C (KeyboardInterrupt); threads= applies to that call alone.
 """
 
 import json
@@ -52,9 +52,9 @@ class Scene:
     """A validated scene: its TOML text, its source and its --set overrides.
 
     Build it with Scene.from_file, Scene.from_dict or Scene.from_toml (or load_scene); every check
-    of the scene file applies, a bad value raises InputError with the command line's message.
-    Checks that need the mesh (boundary names, initial penetration) run at the first check(),
-    mesh() or solve.
+    of the scene file applies, a bad value raises InputError with the command line's message, a
+    scene or mesh file that does not exist FileNotFoundError. Checks that need the mesh (boundary
+    names, initial penetration) run at the first check(), mesh() or solve.
     """
 
     def __init__(self, handle):
