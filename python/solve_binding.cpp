@@ -6,6 +6,8 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -67,11 +69,16 @@ void applyWarmStart(WarmStart& warm, const Problem& problem, std::optional<Inter
   }
 }
 
+/// The value history.csv writes, NaN where it leaves the cell empty (an estimate not yet known: +∞).
+double estimateOrNan(double error_estimate) {
+  return std::isfinite(error_estimate) ? error_estimate : std::numeric_limits<double>::quiet_NaN();
+}
+
 /// history.csv's columns (src/io/run_writer.hpp) and the sparse solves, one entry per record;
-/// the true error is NaN where unknown.
+/// the true error and the error estimate are NaN where the file's cell is empty.
 py::dict historyArrays(const SolveSummary& summary) {
   std::vector<int> iteration, relaxations, rank, sparse_solves;
-  std::vector<double> indicator, error, wall_s;
+  std::vector<double> indicator, error, wall_s, error_estimate;
   for (const IterationRecord& r : summary.history) {
     iteration.push_back(r.iteration);
     relaxations.push_back(r.relaxations);
@@ -80,6 +87,7 @@ py::dict historyArrays(const SolveSummary& summary) {
     rank.push_back(r.rank);
     sparse_solves.push_back(r.sparse_solves);
     wall_s.push_back(r.wall_s);
+    error_estimate.push_back(estimateOrNan(r.error_estimate));
   }
   py::dict history;
   history["iteration"] = movedToNumpy(std::move(iteration));
@@ -88,6 +96,7 @@ py::dict historyArrays(const SolveSummary& summary) {
   history["error"] = movedToNumpy(std::move(error));
   history["rank"] = movedToNumpy(std::move(rank));
   history["wall_s"] = movedToNumpy(std::move(wall_s));
+  history["error_estimate"] = movedToNumpy(std::move(error_estimate));
   history["sparse_solves"] = movedToNumpy(std::move(sparse_solves));
   return history;
 }
@@ -187,24 +196,36 @@ py::array displacementsFromForces(const ProblemRef& ref, const Eigen::MatrixXd& 
   return movedToNumpy(std::move(u));
 }
 
+/// The estimate as the record's Python attribute: None where history.csv's cell is empty.
+std::optional<double> estimateOrNone(double error_estimate) {
+  if (!std::isfinite(error_estimate)) return std::nullopt;
+  return error_estimate;
+}
+
+std::string recordText(const IterationRecord& r) {
+  const auto optional = [](std::ostream& out, std::optional<double> value) -> std::ostream& {
+    if (value) return out << *value;
+    return out << "None";
+  };
+  std::ostringstream text;
+  text << "IterationRecord(iteration=" << r.iteration << ", relaxations=" << r.relaxations
+       << ", indicator=" << r.indicator << ", error=";
+  optional(text, r.error) << ", error_estimate=";
+  optional(text, estimateOrNone(r.error_estimate)) << ", rank=" << r.rank << ", wall_s=" << r.wall_s << ")";
+  return text.str();
+}
+
 void bindRecord(py::module_& module) {
   py::class_<IterationRecord>(module, "IterationRecord", "One iteration of a solve, as history.csv records it.")
       .def_readonly("iteration", &IterationRecord::iteration)
       .def_readonly("relaxations", &IterationRecord::relaxations)
       .def_readonly("indicator", &IterationRecord::indicator)
       .def_readonly("error", &IterationRecord::error)
+      .def_property_readonly("error_estimate", [](const IterationRecord& r) { return estimateOrNone(r.error_estimate); })
       .def_readonly("rank", &IterationRecord::rank)
       .def_readonly("sparse_solves", &IterationRecord::sparse_solves)
       .def_readonly("wall_s", &IterationRecord::wall_s)
-      .def("__repr__", [](const IterationRecord& r) {
-        std::ostringstream text;
-        text << "IterationRecord(iteration=" << r.iteration << ", relaxations=" << r.relaxations
-             << ", indicator=" << r.indicator << ", error=";
-        if (r.error) text << *r.error;
-        else text << "None";
-        text << ", rank=" << r.rank << ", wall_s=" << r.wall_s << ")";
-        return text.str();
-      });
+      .def("__repr__", &recordText);
 }
 
 }  // namespace

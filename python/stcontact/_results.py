@@ -12,6 +12,10 @@ import json
 class SolveResult:
     """One solve: the interface histories, the tables of reactions.csv and history.csv, summary.json.
 
+    history: history.csv's columns (iteration, relaxations, indicator, error, rank, wall_s,
+    error_estimate) and sparse_solves, one array entry per iteration; error and error_estimate are
+    NaN where the file's cell is empty (no reference; an estimate not yet known).
+
     Interface arrays (the library's layout, NumPy order 'F': column k is instant t_k; d = dimension,
     2 or 3):
       interface_forces         d n_C x m  rows d i: normal force of contact node i, d i + 1: tangential
