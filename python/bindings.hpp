@@ -12,9 +12,16 @@ namespace stc::python {
 
 namespace py = pybind11;
 
+class SceneHandle;
+
 void bindScene(py::module_& module);    ///< scene_binding.cpp: Scene, check, mesh arrays
 void bindSolve(py::module_& module);    ///< solve_binding.cpp: solve, IterationRecord, Problem
 void bindStudies(py::module_& module);  ///< study_bindings.cpp: svd, compare
+
+/// What a pickled scene holds: its text, source and overrides (scene_binding.cpp), from which
+/// sceneFromState makes it anew, every check included; the problem is assembled again on first use.
+py::tuple sceneState(const SceneHandle& scene);
+SceneHandle sceneFromState(const py::tuple& state);
 
 /// The command line's --threads for one call: the STC_THREADS check first (a bad value is refused
 /// before anything runs), then `threads` for the call's duration on the calling thread only

@@ -1,7 +1,8 @@
 // stcontact._core.solve: one strategy on one scene, with the command line's options (--solver,
 // --tol, --max-iterations, --set, --no-reference, --threads, --out), a warm start and a
 // per-iteration callback; the solve runs with the interpreter's lock released (callback_bridge.hpp).
-// The result is a dict of NumPy arrays and texts that the Python class SolveResult wraps.
+// The result is a dict of NumPy arrays and texts that the Python class SolveResult wraps; its
+// Problem and the callback's IterationRecords pickle.
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -10,6 +11,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/contact_tables.hpp"
@@ -48,8 +50,11 @@ struct WarmStart {
 };
 
 /// The problem a result was solved on, kept alive by the result (Python: stcontact._core.Problem).
+/// It pickles as the scene it was assembled from (overrides and solve options included), assembled
+/// again on first use after unpickling.
 struct ProblemRef {
-  ProblemPtr problem;
+  SceneHandle scene;
+  ProblemPtr problem() const { return scene.problem(); }
 };
 
 /// The start history and basis seed for `problem`; ValueError when a part is missing or its sizes
@@ -122,7 +127,9 @@ py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
 /// Everything the Python SolveResult holds. Texts and tables first, while `result` is whole; then
 /// the large matrices are moved into their arrays. Call within the call's thread count (the
 /// summary records it).
-py::dict resultDict(const ProblemPtr& problem, const Scene& scene, SolveResult&& result) {
+py::dict resultDict(const SceneHandle& run, SolveResult&& result) {
+  const Scene& scene = run.scene();
+  const ProblemPtr problem = run.problem();
   py::dict out;
   out["solver"] = std::string(scene.solver.name());
   out["dimension"] = problem->dimension;
@@ -135,7 +142,7 @@ py::dict resultDict(const ProblemPtr& problem, const Scene& scene, SolveResult&&
   out["displacements"] = movedToNumpy(std::move(result.interface.v));
   out["spatial_modes"] = movedToNumpy(std::move(result.spatial_modes));
   out["interface_directions"] = movedToNumpy(std::move(result.interface_directions));
-  out["problem"] = ProblemRef{problem};
+  out["problem"] = ProblemRef{run};
   return out;
 }
 
@@ -175,12 +182,12 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
     writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
     folder->commit();
   }
-  return resultDict(problem, scene, std::move(result));
+  return resultDict(run, std::move(result));
 }
 
 /// Full displacements n × m (dof d j: u_x of node j, d j + 1: u_y, d j + 2: u_z in 3D) rebuilt from the forces.
 py::array displacementsFromForces(const ProblemRef& ref, const Eigen::MatrixXd& forces) {
-  const ProblemPtr& problem = ref.problem;
+  const ProblemPtr problem = ref.problem();
   if (forces.rows() != problem->contact.rows() || forces.cols() != problem->numSteps()) {
     std::ostringstream message;
     message << "forces are " << forces.rows() << " x " << forces.cols() << ", the problem's interface "
@@ -215,6 +222,18 @@ std::string recordText(const IterationRecord& r) {
   return text.str();
 }
 
+py::tuple recordState(const IterationRecord& r) {
+  return py::make_tuple(r.iteration, r.relaxations, r.indicator, r.error_estimate, r.error, r.rank, r.sparse_solves,
+                        r.wall_s);
+}
+
+IterationRecord recordFromState(const py::tuple& state) {
+  if (state.size() != 8) throw std::invalid_argument("a pickled IterationRecord holds 8 values");
+  // In the order of stc::IterationRecord's members, as recordState wrote them.
+  return {state[0].cast<int>(), state[1].cast<int>(), state[2].cast<double>(), state[3].cast<double>(),
+          state[4].cast<std::optional<double>>(), state[5].cast<int>(), state[6].cast<int>(), state[7].cast<double>()};
+}
+
 void bindRecord(py::module_& module) {
   py::class_<IterationRecord>(module, "IterationRecord", "One iteration of a solve, as history.csv records it.")
       .def_readonly("iteration", &IterationRecord::iteration)
@@ -225,19 +244,26 @@ void bindRecord(py::module_& module) {
       .def_readonly("rank", &IterationRecord::rank)
       .def_readonly("sparse_solves", &IterationRecord::sparse_solves)
       .def_readonly("wall_s", &IterationRecord::wall_s)
-      .def("__repr__", &recordText);
+      .def("__repr__", &recordText)
+      .def(py::pickle(&recordState, &recordFromState));
+}
+
+void bindProblem(py::module_& module) {
+  py::class_<ProblemRef>(module, "Problem", "The assembled problem a result was solved on.")
+      .def_property_readonly("n_dofs", [](const ProblemRef& r) { return r.problem()->numDofs(); })
+      .def_property_readonly("n_free_dofs", [](const ProblemRef& r) { return r.problem()->numFreeDofs(); })
+      .def_property_readonly("n_contact_nodes", [](const ProblemRef& r) { return r.problem()->contact.size(); })
+      .def_property_readonly("n_steps", [](const ProblemRef& r) { return r.problem()->numSteps(); })
+      .def("displacements", &displacementsFromForces, py::arg("forces"))
+      .def(py::pickle([](const ProblemRef& r) { return sceneState(r.scene); },
+                      [](const py::tuple& state) { return ProblemRef{sceneFromState(state)}; }));
 }
 
 }  // namespace
 
 void bindSolve(py::module_& module) {
   bindRecord(module);
-  py::class_<ProblemRef>(module, "Problem", "The assembled problem a result was solved on.")
-      .def_property_readonly("n_dofs", [](const ProblemRef& r) { return r.problem->numDofs(); })
-      .def_property_readonly("n_free_dofs", [](const ProblemRef& r) { return r.problem->numFreeDofs(); })
-      .def_property_readonly("n_contact_nodes", [](const ProblemRef& r) { return r.problem->contact.size(); })
-      .def_property_readonly("n_steps", [](const ProblemRef& r) { return r.problem->numSteps(); })
-      .def("displacements", &displacementsFromForces, py::arg("forces"));
+  bindProblem(module);
   module.def(
       "solve",
       [](const SceneHandle& scene, std::optional<std::string> solver, std::optional<double> tol,

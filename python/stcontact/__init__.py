@@ -13,7 +13,8 @@ The command line's work from Python (docs/python.md):
 A scene is a TOML file, a TOML text or a dict with the file's keys; either way the command line's
 reader checks it, and bad input raises InputError (a ValueError) with the command line's message
 (FileNotFoundError for a scene or mesh file that does not exist). Solves release the interpreter's
-lock and stop on Ctrl-C (KeyboardInterrupt); threads= applies to that call alone.
+lock and stop on Ctrl-C (KeyboardInterrupt); threads= applies to that call alone. Scenes and
+results pickle.
 """
 
 import json
@@ -55,6 +56,9 @@ class Scene:
     of the scene file applies, a bad value raises InputError with the command line's message, a
     scene or mesh file that does not exist FileNotFoundError. Checks that need the mesh (boundary
     names, initial penetration) run at the first check(), mesh() or solve.
+
+    Scenes with the same text, source and overrides are equal. A scene pickles as those three: it is
+    read again, every check included, when unpickled (a mesh file it names must then exist).
     """
 
     def __init__(self, handle):
@@ -102,6 +106,18 @@ class Scene:
     def mesh(self):
         """nodes (N x 2), triangles (E x 3 node ids), contact_nodes (n_C node ids), initial_gap (n_C), times (m)."""
         return self._handle.mesh()
+
+    def _key(self):
+        return self.text, self.source, tuple(self.sets)
+
+    def __eq__(self, other):
+        """Equal scenes have the same text, source and overrides (so the same problem)."""
+        if not isinstance(other, Scene):
+            return NotImplemented
+        return self._key() == other._key()
+
+    def __hash__(self):
+        return hash(self._key())
 
     def __repr__(self):
         return "<Scene %s from %s%s>" % (self.name, self.source, "".join(" --set " + s for s in self.sets))

@@ -1,7 +1,8 @@
 """The result classes of stcontact.solve, stcontact.svd and stcontact.compare (docs/python.md).
 
 Each holds the NumPy arrays the compiled core moved into Python (no copy was made on the way) and
-the texts the command line writes, parsed: summary.json as a dict, summary.csv as rows.
+the texts the command line writes, parsed: summary.json as a dict, summary.csv as rows. Each pickles
+(a SolveResult's problem as the scene it was assembled from, assembled again on first use).
 """
 
 import csv
