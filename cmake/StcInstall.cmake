@@ -16,3 +16,5 @@ install(FILES ${PROJECT_BINARY_DIR}/stcontactConfig.cmake
               ${PROJECT_BINARY_DIR}/stcontactConfigVersion.cmake
               cmake/FindCHOLMOD.cmake cmake/FindARPACK.cmake cmake/FindOpenBLAS.cmake
         DESTINATION ${stc_cmake_dir})
+# The licence and the citation metadata, beside the documentation of the installed package.
+install(FILES LICENSE CITATION.cff DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -1,11 +1,15 @@
 // The extension module stcontact._core (pybind11). Bad input (stc::InputError) becomes
 // stcontact.InputError, a ValueError whose message is the command line's "error:" line without
-// its prefix (cli/main.cpp); an output folder that cannot be written (stc::OutputError), an
-// OSError with the same message.
+// its prefix (cli/main.cpp); a scene or mesh file that does not exist (stc::MissingFileError),
+// FileNotFoundError(ENOENT, that message, the path) as open() raises it; an output folder that cannot
+// be written (stc::OutputError), an OSError with the same message.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cerrno>
+
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/missing_file_error.hpp"
 #include "stcontact/io/output_error.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/options/strategy.hpp"
@@ -36,6 +40,9 @@ PYBIND11_MODULE(_core, module) {
   py::register_exception_translator([](std::exception_ptr thrown) {
     try {
       if (thrown) std::rethrow_exception(thrown);
+    } catch (const stc::MissingFileError& e) {
+      const py::object error = py::handle(PyExc_FileNotFoundError)(ENOENT, oneLine(e.what()), e.path());
+      PyErr_SetObject(PyExc_FileNotFoundError, error.ptr());
     } catch (const stc::InputError& e) {
       input_error(oneLine(e.what()).c_str());
     } catch (const stc::OutputError& e) {

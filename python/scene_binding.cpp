@@ -1,7 +1,9 @@
 // stcontact._core.Scene: a validated scene (scene_handle.hpp), the sizes `stcontact check` prints,
-// and the mesh as arrays for plotting.
+// the mesh as arrays for plotting, and pickling (its text, source and overrides).
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
+
+#include <stdexcept>
 
 #include "stcontact/core/overloaded.hpp"
 #include "stcontact/python/bindings.hpp"
@@ -65,6 +67,16 @@ py::dict meshArrays(const SceneHandle& handle) {
 
 }  // namespace
 
+py::tuple sceneState(const SceneHandle& scene) {
+  return py::make_tuple(scene.text(), scene.source().string(), scene.overrides());
+}
+
+SceneHandle sceneFromState(const py::tuple& state) {
+  if (state.size() != 3) throw std::invalid_argument("a pickled scene holds (text, source, sets)");
+  return SceneHandle::fromText(state[0].cast<std::string>(), state[1].cast<std::string>(),
+                               state[2].cast<std::vector<std::string>>());
+}
+
 void bindScene(py::module_& module) {
   py::class_<SceneHandle>(module, "Scene", "A validated scene (TOML text, source, --set overrides).")
       .def_static("from_file", &SceneHandle::fromFile, py::arg("path"), py::arg("sets"))
@@ -77,7 +89,8 @@ void bindScene(py::module_& module) {
       .def_property_readonly("parameters_json", [](const SceneHandle& h) { return h.scene().parameters_json; })
       .def_property_readonly("solver", [](const SceneHandle& h) { return std::string(h.scene().solver.name()); })
       .def("check", &checkSizes)
-      .def("mesh", &meshArrays);
+      .def("mesh", &meshArrays)
+      .def(py::pickle(&sceneState, &sceneFromState));
 }
 
 }  // namespace stc::python

@@ -1,13 +1,17 @@
 // stcontact._core.solve: one strategy on one scene, with the command line's options (--solver,
 // --tol, --max-iterations, --set, --no-reference, --threads, --out), a warm start and a
 // per-iteration callback; the solve runs with the interpreter's lock released (callback_bridge.hpp).
-// The result is a dict of NumPy arrays and texts that the Python class SolveResult wraps.
+// The result is a dict of NumPy arrays and texts that the Python class SolveResult wraps; its
+// Problem and the callback's IterationRecords pickle.
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/contact_tables.hpp"
@@ -46,8 +50,11 @@ struct WarmStart {
 };
 
 /// The problem a result was solved on, kept alive by the result (Python: stcontact._core.Problem).
+/// It pickles as the scene it was assembled from (overrides and solve options included), assembled
+/// again on first use after unpickling.
 struct ProblemRef {
-  ProblemPtr problem;
+  SceneHandle scene;
+  ProblemPtr problem() const { return scene.problem(); }
 };
 
 /// The start history and basis seed for `problem`; ValueError when a part is missing or its sizes
@@ -67,11 +74,16 @@ void applyWarmStart(WarmStart& warm, const Problem& problem, std::optional<Inter
   }
 }
 
+/// The value history.csv writes, NaN where it leaves the cell empty (an estimate not yet known: +∞).
+double estimateOrNan(double error_estimate) {
+  return std::isfinite(error_estimate) ? error_estimate : std::numeric_limits<double>::quiet_NaN();
+}
+
 /// history.csv's columns (src/io/run_writer.hpp) and the sparse solves, one entry per record;
-/// the true error is NaN where unknown.
+/// the true error and the error estimate are NaN where the file's cell is empty.
 py::dict historyArrays(const SolveSummary& summary) {
   std::vector<int> iteration, relaxations, rank, sparse_solves;
-  std::vector<double> indicator, error, wall_s;
+  std::vector<double> indicator, error, wall_s, error_estimate;
   for (const IterationRecord& r : summary.history) {
     iteration.push_back(r.iteration);
     relaxations.push_back(r.relaxations);
@@ -80,6 +92,7 @@ py::dict historyArrays(const SolveSummary& summary) {
     rank.push_back(r.rank);
     sparse_solves.push_back(r.sparse_solves);
     wall_s.push_back(r.wall_s);
+    error_estimate.push_back(estimateOrNan(r.error_estimate));
   }
   py::dict history;
   history["iteration"] = movedToNumpy(std::move(iteration));
@@ -88,6 +101,7 @@ py::dict historyArrays(const SolveSummary& summary) {
   history["error"] = movedToNumpy(std::move(error));
   history["rank"] = movedToNumpy(std::move(rank));
   history["wall_s"] = movedToNumpy(std::move(wall_s));
+  history["error_estimate"] = movedToNumpy(std::move(error_estimate));
   history["sparse_solves"] = movedToNumpy(std::move(sparse_solves));
   return history;
 }
@@ -113,7 +127,9 @@ py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
 /// Everything the Python SolveResult holds. Texts and tables first, while `result` is whole; then
 /// the large matrices are moved into their arrays. Call within the call's thread count (the
 /// summary records it).
-py::dict resultDict(const ProblemPtr& problem, const Scene& scene, SolveResult&& result) {
+py::dict resultDict(const SceneHandle& run, SolveResult&& result) {
+  const Scene& scene = run.scene();
+  const ProblemPtr problem = run.problem();
   py::dict out;
   out["solver"] = std::string(scene.solver.name());
   out["dimension"] = problem->dimension;
@@ -126,7 +142,7 @@ py::dict resultDict(const ProblemPtr& problem, const Scene& scene, SolveResult&&
   out["displacements"] = movedToNumpy(std::move(result.interface.v));
   out["spatial_modes"] = movedToNumpy(std::move(result.spatial_modes));
   out["interface_directions"] = movedToNumpy(std::move(result.interface_directions));
-  out["problem"] = ProblemRef{problem};
+  out["problem"] = ProblemRef{run};
   return out;
 }
 
@@ -166,12 +182,12 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
     writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
     folder->commit();
   }
-  return resultDict(problem, scene, std::move(result));
+  return resultDict(run, std::move(result));
 }
 
 /// Full displacements n × m (dof d j: u_x of node j, d j + 1: u_y, d j + 2: u_z in 3D) rebuilt from the forces.
 py::array displacementsFromForces(const ProblemRef& ref, const Eigen::MatrixXd& forces) {
-  const ProblemPtr& problem = ref.problem;
+  const ProblemPtr problem = ref.problem();
   if (forces.rows() != problem->contact.rows() || forces.cols() != problem->numSteps()) {
     std::ostringstream message;
     message << "forces are " << forces.rows() << " x " << forces.cols() << ", the problem's interface "
@@ -187,36 +203,67 @@ py::array displacementsFromForces(const ProblemRef& ref, const Eigen::MatrixXd& 
   return movedToNumpy(std::move(u));
 }
 
+/// The estimate as the record's Python attribute: None where history.csv's cell is empty.
+std::optional<double> estimateOrNone(double error_estimate) {
+  if (!std::isfinite(error_estimate)) return std::nullopt;
+  return error_estimate;
+}
+
+std::string recordText(const IterationRecord& r) {
+  const auto optional = [](std::ostream& out, std::optional<double> value) -> std::ostream& {
+    if (value) return out << *value;
+    return out << "None";
+  };
+  std::ostringstream text;
+  text << "IterationRecord(iteration=" << r.iteration << ", relaxations=" << r.relaxations
+       << ", indicator=" << r.indicator << ", error=";
+  optional(text, r.error) << ", error_estimate=";
+  optional(text, estimateOrNone(r.error_estimate)) << ", rank=" << r.rank << ", wall_s=" << r.wall_s << ")";
+  return text.str();
+}
+
+py::tuple recordState(const IterationRecord& r) {
+  return py::make_tuple(r.iteration, r.relaxations, r.indicator, r.error_estimate, r.error, r.rank, r.sparse_solves,
+                        r.wall_s);
+}
+
+IterationRecord recordFromState(const py::tuple& state) {
+  if (state.size() != 8) throw std::invalid_argument("a pickled IterationRecord holds 8 values");
+  // In the order of stc::IterationRecord's members, as recordState wrote them.
+  return {state[0].cast<int>(), state[1].cast<int>(), state[2].cast<double>(), state[3].cast<double>(),
+          state[4].cast<std::optional<double>>(), state[5].cast<int>(), state[6].cast<int>(), state[7].cast<double>()};
+}
+
 void bindRecord(py::module_& module) {
   py::class_<IterationRecord>(module, "IterationRecord", "One iteration of a solve, as history.csv records it.")
       .def_readonly("iteration", &IterationRecord::iteration)
       .def_readonly("relaxations", &IterationRecord::relaxations)
       .def_readonly("indicator", &IterationRecord::indicator)
       .def_readonly("error", &IterationRecord::error)
+      .def_property_readonly("error_estimate", [](const IterationRecord& r) { return estimateOrNone(r.error_estimate); })
       .def_readonly("rank", &IterationRecord::rank)
       .def_readonly("sparse_solves", &IterationRecord::sparse_solves)
       .def_readonly("wall_s", &IterationRecord::wall_s)
-      .def("__repr__", [](const IterationRecord& r) {
-        std::ostringstream text;
-        text << "IterationRecord(iteration=" << r.iteration << ", relaxations=" << r.relaxations
-             << ", indicator=" << r.indicator << ", error=";
-        if (r.error) text << *r.error;
-        else text << "None";
-        text << ", rank=" << r.rank << ", wall_s=" << r.wall_s << ")";
-        return text.str();
-      });
+      .def("__repr__", &recordText)
+      .def(py::pickle(&recordState, &recordFromState));
+}
+
+void bindProblem(py::module_& module) {
+  py::class_<ProblemRef>(module, "Problem", "The assembled problem a result was solved on.")
+      .def_property_readonly("n_dofs", [](const ProblemRef& r) { return r.problem()->numDofs(); })
+      .def_property_readonly("n_free_dofs", [](const ProblemRef& r) { return r.problem()->numFreeDofs(); })
+      .def_property_readonly("n_contact_nodes", [](const ProblemRef& r) { return r.problem()->contact.size(); })
+      .def_property_readonly("n_steps", [](const ProblemRef& r) { return r.problem()->numSteps(); })
+      .def("displacements", &displacementsFromForces, py::arg("forces"))
+      .def(py::pickle([](const ProblemRef& r) { return sceneState(r.scene); },
+                      [](const py::tuple& state) { return ProblemRef{sceneFromState(state)}; }));
 }
 
 }  // namespace
 
 void bindSolve(py::module_& module) {
   bindRecord(module);
-  py::class_<ProblemRef>(module, "Problem", "The assembled problem a result was solved on.")
-      .def_property_readonly("n_dofs", [](const ProblemRef& r) { return r.problem->numDofs(); })
-      .def_property_readonly("n_free_dofs", [](const ProblemRef& r) { return r.problem->numFreeDofs(); })
-      .def_property_readonly("n_contact_nodes", [](const ProblemRef& r) { return r.problem->contact.size(); })
-      .def_property_readonly("n_steps", [](const ProblemRef& r) { return r.problem->numSteps(); })
-      .def("displacements", &displacementsFromForces, py::arg("forces"));
+  bindProblem(module);
   module.def(
       "solve",
       [](const SceneHandle& scene, std::optional<std::string> solver, std::optional<double> tol,

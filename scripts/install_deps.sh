@@ -6,8 +6,10 @@
 # clang-14 + libclang-rt-14-dev (libFuzzer, clang's sanitizer runtimes) build the fuzz targets
 # (scripts/fuzz.sh); llvm-14's llvm-symbolizer puts file:line into sanitizer reports.
 # pybind11, the Python headers, NumPy, pytest and matplotlib: the Python module, its tests and
-# examples (docs/python.md), for Debian's /usr/bin/python3. zlib compresses the .vtu frames;
-# python3-meshio reads them back in the tests, as a reader that shares no code with the writer.
+# examples (docs/python.md), for Debian's /usr/bin/python3; venv (with the pip and setuptools wheels
+# it bundles), setuptools and wheel: `pip install .` offline (test python.pip_install). zlib
+# compresses the .vtu frames; python3-meshio reads them back in the tests, as a reader that shares
+# no code with the writer.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
@@ -16,5 +18,6 @@ apt-get install -y -qq --no-install-recommends \
   libeigen3-dev libsuitesparse-dev libarpack2-dev libgsl-dev libopenblas-serial-dev \
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev zlib1g-dev \
   gnuplot-nox clang-14 libclang-rt-14-dev llvm-14 \
-  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-meshio >/dev/null
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-meshio \
+  python3-venv python3-setuptools python3-wheel >/dev/null
 echo "dependencies installed"

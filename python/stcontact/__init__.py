@@ -11,13 +11,18 @@ The command line's work from Python (docs/python.md):
     stcontact.svd(scene), stcontact.compare(scene, ["latin", "fas-apriori"], repeats=1)
 
 A scene is a TOML file, a TOML text or a dict with the file's keys; either way the command line's
-reader checks it, and bad input raises InputError (a ValueError) with the command line's message.
-Solves release the interpreter's lock and stop on Ctrl-C (KeyboardInterrupt).
+reader checks it, and bad input raises InputError (a ValueError) with the command line's message
+(FileNotFoundError for a scene or mesh file that does not exist). Solves release the interpreter's
+lock and stop on Ctrl-C (KeyboardInterrupt); threads= applies to that call alone. Scenes and
+results pickle.
 """
+
+from __future__ import annotations  # the annotations below as text: X | None on Python 3.8 too
 
 import json
 import os
 from collections.abc import Mapping
+from typing import Any, Callable, Sequence, Union
 
 from . import _core
 from ._results import CompareResult, SolveResult, Strategy, SvdResult
@@ -27,6 +32,12 @@ __version__ = _core.__version__
 blas_kernels = _core.blas_kernels  # OpenBLAS's kernel set in use (docs/threads.md, "BLAS kernels")
 InputError = _core.InputError
 IterationRecord = _core.IterationRecord
+
+# What a scene argument or --set overrides may be (docs/python.md, "Scenes"); typing's generics, which
+# Python 3.8 can subscript.
+_PathLike = Union[str, "os.PathLike[str]"]
+_SceneLike = Union["Scene", _PathLike, "Mapping[str, Any]"]
+_Sets = Union[str, Sequence[str], "Mapping[str, Any]", None]
 
 __all__ = ["Scene", "load_scene", "check", "solve", "svd", "compare", "available_solvers", "InputError",
            "IterationRecord", "SolveResult", "SvdResult", "CompareResult", "Strategy", "__version__",
@@ -51,26 +62,29 @@ class Scene:
     """A validated scene: its TOML text, its source and its --set overrides.
 
     Build it with Scene.from_file, Scene.from_dict or Scene.from_toml (or load_scene); every check
-    of the scene file applies, a bad value raises InputError with the command line's message.
-    Checks that need the mesh (boundary names, initial penetration) run at the first check(),
-    mesh() or solve.
+    of the scene file applies, a bad value raises InputError with the command line's message, a
+    scene or mesh file that does not exist FileNotFoundError. Checks that need the mesh (boundary
+    names, initial penetration) run at the first check(), mesh() or solve.
+
+    Scenes with the same text, source and overrides are equal. A scene pickles as those three: it is
+    read again, every check included, when unpickled (a mesh file it names must then exist).
     """
 
     def __init__(self, handle):
         self._handle = handle
 
     @classmethod
-    def from_file(cls, path, sets=None):
+    def from_file(cls, path: _PathLike, sets: _Sets = None) -> Scene:
         """The scene file at `path` (messages name it as given; a relative mesh file is found beside it)."""
         return cls(_core.Scene.from_file(os.fspath(path), _overrides(sets)))
 
     @classmethod
-    def from_toml(cls, text, source="<text>", sets=None):
+    def from_toml(cls, text: str, source: _PathLike = "<text>", sets: _Sets = None) -> Scene:
         """A scene file's text; `source` names it in messages and locates a relative mesh file."""
         return cls(_core.Scene.from_toml(text, os.fspath(source), _overrides(sets)))
 
     @classmethod
-    def from_dict(cls, scene, sets=None, source="<dict>"):
+    def from_dict(cls, scene: Mapping[str, Any], sets: _Sets = None, source: _PathLike = "<dict>") -> Scene:
         """A dict with the scene file's keys ({"name": ..., "mesh": {...}, "dirichlet": [{...}], ...})."""
         try:
             text = scene_toml(scene)
@@ -78,7 +92,7 @@ class Scene:
             raise InputError("%s: %s" % (os.fspath(source), error)) from None
         return cls.from_toml(text, source, sets)
 
-    def with_sets(self, *sets):
+    def with_sets(self, *sets: _Sets) -> Scene:
         """This scene with more overrides: with_sets("contact.friction=0.3") or with_sets({"time.steps": 41})."""
         extra = [text for s in sets for text in _overrides(s)]
         return Scene(self._handle.with_sets(extra))
@@ -90,23 +104,35 @@ class Scene:
     solver = property(lambda self: self._handle.solver, doc="The scene's [solver] name.")
 
     @property
-    def parameters(self):
+    def parameters(self) -> dict[str, Any]:
         """The scene as read, overrides applied (summary.json's "parameters")."""
         return json.loads(self._handle.parameters_json)
 
-    def check(self):
+    def check(self) -> dict[str, Any]:
         """The sizes `stcontact check` prints, as a dict."""
         return self._handle.check()
 
-    def mesh(self):
+    def mesh(self) -> dict[str, Any]:
         """nodes (N x 2), triangles (E x 3 node ids), contact_nodes (n_C node ids), initial_gap (n_C), times (m)."""
         return self._handle.mesh()
+
+    def _key(self):
+        return self.text, self.source, tuple(self.sets)
+
+    def __eq__(self, other):
+        """Equal scenes have the same text, source and overrides (so the same problem)."""
+        if not isinstance(other, Scene):
+            return NotImplemented
+        return self._key() == other._key()
+
+    def __hash__(self):
+        return hash(self._key())
 
     def __repr__(self):
         return "<Scene %s from %s%s>" % (self.name, self.source, "".join(" --set " + s for s in self.sets))
 
 
-def load_scene(scene, sets=None):
+def load_scene(scene: _SceneLike, sets: _Sets = None) -> Scene:
     """A Scene from a Scene (more overrides applied), a file path or a dict."""
     if isinstance(scene, Scene):
         return scene.with_sets(sets) if sets else scene
@@ -117,19 +143,21 @@ def load_scene(scene, sets=None):
     raise TypeError("a scene is a Scene, a file path or a dict, not %s" % type(scene).__name__)
 
 
-def available_solvers():
+def available_solvers() -> list[str]:
     """The strategies solve() and compare() accept."""
     return list(_core.available_solvers())
 
 
-def check(scene, sets=None):
+def check(scene: _SceneLike, sets: _Sets = None) -> dict[str, Any]:
     """The model's sizes, as `stcontact check SCENE` prints them (nodes, elements, dofs, free_dofs,
     prescribed_dofs, contact_nodes, instants, kappa, ...)."""
     return load_scene(scene, sets).check()
 
 
-def solve(scene, solver=None, *, tol=None, max_iterations=None, sets=None, reference=True, threads=None,
-          start=None, seed_basis=True, callback=None, out=None):
+def solve(scene: _SceneLike, solver: str | None = None, *, tol: float | None = None, max_iterations: int | None = None,
+          sets: _Sets = None, reference: bool = True, threads: int | None = None, start: SolveResult | None = None,
+          seed_basis: bool = True, callback: Callable[[IterationRecord], Any] | None = None,
+          out: _PathLike | None = None) -> SolveResult:
     """Solves the scene, as `stcontact solve` does, and returns a SolveResult.
 
     solver           latin | latin-pgd | fas-aposteriori | fas-apriori | incremental (default: the
@@ -138,7 +166,7 @@ def solve(scene, solver=None, *, tol=None, max_iterations=None, sets=None, refer
     max_iterations   iteration limit                                         (--max-iterations)
     sets             overrides, ["KEY=VALUE", ...] or {KEY: value}           (--set)
     reference        False: no incremental reference, no true error          (--no-reference)
-    threads          threads for this call                                   (--threads)
+    threads          threads for this call only (other Python threads keep theirs) (--threads)
     out              also write the command line's output files there        (--out)
     start            warm start: a previous SolveResult of the same sizes (its interface histories
                      and, with seed_basis, its interface directions seed fas-apriori's and
@@ -158,13 +186,14 @@ def solve(scene, solver=None, *, tol=None, max_iterations=None, sets=None, refer
     return SolveResult(data)
 
 
-def svd(scene, modes=10, *, sets=None, threads=None):
+def svd(scene: _SceneLike, modes: int = 10, *, sets: _Sets = None, threads: int | None = None) -> SvdResult:
     """The energy SVD of the incremental solution (`stcontact svd`): an SvdResult with `modes` time
     functions and spatial modes (at least 50 singular values, or m - 1)."""
     return SvdResult(_core.svd(load_scene(scene)._handle, modes, _overrides(sets), threads))
 
 
-def compare(scene, solvers=None, *, repeats=3, tol=None, sets=None, threads=None, out=None):
+def compare(scene: _SceneLike, solvers: str | Sequence[str] | None = None, *, repeats: int = 3, tol: float | None = None,
+            sets: _Sets = None, threads: int | None = None, out: _PathLike | None = None) -> CompareResult:
     """Work against precision of strategies (`stcontact compare`): each solver (default: every
     available one) gets an error run and `repeats` timed runs, against the incremental reference.
     With `out`, the report files (and gnuplot's plots, when available) are written there too.

@@ -1,7 +1,8 @@
 """The result classes of stcontact.solve, stcontact.svd and stcontact.compare (docs/python.md).
 
 Each holds the NumPy arrays the compiled core moved into Python (no copy was made on the way) and
-the texts the command line writes, parsed: summary.json as a dict, summary.csv as rows.
+the texts the command line writes, parsed: summary.json as a dict, summary.csv as rows. Each pickles
+(a SolveResult's problem as the scene it was assembled from, assembled again on first use).
 """
 
 import csv
@@ -11,6 +12,10 @@ import json
 
 class SolveResult:
     """One solve: the interface histories, the tables of reactions.csv and history.csv, summary.json.
+
+    history: history.csv's columns (iteration, relaxations, indicator, error, rank, wall_s,
+    error_estimate) and sparse_solves, one array entry per iteration; error and error_estimate are
+    NaN where the file's cell is empty (no reference; an estimate not yet known).
 
     Interface arrays (the library's layout, NumPy order 'F': column k is instant t_k; d = dimension,
     2 or 3):

@@ -16,7 +16,8 @@ namespace stc {
 namespace {
 
 constexpr int kUnset = 0;
-std::atomic<int> chosen{kUnset};
+std::atomic<int> chosen{kUnset};  // setThreadCount's, for every thread
+thread_local int scoped = kUnset;  // the innermost ThreadCountScope's on this thread
 
 int fromEnvironment() {
   const char* text = std::getenv("STC_THREADS");
@@ -27,6 +28,14 @@ int fromEnvironment() {
     throw InputError(std::string("environment variable STC_THREADS = '") + text + "': must be an integer in [1, " +
                      std::to_string(maxThreadCount()) + "]");
   return static_cast<int>(n);
+}
+
+int checkedCount(int n) {
+  const int most = maxThreadCount();
+  if (n < 1 || n > most)
+    throw InputError("thread count " + std::to_string(n) + ": must be in [1, " + std::to_string(most) + "] (four times the " +
+                     std::to_string(most / 4) + " hardware threads of this machine; more only adds switching)");
+  return n;
 }
 
 // A body that called parallelFor again would wait for the pool it runs on: refused.
@@ -61,6 +70,7 @@ class FirstError {
 }  // namespace
 
 int threadCount() {
+  if (scoped != kUnset) return scoped;
   const int n = chosen.load();
   if (n != kUnset) return n;
   static const int environment = fromEnvironment();
@@ -69,13 +79,11 @@ int threadCount() {
 
 int maxThreadCount() { return 4 * static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
-void setThreadCount(int n) {
-  const int most = maxThreadCount();
-  if (n < 1 || n > most)
-    throw InputError("thread count " + std::to_string(n) + ": must be in [1, " + std::to_string(most) + "] (four times the " +
-                     std::to_string(most / 4) + " hardware threads of this machine; more only adds switching)");
-  chosen.store(n);
-}
+void setThreadCount(int n) { chosen.store(checkedCount(n)); }
+
+ThreadCountScope::ThreadCountScope(int n) : previous_(scoped) { scoped = checkedCount(n); }
+
+ThreadCountScope::~ThreadCountScope() { scoped = previous_; }
 
 void parallelFor(int count, int threads, const std::function<void(int, int)>& body) {
   requireOutermost();

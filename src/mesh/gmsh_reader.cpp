@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/missing_file_error.hpp"
 #include "stcontact/mesh/detail/gmsh_sections.hpp"
 
 namespace stc::detail {
@@ -363,8 +364,11 @@ GmshData readSections(std::istream& in, const std::string& source_name, int dime
 std::ifstream openMeshFile(const std::filesystem::path& file) {
   std::error_code ec;
   std::ifstream in(file);
-  if (!in || std::filesystem::is_directory(file, ec))
-    throw InputError("cannot open mesh file '" + file.string() + "'");
+  if (!in || std::filesystem::is_directory(file, ec)) {
+    const std::string message = "cannot open mesh file '" + file.string() + "'";
+    if (MissingFileError::isMissing(file)) throw MissingFileError(message, file.string());
+    throw InputError(message);
+  }
   return in;
 }
 

@@ -50,7 +50,8 @@
 namespace stc {
 
 /// Reads `file` (see the top of this header). A file that cannot be opened is an InputError
-/// "cannot open mesh file 'X'". The mesh is finalised (group nodes filled) and validated.
+/// "cannot open mesh file 'X'" (a MissingFileError when it does not exist). The mesh is finalised
+/// (group nodes filled) and validated.
 TriMesh readGmsh(const std::filesystem::path& file);
 
 /// Parses MSH 4.1 ASCII text from `in`; `source_name` prefixes every error message.

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/missing_file_error.hpp"
 #include "stcontact/core/overloaded.hpp"
 #include "stcontact/fem/elasticity.hpp"
 #include "stcontact/fem/elasticity_3d.hpp"
@@ -159,14 +160,22 @@ std::vector<char> heldAtZero(const Problem& p, const std::vector<int>& owner) {
   return zero;
 }
 
-// Runs `step`, prefixing any InputError with the scene file and the key it concerns.
+// `message` prefixed with the scene file and the key it concerns.
+std::string inContext(const Scene& scene, const std::string& key, const std::string& message) {
+  const std::string file = scene.source.empty() ? "<scene>" : scene.source.string();
+  return file + ": " + (key.empty() ? "" : "key '" + key + "': ") + message;
+}
+
+// Runs `step`, prefixing any InputError with the scene file and the key it concerns; a missing
+// file stays a MissingFileError.
 template <class Step>
 auto withContext(const Scene& scene, const std::string& key, Step&& step) {
   try {
     return step();
+  } catch (const MissingFileError& e) {
+    throw MissingFileError(inContext(scene, key, e.what()), e.path());
   } catch (const InputError& e) {
-    const std::string file = scene.source.empty() ? "<scene>" : scene.source.string();
-    throw InputError(file + ": " + (key.empty() ? "" : "key '" + key + "': ") + e.what());
+    throw InputError(inContext(scene, key, e.what()));
   }
 }
 

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/missing_file_error.hpp"
 #include "stcontact/scene/detail/guarded_parse.hpp"
 #include "stcontact/scene/detail/scene_errors.hpp"
 #include "stcontact/scene/detail/scene_overrides.hpp"
@@ -425,7 +426,11 @@ Scene readScene(const std::filesystem::path& file, const std::vector<std::string
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) errors.failFile("is a folder, not a scene file");
   std::ifstream in(file, std::ios::binary);
-  if (!in) errors.failFile("cannot open the scene file (missing or unreadable)");
+  if (!in) {
+    const std::string message = "cannot open the scene file (missing or unreadable)";
+    if (MissingFileError::isMissing(file)) errors.failMissingFile(message);
+    errors.failFile(message);
+  }
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) errors.failFile("cannot read the scene file");

@@ -1,9 +1,12 @@
 // stc::parallelFor / parallelRanges (src/core/threads.hpp): every item exactly once, ranges that
-// tile [0, count), exceptions carried out of the threads, nesting refused, the count's rules.
+// tile [0, count), exceptions carried out of the threads, nesting refused, the count's rules (a
+// scope sets the count of its own thread only).
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <latch>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "stcontact/core/input_error.hpp"
@@ -69,5 +72,33 @@ TEST(ThreadCount, RefusesZeroAndIsRestoredByItsScope) {
     const stc::ThreadCountScope scope(3);
     EXPECT_EQ(stc::threadCount(), 3);
   }
+  EXPECT_EQ(stc::threadCount(), before);
+}
+
+// Two threads inside scopes of their own at the same time (the Python module's threads= on two
+// Python threads): each sees its own count, and neither changes the other's nor the process's.
+TEST(ThreadCount, AScopeSetsTheCountOfItsOwnThreadOnly) {
+  const int process = stc::threadCount();
+  std::latch both_scoped(2), both_read(2);
+  int seen_one = 0, seen_three = 0;
+  const auto scoped = [&](int n, int& seen) {
+    const stc::ThreadCountScope scope(n);
+    both_scoped.arrive_and_wait();
+    seen = stc::threadCount();
+    both_read.arrive_and_wait();
+  };
+  std::thread one([&] { scoped(1, seen_one); });
+  std::thread three([&] { scoped(3, seen_three); });
+  one.join();
+  three.join();
+  EXPECT_EQ(seen_one, 1);
+  EXPECT_EQ(seen_three, 3);
+  EXPECT_EQ(stc::threadCount(), process);
+}
+
+TEST(ThreadCount, AScopeIsRefusedAsSetThreadCountIs) {
+  const int before = stc::threadCount();
+  EXPECT_THROW(stc::ThreadCountScope(0), stc::InputError);
+  EXPECT_THROW(stc::ThreadCountScope(stc::maxThreadCount() + 1), stc::InputError);
   EXPECT_EQ(stc::threadCount(), before);
 }

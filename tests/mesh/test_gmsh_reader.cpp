@@ -5,12 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/missing_file_error.hpp"
 #include "stcontact/mesh/gmsh_reader.hpp"
 
 namespace stc {
@@ -228,9 +230,22 @@ TEST(GmshReader, RefusesElementOnUnknownNode) {
 TEST(GmshReader, RefusesMissingFileNamingIt) {
   try {
     readGmsh("/nonexistent/part.msh");
-    FAIL() << "no InputError";
-  } catch (const InputError& e) {
+    FAIL() << "no MissingFileError";
+  } catch (const MissingFileError& e) {  // an InputError that also carries the path (Python: FileNotFoundError)
     EXPECT_EQ(std::string(e.what()), "cannot open mesh file '/nonexistent/part.msh'");
+    EXPECT_EQ(e.path(), "/nonexistent/part.msh");
+  }
+}
+
+TEST(GmshReader, AFolderIsAnInputErrorButNotAMissingFile) {
+  const std::string folder = std::filesystem::temp_directory_path().string();
+  try {
+    readGmsh(folder);
+    FAIL() << "no InputError";
+  } catch (const MissingFileError&) {
+    FAIL() << "a folder exists: not a missing file";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot open mesh file '" + folder + "'");
   }
 }
 

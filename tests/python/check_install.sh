@@ -13,6 +13,8 @@ import os, sys
 import stcontact
 scene_file, site = sys.argv[1:]
 assert os.path.dirname(stcontact.__file__) == os.path.join(site, "stcontact"), stcontact.__file__
+for name in ("_core.pyi", "py.typed"):  # the type stubs and the typed-package marker (PEP 561)
+    assert os.path.isfile(os.path.join(site, "stcontact", name)), name
 result = stcontact.solve(scene_file, "fas-apriori", sets=["mesh.arc_nodes=21", "time.steps=21"])
 assert result.converged, result.summary["message"]
 print("stcontact", stcontact.__version__, "from", os.path.dirname(stcontact.__file__), "->", result)

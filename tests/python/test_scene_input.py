@@ -1,6 +1,8 @@
 """Scenes from files and from dicts go through the same checks: bad input raises InputError, a
-ValueError whose message is the program's "error:" line without its prefix."""
+ValueError whose message is the program's "error:" line without its prefix; a scene or mesh file
+that does not exist raises FileNotFoundError with that message, ENOENT and the path."""
 
+import errno
 import tomllib
 
 import pytest
@@ -14,8 +16,7 @@ def seed_dict():
         return tomllib.load(f)
 
 
-@pytest.mark.parametrize("name", ["malformed.toml", "bad_table_header.toml", "truncated.toml", "inverted.toml",
-                                  "no_such_scene.toml"])
+@pytest.mark.parametrize("name", ["malformed.toml", "bad_table_header.toml", "truncated.toml", "inverted.toml"])
 def test_bad_files_give_the_programs_message(cli, name):
     path = BAD_DIR / name
     expected = cli_error(cli, "check", path)
@@ -23,6 +24,35 @@ def test_bad_files_give_the_programs_message(cli, name):
         stcontact.check(str(path))
     assert str(raised.value) == expected
     assert isinstance(raised.value, stcontact.InputError)
+
+
+def test_a_missing_scene_file_raises_file_not_found(cli):
+    path = BAD_DIR / "no_such_scene.toml"
+    expected = cli_error(cli, "check", path)
+    with pytest.raises(FileNotFoundError) as raised:
+        stcontact.check(str(path))
+    error = raised.value
+    assert error.errno == errno.ENOENT and error.filename == str(path)
+    assert error.strerror == expected  # the program's message, unchanged
+    assert not isinstance(error, ValueError)
+
+
+def test_a_missing_mesh_file_raises_file_not_found(cli):
+    path = BAD_DIR / "truncated.toml"
+    expected = cli_error(cli, "check", path, "--set", "mesh.file=no_such.msh")
+    scene = stcontact.load_scene(path, sets=["mesh.file=no_such.msh"])  # the mesh is read at the first use
+    with pytest.raises(FileNotFoundError) as raised:
+        scene.check()
+    error = raised.value
+    assert error.errno == errno.ENOENT and error.filename == str(BAD_DIR / "no_such.msh")
+    assert error.strerror == expected
+
+
+def test_a_folder_given_as_scene_stays_an_input_error(cli):
+    expected = cli_error(cli, "check", BAD_DIR)
+    with pytest.raises(stcontact.InputError) as raised:
+        stcontact.check(BAD_DIR)
+    assert str(raised.value) == expected
 
 
 @pytest.mark.parametrize("override", ["material.poisson=0.5", "material.youngs=1.0", "contact.boundary=rim",

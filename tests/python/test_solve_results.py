@@ -44,10 +44,18 @@ def test_reactions_and_history_columns(latin):
     np.testing.assert_allclose(latin.reactions["normal_force"], latin.normal_forces.sum(axis=0), rtol=1e-12)
     assert latin.reactions["n_contact"][0] == 0 and np.isnan(latin.reactions["contact_xmin"][0])
     assert latin.reactions["n_contact"][-1] > 0
-    assert {"iteration", "relaxations", "indicator", "error", "rank", "wall_s", "sparse_solves"} == set(latin.history)
+    assert {"iteration", "relaxations", "indicator", "error", "rank", "wall_s", "error_estimate",
+            "sparse_solves"} == set(latin.history)
     assert all(column.shape == (latin.iterations,) for column in latin.history.values())
     assert latin.history["indicator"][-1] <= 1e-5 and latin.converged
     assert latin.error == pytest.approx(latin.history["error"][-1], rel=1e-15)
+
+
+def test_the_error_estimate_is_history_csvs_and_what_the_solve_stopped_on(latin):
+    estimate = latin.history["error_estimate"]
+    # +inf until the contraction rate is known: an empty cell in history.csv, NaN here.
+    assert np.isnan(estimate[0]) and np.isfinite(estimate[-1])
+    assert latin.summary["error_estimate"] == estimate[-1] and estimate[-1] <= 1e-5
 
 
 def test_displacement_fields_are_rebuilt_on_request(latin, small_scene):
@@ -83,6 +91,18 @@ def test_callback_sees_every_record_and_stops_the_solve(small_scene):
     assert result.iterations == 3 and [r.iteration for r in records] == [1, 2, 3]
     assert records[-1].error is not None and records[-1].indicator > 0
     assert result.summary["message"] == "stopped by the callback"
+
+
+def test_records_carry_the_error_estimate_of_the_history(small_scene):
+    records = []
+    result = stcontact.solve(small_scene, "latin", tol=1e-12, max_iterations=30, callback=records.append)
+    assert len(records) == result.iterations == 30
+    # The records' estimate is the history's, None where the history has NaN (not yet known).
+    for record, in_history in zip(records, result.history["error_estimate"]):
+        assert (record.error_estimate is None) == bool(np.isnan(in_history))
+        assert record.error_estimate is None or record.error_estimate == in_history
+    assert records[0].error_estimate is None and "error_estimate=None" in repr(records[0])
+    assert records[-1].error_estimate == result.summary["error_estimate"]
 
 
 def test_callback_returning_none_goes_on(small_scene):

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/missing_file_error.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 
 namespace stc {
@@ -231,9 +232,23 @@ TEST(SceneReader, ParametersJsonIsTheTableAsAJsonObject) {
 TEST(SceneReader, MissingFileIsAnInputErrorNamingIt) {
   try {
     readScene("/nonexistent/folder/gone.toml");
+    FAIL() << "no MissingFileError";
+  } catch (const MissingFileError& error) {  // an InputError that also carries the path
+    EXPECT_EQ(std::string(error.what()),
+              "/nonexistent/folder/gone.toml: cannot open the scene file (missing or unreadable)");
+    EXPECT_EQ(error.path(), "/nonexistent/folder/gone.toml");
+  }
+}
+
+TEST(SceneReader, AFolderIsAnInputErrorButNotAMissingFile) {
+  const std::string folder = std::filesystem::temp_directory_path().string();
+  try {
+    readScene(folder);
     FAIL() << "no InputError";
+  } catch (const MissingFileError&) {
+    FAIL() << "a folder exists: not a missing file";
   } catch (const InputError& error) {
-    EXPECT_THAT(error.what(), StartsWith("/nonexistent/folder/gone.toml: cannot open"));
+    EXPECT_THAT(error.what(), EndsWith(": is a folder, not a scene file"));
   }
 }
 

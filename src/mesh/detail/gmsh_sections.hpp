@@ -66,7 +66,7 @@ void finishMesh(MeshT& mesh, const std::string& source_name) {
 }
 
 /// Opens `file` for reading; InputError "cannot open mesh file 'X'" if it cannot (a folder included:
-/// an ifstream "opens" a directory, then reads nothing).
+/// an ifstream "opens" a directory, then reads nothing), a MissingFileError when nothing is there.
 std::ifstream openMeshFile(const std::filesystem::path& file);
 
 }  // namespace stc::detail

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/missing_file_error.hpp"
 
 namespace stc::detail {
 
@@ -113,6 +114,10 @@ void ErrorReporter::missing(std::string_view path) const {
 
 void ErrorReporter::failFile(const std::string& message) const {
   throw InputError(oneLine(file_ + ": " + message));
+}
+
+void ErrorReporter::failMissingFile(const std::string& message) const {
+  throw MissingFileError(oneLine(file_ + ": " + message), file_);
 }
 
 void ErrorReporter::failAt(std::size_t line, std::size_t column, const std::string& message) const {

@@ -40,6 +40,8 @@ class ErrorReporter {
   [[noreturn]] void missing(std::string_view path) const;
   /// Throws "FILE: <message>" about the file as a whole (I/O, --set syntax).
   [[noreturn]] void failFile(const std::string& message) const;
+  /// The same as a MissingFileError: nothing exists at FILE.
+  [[noreturn]] void failMissingFile(const std::string& message) const;
   /// Throws "FILE:LINE:COLUMN: <message>" (TOML syntax errors).
   [[noreturn]] void failAt(std::size_t line, std::size_t column, const std::string& message) const;
   /// The same at byte `offset` of `text`: line and column (in bytes, from 1) counted from it.
