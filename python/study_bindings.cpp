@@ -166,6 +166,8 @@ py::dict strategyDict(const StrategyMeasurement& m) {
   s["relaxations"] = m.relaxations;
   s["indicator"] = m.indicator;
   s["final_error"] = m.final_error;
+  s["final_error_estimate"] = m.final_error_estimate;
+  s["sparse_solves"] = m.sparse_solves;
   s["best_error"] = m.best_error;
   s["error_run_s"] = m.error_run_s;
   s["prerequisite_s"] = m.prerequisite_s;

@@ -102,7 +102,7 @@ WorkPoint referencePoint(const RunOutcome& run, const ErrorReference& reference)
   const SolveSummary& s = run.result.summary;
   WorkPoint p;
   p.iteration = s.iterations;
-  p.sparse_solves = s.history.empty() ? 0 : s.history.back().sparse_solves;
+  p.sparse_solves = s.sparseSolves();
   p.indicator = s.indicator;
   p.error = reference.relativeError(run.result.interface.lambda);
   p.wall_s = run.total_s;
@@ -115,6 +115,8 @@ void describeResult(StrategyMeasurement& m, const SolveSummary& s) {
   m.iterations = s.iterations;
   m.relaxations = s.relaxations;
   m.indicator = s.indicator;
+  m.final_error_estimate = s.error_estimate;
+  m.sparse_solves = s.sparseSolves();
   m.final_error = s.error;
 }
 

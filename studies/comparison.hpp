@@ -26,6 +26,12 @@ struct StrategyMeasurement {
   int iterations = 0;
   int relaxations = 0;
   double indicator = 0.0;
+  /// The estimate the strategy stopped on (+∞ when it never had one; 0 for the exact reference).
+  double final_error_estimate = 0.0;
+  /// Right-hand sides solved with a sparse factor by the whole solve (SolveSummary::sparseSolves).
+  int sparse_solves = 0;
+  /// True error at termination of a solve that stopped on its own estimate at the tolerance: what a
+  /// user gets from `stcontact solve --tol`.
   std::optional<double> final_error;
   /// Smallest true error of the error run (how close a strategy came to a target it did not reach).
   std::optional<double> best_error;

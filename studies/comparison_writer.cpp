@@ -1,5 +1,7 @@
 #include "stcontact/studies/comparison_writer.hpp"
 
+#include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "stcontact/io/atomic_file.hpp"
@@ -7,6 +9,10 @@
 
 namespace stc {
 namespace {
+
+std::optional<double> finiteOrNone(double value) {
+  return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
+}
 
 void summaryCsvHeader(std::ostream& out) {
   out << "solver,repeats,termination,iterations,relaxations,final_indicator,final_error,median_total_s";
@@ -16,7 +22,7 @@ void summaryCsvHeader(std::ostream& out) {
   }
   for (const char* other : {"latin", "incremental"})
     for (double t : targetErrors()) out << ",time_ratio_to_" << other << "_" << targetLabel(t);
-  out << ",peak_rss_mb,rss_growth_mb,memory_since_reset,error_run_s,prerequisite_s\n";
+  out << ",peak_rss_mb,rss_growth_mb,memory_since_reset,error_run_s,prerequisite_s,sparse_solves,final_error_estimate\n";
 }
 
 }  // namespace
@@ -53,7 +59,8 @@ std::string summaryCsv(const Comparison& c) {
       for (std::size_t t = 0; t < targetErrors().size(); ++t) out << ',' << shortNumber(timeRatioTo(all, s, other, t), 3);
     out << ',' << shortNumber(m.memory.peak_mb) << ',' << shortNumber(m.memory.growthMb()) << ','
         << (m.memory.since_reset ? "true" : "false") << ',' << shortNumber(m.error_run_s) << ','
-        << shortNumber(m.prerequisite_s) << '\n';
+        << shortNumber(m.prerequisite_s) << ',' << m.sparse_solves << ',' << shortNumber(finiteOrNone(m.final_error_estimate))
+        << '\n';
   }
   return out.str();
 }

@@ -93,13 +93,13 @@ VtuGrid gridOf(const Problem& problem, VtuPrecision precision) {
 std::string historyCsv(const SolveSummary& summary) {
   std::ostringstream out;
   out.precision(12);
-  out << "iteration,relaxations,indicator,error,rank,wall_s,error_estimate\n";
+  out << "iteration,relaxations,indicator,error,rank,wall_s,error_estimate,sparse_solves\n";
   for (const auto& r : summary.history) {
     out << r.iteration << ',' << r.relaxations << ',' << r.indicator << ',';
     if (r.error) out << *r.error;
     out << ',' << r.rank << ',' << r.wall_s << ',';
     if (std::isfinite(r.error_estimate)) out << r.error_estimate;
-    out << '\n';
+    out << ',' << r.sparse_solves << '\n';
   }
   return out.str();
 }
@@ -111,6 +111,7 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
       .add("message", summary.message)
       .add("iterations", summary.iterations)
       .add("relaxations", summary.relaxations)
+      .add("sparse_solves", summary.sparseSolves())
       .add("indicator", summary.indicator)
       .add("error", summary.error)
       .add("error_estimate", std::isfinite(summary.error_estimate) ? std::optional<double>(summary.error_estimate)

@@ -57,6 +57,10 @@ struct SolveSummary {
   double wall_s = 0.0;
 
   bool converged() const { return termination == Termination::Converged; }
+  /// Right-hand sides solved with a sparse factor over the whole solve (its stages included): the
+  /// last record's count, 0 without records. The a posteriori basis's incremental solve and SVD,
+  /// made before fas-aposteriori's iteration, are not in it.
+  int sparseSolves() const { return history.empty() ? 0 : history.back().sparse_solves; }
   /// Sets `message` from the reason, the remarks and the stages.
   void composeMessage();
   /// Appends `stage` and its clause to the message.

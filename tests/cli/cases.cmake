@@ -126,6 +126,7 @@ set(stc_refusals
   "refuse_free_translation|key 'dirichlet': the conditions leave the body free to move rigidly \\(translation along x\\)|${bad}/free_translation.toml"
   "refuse_loads_only|free to move rigidly \\(translation along x. translation along y. rotation about z\\)|${bad}/loads_only.toml"
   "bad_check_free_translation|free to move rigidly \\(translation along x\\).*prescribe it on a boundary|check|${bad}/free_translation.toml"
+  "bad_check_loads_only|free to move rigidly \\(translation along x. translation along y. rotation about z\\)|check|${bad}/loads_only.toml"
   "refuse_search_scale_tiny|the search direction's scale κ R / L = 1e-08 .* must be in \\[0\\.01, 100\\]|${seed}|--set|solver.search_scale=1e-8"
   "refuse_arc_nodes_overflow|the problem does not fit in memory: mesh\\.arc_nodes = 2147483647|${seed}|--set|mesh.arc_nodes=2147483647"
   "refuse_steps_huge|does not fit in memory: .*time\\.steps = 100000000|${seed}|--set|time.steps=100000000"

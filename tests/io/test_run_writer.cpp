@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <sstream>
+#include <string>
 
 #include "fixtures/seed_scene.hpp"
 #include "io/vtu_reading.hpp"
@@ -75,6 +77,34 @@ TEST(RunWriter, FramesHoldTheStressTensorInVtkOrderAndTheStatesAsInt8) {
   for (double code : codes) EXPECT_TRUE(code == -1 || code == 0 || code == 1 || code == 2) << code;
   EXPECT_TRUE(codes.count(-1) && codes.count(2)) << "t = 1 slides: contact nodes slip, the others are not contact nodes";
   EXPECT_EQ(file.array("PointData", "displacement").attributes.at("type"), "Float64");
+}
+
+}  // namespace
+
+namespace {
+
+// The sparse solves a solve spent are in history.csv (the last column, each record's count so far)
+// and in summary.json (the last record's): for the incremental solver, the Delassus columns and the
+// load terms, the same count on every instant.
+TEST(RunWriter, HistoryAndSummaryCarryTheSparseSolvesSpent) {
+  const stc::Problem problem = stc::buildProblem(stc::test::seedScene(21, 11));
+  const stc::SolveResult result = stc::solveIncremental(problem);
+  const std::string csv = stc::historyCsv(result.summary);
+  std::istringstream lines(csv);
+  std::string header, row;
+  std::getline(lines, header);
+  EXPECT_EQ(header, "iteration,relaxations,indicator,error,rank,wall_s,error_estimate,sparse_solves");
+  const int spent = result.summary.sparseSolves();
+  EXPECT_EQ(spent, 2 * 21 + static_cast<int>(problem.loads.size()));
+  int rows = 0;
+  while (std::getline(lines, row)) {
+    ++rows;
+    EXPECT_EQ(row.substr(row.rfind(',') + 1), std::to_string(spent)) << row;
+  }
+  EXPECT_EQ(rows, 11);
+  const std::string json = stc::summaryJson(problem, result.summary, {"{}", "test"});
+  EXPECT_NE(json.find("\"relaxations\": 0,\n  \"sparse_solves\": " + std::to_string(spent) + ","), std::string::npos)
+      << json;
 }
 
 }  // namespace

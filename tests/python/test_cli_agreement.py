@@ -40,7 +40,7 @@ def test_history_equals_the_programs(solved):
     out, result = solved
     rows = read_csv(out / "history.csv")
     assert len(rows) == len(result.history["iteration"]) == result.iterations
-    for column in ["iteration", "relaxations", "rank"]:
+    for column in ["iteration", "relaxations", "rank", "sparse_solves"]:
         assert [str(v) for v in result.history[column]] == [row[column] for row in rows], column
     for column in ["indicator", "error", "error_estimate"]:  # NaN where the file's cell is empty
         module = ["" if math.isnan(v) else printed(v) for v in result.history[column]]

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "studies/text_lines.hpp"
@@ -36,6 +37,15 @@ Comparison handMade() {
     slow.runs.push_back({r, history(3, 0.1, 2.0), 6.0});
     exact.runs.push_back({r, {{5, 0, 20, 1e-16, 0.0, 0.5}}, 0.5});
   }
+  c.tolerance = 1e-6;
+  latin.termination = Termination::Converged;
+  latin.relaxations = 8;
+  latin.sparse_solves = 80;
+  latin.final_error_estimate = 9e-7;
+  latin.final_error = 5e-9;
+  slow.relaxations = 3;
+  slow.final_error_estimate = std::numeric_limits<double>::infinity();  // never had an estimate
+  exact.termination = Termination::Converged;
   c.strategies = {latin, slow, exact};
   return c;
 }
@@ -54,7 +64,7 @@ TEST(SummaryMarkdown, EveryTableRowHasTheHeadersNumberOfCells) {
     for (std::size_t j = i + 1; j < all.size() && !all[j].empty(); ++j)
       EXPECT_EQ(count(all[j], '|'), cells) << all[j];
   }
-  EXPECT_EQ(tables, 4);
+  EXPECT_EQ(tables, 5);
 }
 
 TEST(SummaryMarkdown, SaysNotReachedAndMarksTheReference) {
@@ -62,6 +72,19 @@ TEST(SummaryMarkdown, SaysNotReachedAndMarksTheReference) {
   EXPECT_NE(md.find("| slow | 4 s | not reached | not reached |"), std::string::npos) << md;
   EXPECT_NE(md.find("incremental (reference)"), std::string::npos);
   EXPECT_NE(md.find("`stcontact compare toy.toml`"), std::string::npos);
+}
+
+// The first table is what `stcontact solve --tol` gives: the estimate each run stopped on, the true
+// error at termination, the median of the whole calls (latin 8 s, incremental 0.5 s: ratio 16).
+TEST(SummaryMarkdown, OpensWithTheSolveAtTheTolerance) {
+  const std::string md = summaryMarkdown(handMade());
+  const std::size_t tolerance = md.find("## A solve at tolerance 1e-06");
+  ASSERT_NE(tolerance, std::string::npos) << md;
+  EXPECT_LT(tolerance, md.find("## Time to first reach"));
+  EXPECT_NE(md.find("| latin | converged | 8 | 80 | 9e-07 | 5e-09 | 8 s | 16 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| slow | max_iterations | 3 | 0 | none | unknown | 6 s | 12 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| incremental (reference) | converged | 0 | 0 | · | 0 (the reference) | 0.5 s | 1 |"),
+            std::string::npos) << md;
 }
 
 TEST(WorkPrecisionCsv, HasOneRowPerPointOfEveryRun) {
