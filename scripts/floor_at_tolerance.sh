@@ -5,9 +5,9 @@
 # medians of REPEATS, the true error at termination from the error run). Prints one Markdown table;
 # each comparison's files stay in results/floor_at_tolerance/<scene>_<τ>/.
 #
-#   scripts/floor_at_tolerance.sh [REPEATS] [--large]     # default 3 repeats; about 6 minutes here
+#   scripts/floor_at_tolerance.sh [REPEATS] [--large]     # default 3 repeats; about 2 minutes here
 #
-# --large adds the hemisphere at divisions 16 (about 10 minutes more on 2 cores).
+# --large adds the hemisphere at divisions 16 (its incremental solve alone takes about 30 s here).
 # STC_BIN names the program (default build/bin/stcontact).
 set -euo pipefail
 repeats=${1:-3}
