@@ -177,6 +177,23 @@ ContactInterface restrictToNodes(const ContactInterface& contact, const std::vec
   return sub;
 }
 
+std::vector<int> rowsOfNodes(int d, const std::vector<int>& nodes) {
+  std::vector<int> rows;
+  rows.reserve(nodes.size() * static_cast<size_t>(d));
+  for (int i : nodes)
+    for (int a = 0; a < d; ++a) rows.push_back(d * i + a);
+  return rows;
+}
+
+std::vector<int> otherNodes(int n, const std::vector<int>& nodes) {
+  std::vector<char> in(static_cast<size_t>(n), 0);
+  for (int i : nodes) in[static_cast<size_t>(i)] = 1;
+  std::vector<int> others;
+  for (int i = 0; i < n; ++i)
+    if (!in[static_cast<size_t>(i)]) others.push_back(i);
+  return others;
+}
+
 void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale) {
   contact.search_scale_per_length = kappa * young / length_scale;
   contact.search_direction.resize(contact.rows());

@@ -69,6 +69,12 @@ ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& b
 /// Throws std::out_of_range for an index outside the interface.
 ContactInterface restrictToNodes(const ContactInterface& contact, const std::vector<int>& nodes);
 
+/// The rows d i … d i + d − 1 of each node i of `nodes`, in the nodes' order.
+std::vector<int> rowsOfNodes(int d, const std::vector<int>& nodes);
+
+/// The nodes 0 … n − 1 not in `nodes`, increasing.
+std::vector<int> otherNodes(int n, const std::vector<int>& nodes);
+
 /// Sets k = κ E ℓ_i / L on every row of every node.
 void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale);
 

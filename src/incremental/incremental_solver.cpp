@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "stcontact/incremental/cone_newton.hpp"
 #include "stcontact/incremental/lazy_delassus.hpp"
 #include "stcontact/incremental/newton_instant.hpp"
+#include "stcontact/incremental/reach_zone.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
 
 namespace stc {
@@ -206,10 +208,9 @@ SolveResult march(const Problem& problem, const IterationCallback& callback, Clo
   return result;
 }
 
-// The plane law with the dense Delassus operator (the header's method).
-SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
-                       Clock::time_point start, const SpdFactor& factor) {
-  CondensedInterface condensed = CondensedInterface::build(problem, factor);
+// The plane law with the dense Delassus operator of `condensed` (the header's method).
+SolveResult solvePlaneOn(const Problem& problem, CondensedInterface& condensed, const IncrementalOptions& options,
+                         const IterationCallback& callback, Clock::time_point start) {
   giveHeldRowsCompliance(problem.contact, condensed.delassus);
   const int nc = problem.contact.size();
   const Eigen::VectorXd rho = condensed.delassus.diagonal().cwiseInverse();  // ρ = 1 / diag(W)
@@ -222,6 +223,51 @@ SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options
     return solveInstantByNewton(law, lambda, options.tolerance, options.max_newton_iterations);
   };
   return march(problem, callback, start, solve_at, [&] { return condensed.sparse_solves; });
+}
+
+SolveResult solvePlaneOnEveryNode(const Problem& problem, const IncrementalOptions& options,
+                                  const IterationCallback& callback, Clock::time_point start, const SpdFactor& factor) {
+  CondensedInterface condensed = CondensedInterface::build(problem, factor);
+  return solvePlaneOn(problem, condensed, options, callback, start);
+}
+
+// A node left out of the zone penetrates when its gap is below −1e-12 times the displacement scale:
+// far above the round-off of v = v_0 + W λ, far below any gap the law resolves.
+constexpr double kFarPenetration = 1e-12;
+
+std::string nodesText(std::size_t count, int n) {
+  return std::to_string(count) + " of " + std::to_string(n) + " contact nodes";
+}
+
+// The plane law on the nodes within reach of the prescribed motion (reach_zone.hpp), lifted to every
+// node; on every node when there is no such zone, or when a node left out penetrates.
+SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
+                       Clock::time_point start, const SpdFactor& factor) {
+  const std::optional<std::vector<int>> zone = options.zone_within_reach ? reachZone(problem) : std::nullopt;
+  if (!zone) return solvePlaneOnEveryNode(problem, options, callback, start, factor);
+  ZoneCondensation c = ZoneCondensation::build(problem, factor, *zone);
+  Problem part = problem;
+  part.contact = restrictToNodes(problem.contact, c.zone);
+  SolveResult result = solvePlaneOn(part, c.on_zone, options, callback, start);
+  result.interface = c.lift(problem.contact, result.interface, result.summary.iterations);
+  const int n = problem.contact.size();
+  const std::string zone_text = nodesText(c.zone.size(), n);
+  const std::vector<int> wrong = penetratingNodes(problem.contact, result.interface, c.far, kFarPenetration);
+  if (wrong.empty()) {
+    result.summary.addStage({SolveStage::Kind::ContactZone,
+                             "solved on " + zone_text + " (the zone within reach of the prescribed motion)", 0, 0,
+                             0.0, static_cast<int>(c.zone.size()), 1});
+    return result;
+  }
+  const int spent = result.summary.sparseSolves();
+  SolveResult whole = solvePlaneOnEveryNode(problem, options, callback, start, factor);
+  for (IterationRecord& record : whole.summary.history) record.sparse_solves += spent;
+  whole.summary.addStage({SolveStage::Kind::ContactZone,
+                          "solved on every node: " + std::to_string(wrong.size()) +
+                              " nodes outside the zone within reach of the prescribed motion (" + zone_text +
+                              ") penetrated",
+                          0, 0, 0.0, n, 2});
+  return whole;
 }
 
 // The cone law of cone_newton.hpp with the Delassus columns computed on demand.

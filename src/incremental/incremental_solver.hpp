@@ -33,7 +33,8 @@
 // ‖F‖∞ / S_k set by round-off is below 1e-15 on the seed scene (measured: 4e-16), under the
 // default 1e-13.
 //
-// Cost and size. The plane law (2D): 2n_C + (load terms) sparse solves to build W and v_0, then per
+// Cost and size. The plane law (2D): 2n_C + (load terms) sparse solves to build W and v_0 (2|Z| +
+// (load terms) on the zone within reach of a prescribed translation, reach_zone.hpp), then per
 // Newton iteration O(n_C · n_A) to evaluate F and O(n_A³) for the LU (n_A: closed nodes); W is dense
 // 2n_C × 2n_C, 32 n_C² bytes: 0.3 MB for the seed (n_C = 101), 3.2 GB for n_C = 10⁴. The cone law
 // (every 3D scene, IncrementalOptions::cone_law in 2D) needs only the columns of W of the nodes that

@@ -15,12 +15,18 @@ struct IncrementalOptions {
   /// (src/incremental/cone_newton.hpp), as every 3D scene is: the same solution to round-off, memory
   /// 8 d² n_C n_ever-closed bytes instead of 32 n_C².
   bool cone_law = false;
+  /// The plane law on the contact nodes the prescribed motion can reach, checked after the solve
+  /// (src/incremental/reach_zone.hpp): the same solution to round-off, d |Z| sparse solves and a
+  /// dense W of (d |Z|)² instead of d n_C and (d n_C)². Without a prescribed translation, or when
+  /// a node left out penetrates, every node is solved.
+  bool zone_within_reach = true;
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
     visit("tolerance", o.tolerance, inOpenUnit(), Exposure::Library);
     visit("max_newton_iterations", o.max_newton_iterations, atLeast(1), Exposure::Library);
     visit("cone_law", o.cone_law, anyFlag(), Exposure::Library);
+    visit("zone_within_reach", o.zone_within_reach, anyFlag(), Exposure::Library);
   }
   void validate() const { validateFields(*this, "incremental"); }
 };

@@ -1,0 +1,67 @@
+#include "stcontact/incremental/reach_zone.hpp"
+
+#include <algorithm>
+
+#include "stcontact/incremental/lazy_delassus.hpp"
+#include "stcontact/problem/prescribed_reach.hpp"
+
+namespace stc {
+
+std::optional<std::vector<int>> reachZone(const Problem& problem) {
+  const std::optional<Eigen::MatrixXd> w = prescribedTranslation(problem);
+  if (!w) return std::nullopt;
+  std::vector<int> zone = nodesWithinReach(problem.contact, *w, 0.0);
+  if (zone.empty() || static_cast<int>(zone.size()) == problem.contact.size()) return std::nullopt;
+  return zone;
+}
+
+ZoneCondensation ZoneCondensation::build(const Problem& problem, const SpdFactor& stiffness_free,
+                                         std::vector<int> zone) {
+  const ContactInterface& contact = problem.contact;
+  const int d = contact.dimension;
+  ZoneCondensation c;
+  c.far = otherNodes(contact.size(), zone);
+  c.zone = std::move(zone);
+  const std::vector<int> rows = rowsOfNodes(d, c.zone), far_rows = rowsOfNodes(d, c.far);
+  const Eigen::SparseMatrix<double> B_zone = restrictToNodes(contact, c.zone).B;
+  const Eigen::SparseMatrix<double> B_far = restrictToNodes(contact, c.far).B;
+  const Eigen::MatrixXd responses = stiffness_free.solveOnThreads(Eigen::MatrixXd(B_zone.transpose()));  // K⁻¹ B_Zᵀ
+  c.on_zone.delassus = B_zone * responses;
+  c.on_zone.delassus = 0.5 * (c.on_zone.delassus + c.on_zone.delassus.transpose()).eval();  // symmetric to round-off
+  c.far_delassus = B_far * responses;
+  const Eigen::MatrixXd free = freeInterfaceResponse(problem, stiffness_free);
+  c.on_zone.free_response = free(rows, Eigen::all);
+  c.far_free = free(far_rows, Eigen::all);
+  c.on_zone.sparse_solves = static_cast<int>(rows.size() + problem.loads.size());
+  return c;
+}
+
+InterfaceHistory ZoneCondensation::lift(const ContactInterface& contact, const InterfaceHistory& on_zone,
+                                        int solved) const {
+  const int d = contact.dimension;
+  InterfaceHistory h = InterfaceHistory::zeros(contact, on_zone.numSteps());
+  const std::vector<int> rows = rowsOfNodes(d, zone), far_rows = rowsOfNodes(d, far);
+  h.lambda(rows, Eigen::all) = on_zone.lambda;
+  h.v(rows, Eigen::all) = on_zone.v;
+  Eigen::MatrixXd v_far = far_free.leftCols(solved);
+  v_far.noalias() += far_delassus * on_zone.lambda.leftCols(solved);
+  h.v(far_rows, Eigen::seqN(0, solved)) = v_far;
+  return h;
+}
+
+std::vector<int> penetratingNodes(const ContactInterface& contact, const InterfaceHistory& h,
+                                  const std::vector<int>& far, double tolerance) {
+  const int d = contact.dimension;
+  const double gap_scale = contact.initial_gap.size() > 0 ? contact.initial_gap.cwiseAbs().maxCoeff() : 0.0;
+  std::vector<int> penetrating;
+  for (int k = 0; k < h.numSteps(); ++k) {
+    const double floor = -tolerance * std::max(h.v.col(k).cwiseAbs().maxCoeff(), gap_scale);
+    for (int i : far)
+      if (!(contact.initial_gap[i] + h.v(d * i, k) >= floor)) penetrating.push_back(i);  // NaN too
+  }
+  std::sort(penetrating.begin(), penetrating.end());
+  penetrating.erase(std::unique(penetrating.begin(), penetrating.end()), penetrating.end());
+  return penetrating;
+}
+
+}  // namespace stc
