@@ -45,6 +45,10 @@ class ConeLaw {
   /// Sets the instant: v_0(:, k) and the previous instant's interface displacements (zero for k = 0).
   void setInstant(const Eigen::VectorXd& v0, const Eigen::VectorXd& v_previous);
 
+  /// Computes the Delassus columns and the scaling ρ of `nodes` now, in blocks on every thread,
+  /// rather than a few at a time as they first close (evaluate does that for the others).
+  void prepare(const std::vector<int>& nodes) { learnScaling(nodes); }
+
   Evaluation evaluate(const Eigen::VectorXd& lambda);
   bool newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eigen::VectorXd& step);
   /// S_k = max(‖λ‖∞, max_i ρ_i ‖v_0(:, k)‖∞), the largest ρ_n or ρ_t known so far.

@@ -276,6 +276,10 @@ SolveResult solveCone(const Problem& problem, const IncrementalOptions& options,
   const Eigen::MatrixXd v0 = freeInterfaceResponse(problem, factor);
   LazyDelassus delassus(problem, factor);
   ConeLaw law(problem, delassus);
+  // The columns of the nodes within reach of the prescribed translation, in blocks on every thread,
+  // before the march (reach_zone.hpp): most of those the march would ask for a few at a time.
+  if (options.zone_within_reach)
+    if (const std::optional<std::vector<int>> zone = reachZone(problem)) law.prepare(*zone);
   const auto solve_at = [&](int k, const Eigen::VectorXd& lambda, const Eigen::VectorXd& v_previous) {
     law.setInstant(v0.col(k), v_previous);
     return solveInstantByNewton(law, lambda, options.tolerance, options.max_newton_iterations);

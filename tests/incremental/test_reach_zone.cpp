@@ -8,6 +8,7 @@
 
 #include <algorithm>
 
+#include "fixtures/hemisphere_scene.hpp"
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
@@ -61,6 +62,23 @@ TEST(IncrementalWithinReach, SolvesTheWholeProblemToRoundOffWithFewerSparseSolve
             std::string::npos)
       << zone.summary.message;
   EXPECT_TRUE(whole.summary.stages.empty());
+}
+
+// In 3D the cone law computes the zone's Delassus columns before the march, in blocks, with their
+// scaling (a node whose columns exist but whose ρ were not learnt would stay open): the same
+// solution to round-off as columns computed as nodes close, at least the zone's columns.
+TEST(IncrementalWithinReach, TheConeLawPreparesTheZonesColumnsAndSolvesTheSameProblem) {
+  const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(6, 21));
+  const stc::SolveResult zone = stc::solveIncremental(problem);
+  const stc::SolveResult lazy = stc::solveIncremental(problem, onEveryNode());
+  ASSERT_TRUE(zone.summary.converged()) << zone.summary.message;
+  ASSERT_TRUE(lazy.summary.converged()) << lazy.summary.message;
+  const double force = lazy.interface.lambda.cwiseAbs().maxCoeff();
+  ASSERT_GT(force, 0.0);
+  EXPECT_LE(largestDifference(zone.interface.lambda, lazy.interface.lambda), 1e-11 * force);
+  const int zone_nodes = static_cast<int>(stc::reachZone(problem)->size());
+  EXPECT_GE(zone.summary.sparseSolves(), 3 * zone_nodes + static_cast<int>(problem.loads.size()));
+  EXPECT_NE(zone.summary.message.find("Delassus columns of"), std::string::npos);
 }
 
 // Lifting the solution of the zone's problem gives every node's displacement, and the whole
