@@ -23,6 +23,7 @@ cases=(
   "arc_nodes 801|$seed|--set mesh.arc_nodes=801"
   "arc_nodes 1601|$seed|--set mesh.arc_nodes=1601"
   "401 x 2001|$seed|--set mesh.arc_nodes=401 --set time.steps=2001"
+  "fretting, 10 cycles x 2001|examples/scenes/fretting.toml|"
   "hemisphere, divisions 8|$half_ball|"
   "hemisphere, divisions 12|$half_ball|--set mesh.divisions=12"
 )
