@@ -44,16 +44,20 @@ cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Debu
   -DSTC_BUILD_FUZZERS=ON -DSTC_BUILD_TESTS=OFF -DSTC_BUILD_PYTHON=OFF >/dev/null
 cmake --build "$build" -j "${STC_JOBS:-$(nproc)}" --target "${targets[@]/#/fuzz_}"
 
-# seeds TARGET: the shipped inputs of the target's kind, copied afresh into one folder.
+# seeds TARGET: the shipped inputs of the target's kind, copied afresh into one folder, each named
+# after its folder too (examples/scenes/fretting.toml and examples/scenes/hard/fretting.toml are two).
 seeds() {
-  local dir=$build/seeds/$1
+  local dir=$build/seeds/$1 file
   rm -rf "$dir" && mkdir -p "$dir"
+  local -a inputs
   case $1 in
-    scene) cp "$root"/examples/scenes/*.toml "$root"/examples/scenes/hard/*.toml \
-              "$root"/tests/cli/bad/*.toml "$root"/tests/fuzz/seeds/scene/* "$dir" ;;
-    gmsh) cp "$root"/examples/meshes/*.msh "$root"/tests/cli/bad/*.msh \
-             "$root"/tests/fuzz/seeds/gmsh/* "$dir" ;;
+    scene) inputs=("$root"/examples/scenes/*.toml "$root"/examples/scenes/hard/*.toml
+                   "$root"/tests/cli/bad/*.toml "$root"/tests/fuzz/seeds/scene/*) ;;
+    gmsh) inputs=("$root"/examples/meshes/*.msh "$root"/tests/cli/bad/*.msh "$root"/tests/fuzz/seeds/gmsh/*) ;;
   esac
+  for file in "${inputs[@]}"; do
+    cp "$file" "$dir/$(basename "$(dirname "$file")")_$(basename "$file")"
+  done
   echo "$dir"
 }
 
