@@ -20,7 +20,7 @@ SolveCost costOf(const SolveSummary& summary, double wall_s) {
   cost.termination = summary.termination;
   cost.iterations = summary.iterations;
   cost.relaxations = summary.relaxations;
-  cost.sparse_solves = summary.history.empty() ? 0 : summary.history.back().sparse_solves;
+  cost.sparse_solves = summary.sparseSolves();
   cost.wall_s = wall_s;
   cost.indicator = summary.indicator;
   return cost;

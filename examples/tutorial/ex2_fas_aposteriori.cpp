@@ -36,7 +36,7 @@ namespace {
 
 void print(const stc::SolveSummary& s) {
   std::cout << "  " << s.solver << ": " << stc::toString(s.termination) << ", " << s.relaxations
-            << " relaxations, " << (s.history.empty() ? 0 : s.history.back().sparse_solves) << " sparse solves, true error "
+            << " relaxations, " << s.sparseSolves() << " sparse solves, true error "
             << s.error.value_or(-1.0) << ", " << s.wall_s << " s\n";
 }
 

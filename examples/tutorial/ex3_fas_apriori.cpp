@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
       stc::fas::FasAprioriOptions options = scene.solver.fas_apriori;
       v.change(options);
       const stc::SolveSummary s = stc::fas::solveFasApriori(problem, options, inputs).summary;
-      std::printf("%-34s %12d %14d %12.2e %10.4f\n", v.what, s.relaxations, s.history.back().sparse_solves,
+      std::printf("%-34s %12d %14d %12.2e %10.4f\n", v.what, s.relaxations, s.sparseSolves(),
                   s.error.value_or(-1.0), s.wall_s);
       all_agree = all_agree && s.converged() && s.error && *s.error <= options.fas.stop.tolerance;
     }

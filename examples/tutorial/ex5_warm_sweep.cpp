@@ -37,8 +37,6 @@
 
 namespace {
 
-int sparseSolves(const stc::SolveSummary& s) { return s.history.empty() ? 0 : s.history.back().sparse_solves; }
-
 bool agrees(const stc::SolveSummary& s, double tolerance) { return s.converged() && s.error && *s.error <= tolerance; }
 
 }  // namespace
@@ -82,8 +80,8 @@ int main(int argc, char** argv) {
       }
       stc::SolveResult w = stc::solve(problem, scene.solver, warm);
 
-      std::printf("%-24s %9d / %-6d %9d / %-6d\n", range.override(i).c_str(), c.relaxations, sparseSolves(c),
-                  w.summary.relaxations, sparseSolves(w.summary));
+      std::printf("%-24s %9d / %-6d %9d / %-6d\n", range.override(i).c_str(), c.relaxations, c.sparseSolves(),
+                  w.summary.relaxations, w.summary.sparseSolves());
       cold_total += c.relaxations;
       warm_total += w.summary.relaxations;
       all_agree = all_agree && agrees(c, scene.solver.tolerance()) && agrees(w.summary, scene.solver.tolerance());
