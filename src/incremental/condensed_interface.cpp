@@ -8,11 +8,15 @@ CondensedInterface CondensedInterface::build(const Problem& problem, const SpdFa
   const auto& B = problem.contact.B;
   CondensedInterface c;
   const Eigen::MatrixXd Bt = Eigen::MatrixXd(B.transpose());
-  c.delassus = B * stiffness_free.solveOnThreads(Bt);
-  c.delassus = 0.5 * (c.delassus + c.delassus.transpose()).eval();  // symmetric to round-off
+  c.delassus = symmetricDelassus(B, stiffness_free.solveOnThreads(Bt));
   c.free_response = freeInterfaceResponse(problem, stiffness_free);
   c.sparse_solves = static_cast<int>(Bt.cols() + problem.loads.size());
   return c;
+}
+
+Eigen::MatrixXd symmetricDelassus(const Eigen::SparseMatrix<double>& B, const Eigen::MatrixXd& responses) {
+  const Eigen::MatrixXd W = B * responses;
+  return 0.5 * (W + W.transpose());
 }
 
 void giveHeldRowsCompliance(const ContactInterface& contact, Eigen::MatrixXd& delassus) {

@@ -18,6 +18,9 @@ struct CondensedInterface {
   static CondensedInterface build(const Problem& problem, const SpdFactor& stiffness_free);
 };
 
+/// W = B K⁻¹ Bᵀ from the responses K⁻¹ Bᵀ, made symmetric to round-off.
+Eigen::MatrixXd symmetricDelassus(const Eigen::SparseMatrix<double>& B, const Eigen::MatrixXd& responses);
+
 /// A held row r of node i (ContactInterface::held_rows: no free dof moves the node along its
 /// tangent) has W(r, ·) = 0 and W(·, r) = 0, which leaves λ_r undetermined in a stick Newton system.
 /// The incremental solvers give it the compliance of the node's normal row, W(r, r) = W(d i, d i),

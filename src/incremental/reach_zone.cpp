@@ -26,8 +26,7 @@ ZoneCondensation ZoneCondensation::build(const Problem& problem, const SpdFactor
   const Eigen::SparseMatrix<double> B_zone = restrictToNodes(contact, c.zone).B;
   const Eigen::SparseMatrix<double> B_far = restrictToNodes(contact, c.far).B;
   const Eigen::MatrixXd responses = stiffness_free.solveOnThreads(Eigen::MatrixXd(B_zone.transpose()));  // K⁻¹ B_Zᵀ
-  c.on_zone.delassus = B_zone * responses;
-  c.on_zone.delassus = 0.5 * (c.on_zone.delassus + c.on_zone.delassus.transpose()).eval();  // symmetric to round-off
+  c.on_zone.delassus = symmetricDelassus(B_zone, responses);
   c.far_delassus = B_far * responses;
   const Eigen::MatrixXd free = freeInterfaceResponse(problem, stiffness_free);
   c.on_zone.free_response = free(rows, Eigen::all);
