@@ -50,4 +50,13 @@ Eigen::MatrixXd EnergyFactor::combination(const Eigen::MatrixXd& U) const {
   return C;
 }
 
+Eigen::MatrixXd EnergyFactor::projections(const Eigen::MatrixXd& products) const {
+  if (products.rows() != size_) throw std::invalid_argument("EnergyFactor::projections: needs size() rows");
+  const int r = rank();
+  Eigen::MatrixXd P(r, products.cols());
+  for (int i = 0; i < r; ++i) P.row(i) = products.row(kept_[static_cast<size_t>(i)]);
+  RK_.topLeftCorner(r, r).triangularView<Eigen::Upper>().transpose().solveInPlace(P);
+  return P;
+}
+
 }  // namespace stc::pgd

@@ -29,6 +29,9 @@ class EnergyFactor {
   Eigen::MatrixXd whiten(const Eigen::MatrixXd& theta) const;
   /// The combination C (s × r) with Φ C = Φ̂ U for whitened coordinates U (s' × r): C = P_K R_K⁻¹ U.
   Eigen::MatrixXd combination(const Eigen::MatrixXd& U) const;
+  /// Φ̂ᵀ A Y (s' × k) for vectors Y given their products `products` = Φᵀ A Y (s × k): the coordinates
+  /// in Φ̂ of their A-orthogonal projections on span Φ. Φ̂ = Φ_K R_K⁻¹, so Φ̂ᵀ A Y = R_K⁻ᵀ (Φᵀ A Y)_K.
+  Eigen::MatrixXd projections(const Eigen::MatrixXd& products) const;
 
  private:
   Eigen::MatrixXd R_;          ///< storage with spare capacity (doubling); R is its top-left s' × s

@@ -1,6 +1,8 @@
 #include "stcontact/fas/aposteriori/solve_fas_aposteriori.hpp"
 
 #include "stcontact/fas/aposteriori/aposteriori_basis.hpp"
+#include "stcontact/fas/aposteriori/separated_aposteriori_basis.hpp"
+#include "stcontact/fas/apriori/solve_fas_apriori.hpp"
 #include "stcontact/fas/basis_provider.hpp"
 #include "stcontact/fas/fas_solver.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
@@ -8,6 +10,24 @@
 #include "stcontact/linalg/spd_factor.hpp"
 
 namespace stc::fas {
+namespace {
+
+// The a posteriori basis on `fas-apriori`'s fine level: its pipeline with this provider on each stage.
+SolveResult solveOnSeparated(const Problem& problem, const FasAposterioriOptions& options, const SolveInputs& inputs,
+                             const Eigen::MatrixXd& modes) {
+  FasAprioriOptions fine;
+  fine.fas = options.fas;
+  fine.stage = options.stage;
+  fine.zone = options.zone;
+  fine.nested = options.nested;
+  SeparatedCoarseBasis coarse{"fas-aposteriori", [&](pgd::ControlledGlobalStage& stage, const Problem& on) {
+                                return std::make_unique<SeparatedAposterioriProvider>(
+                                    modes, options.basis.residual_vectors, stage, on.contact.B);
+                              }};
+  return solveOnSeparatedFineLevel(problem, fine, inputs, coarse);
+}
+
+}  // namespace
 
 SolveResult solveFasAposteriori(const Problem& problem, const FasAposterioriOptions& options,
                                 const SolveInputs& inputs) {
@@ -17,6 +37,7 @@ SolveResult solveFasAposteriori(const Problem& problem, const FasAposterioriOpti
   if (inputs.converged_lambda) lambda = *inputs.converged_lambda;
   else lambda = solveIncremental(problem).interface.lambda;
   const Eigen::MatrixXd modes = aposterioriModes(problem, K, lambda, options.basis.svd_modes);
+  if (options.fine_level == AposterioriFineLevel::Separated) return solveOnSeparated(problem, options, inputs, modes);
   latin::GlobalStage global(problem);
   global.keepDisplacements(true);
   FixedBasisProvider provider(modes, options.basis.residual_vectors, global, problem.contact.B);

@@ -42,4 +42,11 @@ CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& hat) {
   return CoarseSpace::fromTraces(pgd::modeTraces(basis, factor.combination(U)));
 }
 
+std::unique_ptr<BasisProvider> SeparatedCoarseBasis::providerOn(pgd::ControlledGlobalStage& stage,
+                                                                const Problem& problem,
+                                                                const AprioriBasisOptions& apriori) const {
+  if (make) return make(stage, problem);
+  return std::make_unique<AprioriBasisProvider>(stage, apriori);
+}
+
 }  // namespace stc::fas

@@ -15,6 +15,9 @@
 // enrich it (ControlledGlobalStage::anticipate), so the directions the next relaxation needs are in
 // the coarse step already (docs/method.md §5, "The anticipated expansion").
 #include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <string>
 
 #include "stcontact/fas/basis_provider.hpp"
 #include "stcontact/options/fas_apriori_options.hpp"
@@ -33,6 +36,19 @@ class AprioriBasisProvider : public BasisProvider {
   pgd::ControlledGlobalStage& stage_;
   AprioriBasisOptions options_;
   Eigen::MatrixXd previous_;  ///< coordinates c of ũ at the previous coarse step
+};
+
+/// Where the coarse spaces of `fas-apriori`'s pipeline (its separated stage, reduced interface and
+/// nested iteration in time: fas/apriori/solve_fas_apriori.hpp) come from: the strategy named in the
+/// summary, and the provider built on the stage of each solve of the pipeline and its problem. An empty
+/// `make` is the a priori provider with the options' basis; `fas-aposteriori` on the separated fine
+/// level (fas/aposteriori/) gives its own, so that both bases run on the same fine level.
+struct SeparatedCoarseBasis {
+  std::string solver = "fas-apriori";
+  std::function<std::unique_ptr<BasisProvider>(pgd::ControlledGlobalStage&, const Problem&)> make;
+
+  std::unique_ptr<BasisProvider> providerOn(pgd::ControlledGlobalStage& stage, const Problem& problem,
+                                            const AprioriBasisOptions& apriori) const;
 };
 
 }  // namespace stc::fas

@@ -48,9 +48,9 @@ struct SubgridCost {
 };
 
 SolveResult solveOnGrid(const Problem& problem, pgd::ControlledGlobalStage& stage, const FasAprioriOptions& options,
-                        const SolveInputs& inputs) {
-  AprioriBasisProvider provider(stage, options.basis);
-  return solveFas(problem, stage, provider, options.fas, inputs, "fas-apriori");
+                        const SolveInputs& inputs, const SeparatedCoarseBasis& coarse_basis) {
+  const std::unique_ptr<BasisProvider> provider = coarse_basis.providerOn(stage, problem, options.basis);
+  return solveFas(problem, stage, *provider, options.fas, inputs, coarse_basis.solver);
 }
 
 InterfaceHistory atInstants(const InterfaceHistory& h, const std::vector<int>& kept) {
@@ -66,9 +66,10 @@ int nestedStride(int m, int coarse_instants) {
 }
 
 SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalStage& stage,
-                                 const FasAprioriOptions& options, const SolveInputs& inputs) {
+                                 const FasAprioriOptions& options, const SolveInputs& inputs,
+                                 const SeparatedCoarseBasis& coarse_basis) {
   const int q = nestedStride(problem.numSteps(), options.nested.instants);
-  if (q == 0) return solveOnGrid(problem, stage, options, inputs);
+  if (q == 0) return solveOnGrid(problem, stage, options, inputs, coarse_basis);
   const InterfaceHistory start = startingHistory(problem, inputs);
   const auto clock = Clock::now();
   const long solves_before = stage.sparseSolves();
@@ -78,7 +79,7 @@ SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalSt
   subgrid_options.fas.stop.tolerance = std::max(options.fas.stop.tolerance, options.nested.tolerance);
   stage.retime(subgrid);
   const InterfaceHistory subgrid_start = atInstants(start, kept);
-  const SolveResult coarse = solveOnGrid(subgrid, stage, subgrid_options, {.start = &subgrid_start});
+  const SolveResult coarse = solveOnGrid(subgrid, stage, subgrid_options, {.start = &subgrid_start}, coarse_basis);
   stage.retime(problem);
   SubgridCost cost{subgrid.numSteps(), q, coarse.summary.relaxations,
                    static_cast<int>(stage.sparseSolves() - solves_before), 0.0, coarse.summary.converged()};
@@ -88,7 +89,7 @@ SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalSt
   SolveInputs whole = inputs;
   whole.start = cost.converged ? &interpolated : &start;
   if (inputs.callback) whole.callback = [&](const IterationRecord& r) { return inputs.callback(cost.added(r)); };
-  SolveResult out = solveOnGrid(problem, stage, options, whole);
+  SolveResult out = solveOnGrid(problem, stage, options, whole, coarse_basis);
   for (IterationRecord& r : out.summary.history) r = cost.added(r);
   out.summary.wall_s += cost.wall_s;
   out.summary.addStage(cost.stage());

@@ -16,6 +16,7 @@
 // guess), with a coarse level in time.
 // Counts and times: the result's history holds the relaxations on the whole grid; its times and
 // sparse solves include the sub-grid solve, and the summary records it as a stage (SolveStage::SubGrid).
+#include "stcontact/fas/apriori/apriori_basis.hpp"
 #include "stcontact/options/fas_apriori_options.hpp"
 #include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/problem/problem.hpp"
@@ -35,8 +36,9 @@ int nestedStride(int m, int coarse_instants);
 /// grid from that solution interpolated in time (the header's steps); when the sub-grid solve does
 /// not converge, the whole grid from the start, and the stage recorded in the summary says so (its
 /// time and solves still count). Callers turn nesting off (options.nested.instants = 0) for a warm
-/// start or a later round of the reduced interface.
+/// start or a later round of the reduced interface. The coarse spaces come from `coarse_basis`.
 SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalStage& stage,
-                                 const FasAprioriOptions& options, const SolveInputs& inputs);
+                                 const FasAprioriOptions& options, const SolveInputs& inputs,
+                                 const SeparatedCoarseBasis& coarse_basis = {});
 
 }  // namespace stc::fas

@@ -95,12 +95,12 @@ FirstRelaxation firstRelaxation(const Problem& problem, const FasAprioriOptions&
 }
 
 // The result when the caller stops the solve at the first relaxation.
-SolveResult stoppedAtFirst(const FirstRelaxation& first) {
+SolveResult stoppedAtFirst(const FirstRelaxation& first, const std::string& solver) {
   SolveResult out;
   out.interface = first.s;
   out.contact_admissible = first.hat;
   SolveSummary& sum = out.summary;
-  sum.solver = "fas-apriori";
+  sum.solver = solver;
   sum.termination = Termination::StoppedByCallback;
   sum.reason = "stopped by the caller after the first relaxation";
   sum.composeMessage();
@@ -128,10 +128,11 @@ double ErrorOnRows::relativeError(const Eigen::MatrixXd& lambda) const {
 }
 
 SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
-                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v) {
+                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v,
+                           const SeparatedCoarseBasis& coarse_basis) {
   pgd::ControlledGlobalStage stage(problem, options.stage);
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
-  SolveResult result = solveFasNestedInTime(problem, stage, options, inputs);
+  SolveResult result = solveFasNestedInTime(problem, stage, options, inputs, coarse_basis);
   result.interface_directions = stage.basis().directions();
   if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
   far_v = pgd::displacementTraces(stage.basis(), stage.coordinates(), B_far);
@@ -143,7 +144,8 @@ namespace {
 // Step 1 from the prescribed motion, when the loading is one: the nodes within its reach and, without
 // a warm start, its rigid motion as the start. None when it gives no zone to solve on.
 std::optional<SolveResult> solveWithinPrescribedReach(const Problem& problem, const FasAprioriOptions& options,
-                                                      const SolveInputs& inputs, ZoneStart from) {
+                                                      const SolveInputs& inputs, ZoneStart from,
+                                                      const SeparatedCoarseBasis& coarse_basis) {
   const std::optional<Eigen::MatrixXd> W = prescribedTranslation(problem);
   if (!W) return std::nullopt;
   std::vector<int> reach = nodesWithinReach(problem.contact, *W, options.zone.reach_margin);
@@ -156,23 +158,23 @@ std::optional<SolveResult> solveWithinPrescribedReach(const Problem& problem, co
   from.hat = from.start;
   from.zone_origin = inputs.start ? "the zone within reach of the prescribed motion"
                                   : "the zone within reach of the prescribed motion, started from it carried rigidly";
-  return solveAprioriOnZone(problem, options, inputs, std::move(reach), from);
+  return solveAprioriOnZone(problem, options, inputs, std::move(reach), from, coarse_basis);
 }
 
 }  // namespace
 
 SolveResult solveAprioriOnContactZone(const Problem& problem, const FasAprioriOptions& options,
-                                      const SolveInputs& inputs) {
+                                      const SolveInputs& inputs, const SeparatedCoarseBasis& coarse_basis) {
   const auto start = Clock::now();
   if (inputs.start) requireFits(*inputs.start, problem);
   if (inputs.basis_seed) requireFits(*inputs.basis_seed, problem);
   ZoneStart from;
   from.start = inputs.start;
   from.clock = start;
-  if (std::optional<SolveResult> out = solveWithinPrescribedReach(problem, options, inputs, from))
+  if (std::optional<SolveResult> out = solveWithinPrescribedReach(problem, options, inputs, from, coarse_basis))
     return std::move(*out);
   const FirstRelaxation first = firstRelaxation(problem, options, inputs, start);
-  if (inputs.callback && !inputs.callback(first.record)) return stoppedAtFirst(first);
+  if (inputs.callback && !inputs.callback(first.record)) return stoppedAtFirst(first, coarse_basis.solver);
   const int n = problem.contact.size();
   std::vector<int> zone = first.zone;
   if (zone.empty() || zone.size() > options.zone.whole_share * n) zone = otherNodes(n, {});
@@ -180,7 +182,7 @@ SolveResult solveAprioriOnContactZone(const Problem& problem, const FasAprioriOp
   from.first = first.record;
   from.measure_s = first.measure_s;
   from.zone_origin = "first relaxation on all " + std::to_string(n);
-  return solveAprioriOnZone(problem, options, inputs, std::move(zone), from);
+  return solveAprioriOnZone(problem, options, inputs, std::move(zone), from, coarse_basis);
 }
 
 namespace {
@@ -188,9 +190,10 @@ namespace {
 // The rounds of solveAprioriOnZone: what they have spent so far, and where the next one starts.
 class ZoneRounds {
  public:
-  ZoneRounds(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs, const ZoneStart& from)
-      : problem_(problem), options_(options), inputs_(inputs), from_(from), first_hat_(from.hat),
-        measure_s_(from.measure_s) {
+  ZoneRounds(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs, const ZoneStart& from,
+             const SeparatedCoarseBasis& coarse_basis)
+      : problem_(problem), options_(options), inputs_(inputs), from_(from), coarse_basis_(coarse_basis),
+        first_hat_(from.hat), measure_s_(from.measure_s) {
     if (from.first) {
       history_.push_back(*from.first);
       offsets_ = {from.first->iteration, from.first->relaxations, from.first->sparse_solves, 0.0};
@@ -238,7 +241,8 @@ class ZoneRounds {
     round.basis_seed = seed_ ? &part_seed : nullptr;
     round.spatial_modes = inputs_.spatial_modes;
     // B of the nodes left out: the rows of their sub-interface.
-    SolveResult r = solveAprioriOn(whole ? problem_ : part, budget, round, restrictToNodes(contact, far).B, far_v);
+    SolveResult r = solveAprioriOn(whole ? problem_ : part, budget, round, restrictToNodes(contact, far).B, far_v,
+                                   coarse_basis_);
     count(r.summary, withClock(before, clock.value_or(clockOffset(r.summary.wall_s))));
     penetrating_nodes = penetrating(contact, far, far_v);
     return liftedResult(std::move(r), rows, far_rows, far_v);
@@ -322,6 +326,7 @@ class ZoneRounds {
   const FasAprioriOptions& options_;
   const SolveInputs& inputs_;
   const ZoneStart& from_;
+  const SeparatedCoarseBasis& coarse_basis_;
   const InterfaceHistory* first_hat_;     ///< where the first round starts (null: s = 0)
   std::optional<InterfaceHistory> hat_;  ///< where a later round starts, when not from first_hat_
   std::optional<Eigen::MatrixXd> seed_;
@@ -339,9 +344,10 @@ std::string zoneSize(const std::vector<int>& zone, int n) {
 }  // namespace
 
 SolveResult solveAprioriOnZone(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
-                               std::vector<int> zone, const ZoneStart& from) {
+                               std::vector<int> zone, const ZoneStart& from,
+                               const SeparatedCoarseBasis& coarse_basis) {
   const int n = problem.contact.size();
-  ZoneRounds rounds(problem, options, inputs, from);
+  ZoneRounds rounds(problem, options, inputs, from, coarse_basis);
   std::string log;  // what each round did, for the summary's message
   for (int round = 1;; ++round) {
     std::vector<int> wrong;

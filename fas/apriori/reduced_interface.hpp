@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "stcontact/fas/apriori/apriori_basis.hpp"
 #include "stcontact/options/fas_apriori_options.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/solver/error_measure.hpp"
@@ -63,15 +64,17 @@ class ErrorOnRows : public ErrorMeasure {
 /// One `fas-apriori` solve of `problem` (its separated stage, a priori basis and FAS cycle) from
 /// inputs.start, with the directions started from inputs.basis_seed when given; `far_v` receives
 /// B_far u of the last iterate's displacement history (B_far: rows × n_free, e.g. the rows of nodes
-/// left out); the result's spatial modes are left empty unless inputs.spatial_modes.
+/// left out); the result's spatial modes are left empty unless inputs.spatial_modes. The coarse
+/// spaces come from `coarse_basis` here and in the two functions below (the a priori ones by default).
 SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
-                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v);
+                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v,
+                           const SeparatedCoarseBasis& coarse_basis = {});
 
 /// `fas-apriori` with the interface reduced to its contact zone (the header's steps 1–3). Falls back
 /// to the whole interface when the first relaxation's zone holds more than options.zone.whole_share
 /// of the nodes.
 SolveResult solveAprioriOnContactZone(const Problem& problem, const FasAprioriOptions& options,
-                                      const SolveInputs& inputs);
+                                      const SolveInputs& inputs, const SeparatedCoarseBasis& coarse_basis = {});
 
 /// Where steps 2–3 start: ŝ on the whole interface (the first start, or the first relaxation's local
 /// stage), and what was spent before (counted in the result). The histories pointed to must outlive
@@ -89,6 +92,7 @@ struct ZoneStart {
 /// the check of the nodes left out, until none penetrates (solveAprioriOnContactZone after step 1; a
 /// test may give a zone that misses nodes).
 SolveResult solveAprioriOnZone(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
-                               std::vector<int> zone, const ZoneStart& from);
+                               std::vector<int> zone, const ZoneStart& from,
+                               const SeparatedCoarseBasis& coarse_basis = {});
 
 }  // namespace stc::fas

@@ -29,6 +29,11 @@ set key below
 set logscale xy
 set format y '%g'
 
+# One colour per strategy in every report (the same line in work_precision.gp, scaling.gp and
+# studies/programs/compare_bases.cpp's script): latin blue, latin-pgd orange, fas-aposteriori green,
+# fas-apriori red, incremental black, any other purple.
+colour(s) = s eq 'latin' ? '#1f77b4' : s eq 'latin-pgd' ? '#ff7f0e' : s eq 'fas-aposteriori' ? '#2ca02c' : s eq 'fas-apriori' ? '#d62728' : s eq 'incremental' ? '#202020' : '#9467bd'
+
 do for [k=1:words(series)] {
   s = word(series, k)
   xcol = s eq 'time' ? 'steps' : 'dofs'
@@ -39,11 +44,11 @@ do for [k=1:words(series)] {
   set title scene.': time to reach true error '.target.' against '.name.' (median of repeats)'
   set ylabel 'time to reach '.target.' (s, set-up included)'
   plot for [i=1:words(solvers)] csv using (pick(s, i, xcol)):(pick(s, i, 'time_to_target_s')) \
-       with linespoints pt 7 ps 0.8 lw 2 title word(solvers, i)
+       with linespoints pt 7 ps 0.8 lw 2 lc rgb colour(word(solvers, i)) title word(solvers, i)
   set output 'memory_vs_'.name.'.png'.suffix
   set title scene.': peak resident memory to reach '.target.' against '.name
   set ylabel 'peak resident memory (MB)'
   plot for [i=1:words(solvers)] csv using (pick(s, i, xcol)):(pick(s, i, 'peak_rss_mb')) \
-       with linespoints pt 7 ps 0.8 lw 2 title word(solvers, i)
+       with linespoints pt 7 ps 0.8 lw 2 lc rgb colour(word(solvers, i)) title word(solvers, i)
 }
 unset output

@@ -18,6 +18,11 @@ if (!exists('reference')) reference = ''
 if (!exists('scene')) scene = ''
 if (!exists('suffix')) suffix = ''
 
+# One colour per strategy in every report (the same line in work_precision.gp, scaling.gp and
+# studies/programs/compare_bases.cpp's script): latin blue, latin-pgd orange, fas-aposteriori green,
+# fas-apriori red, incremental black, any other purple.
+colour(s) = s eq 'latin' ? '#1f77b4' : s eq 'latin-pgd' ? '#ff7f0e' : s eq 'fas-aposteriori' ? '#2ca02c' : s eq 'fas-apriori' ? '#d62728' : s eq 'incremental' ? '#202020' : '#9467bd'
+
 csv = 'work_precision.csv'
 set datafile separator ','
 set datafile columnheaders
@@ -58,7 +63,7 @@ set xlabel 'wall time since the solver was called (s)'
 set logscale x
 if (n_ref) { set arrow 1 from ref_time, graph 0 to ref_time, graph 1 nohead dt 2 lc rgb 'gray40' }
 plot for [i=1:words(curves)] csv using (curve(i, 8)):(curve(i, 7)) with linespoints pt 7 ps 0.4 lw 2 \
-       title word(curves, i), \
+       lc rgb colour(word(curves, i)) title word(curves, i), \
      for [j=1:n_ref] csv using (ref(8)):(ref(8) == ref(8) ? bottom : NaN) with points pt 5 ps 1.5 \
        lc rgb 'black' title ref_title
 
@@ -68,7 +73,7 @@ set xlabel 'relaxations (global + local stage pairs)'
 unset logscale x
 unset arrow 1
 plot for [i=1:words(curves)] csv using (curve(i, 4)):(curve(i, 7)) with linespoints pt 7 ps 0.4 lw 2 \
-       title word(curves, i), \
+       lc rgb colour(word(curves, i)) title word(curves, i), \
      for [j=1:n_ref] csv using (ref(4)):(ref(4) == ref(4) ? bottom : NaN) with points pt 5 ps 1.5 \
        lc rgb 'black' title reference.' (no relaxation: error 0 at 0)'
 
@@ -78,7 +83,7 @@ set xlabel 'sparse solves (right-hand sides)'
 set logscale x
 if (n_ref) { set arrow 1 from ref_solves, graph 0 to ref_solves, graph 1 nohead dt 2 lc rgb 'gray40' }
 plot for [i=1:words(curves)] csv using (curve(i, 5)):(curve(i, 7)) with linespoints pt 7 ps 0.4 lw 2 \
-       title word(curves, i), \
+       lc rgb colour(word(curves, i)) title word(curves, i), \
      for [j=1:n_ref] csv using (ref(5)):(ref(5) == ref(5) ? bottom : NaN) with points pt 5 ps 1.5 \
        lc rgb 'black' title ref_title
 unset output

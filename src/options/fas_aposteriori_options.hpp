@@ -1,8 +1,10 @@
 #pragma once
 // Options of `fas-aposteriori`: the two-level FAS whose coarse space is the seed's a posteriori basis
 // (seed §4.2–4.3; docs/method.md §4): SVD modes of a converged solution, plus residual vectors.
+#include "stcontact/options/fas_apriori_options.hpp"
 #include "stcontact/options/fas_options.hpp"
 #include "stcontact/options/option_fields.hpp"
+#include "stcontact/options/separated_stage_options.hpp"
 
 namespace stc::fas {
 
@@ -18,18 +20,41 @@ struct AposterioriBasisOptions {
   void validate() const { validateFields(*this, "a posteriori basis"); }
 };
 
+/// The fine level the a posteriori coarse space corrects.
+enum class AposterioriFineLevel {
+  Full,       ///< the exact global stage on the whole interface (seed §4: one sparse solve per instant)
+  Separated,  ///< `fas-apriori`'s: the separated stage, reduced interface, nested iteration in time
+};
+inline constexpr std::array<std::pair<std::string_view, AposterioriFineLevel>, 2> kAposterioriFineLevels = {{
+    {"full", AposterioriFineLevel::Full},
+    {"separated", AposterioriFineLevel::Separated},
+}};
+
 struct FasAposterioriOptions {
   FasOptions fas;
   AposterioriBasisOptions basis;
+  /// Full: the seed paper's FAS. Separated: the same fine level as `fas-apriori` (the options below,
+  /// shared with it), so that the two differ by their basis alone (docs/compare_bases.md).
+  AposterioriFineLevel fine_level = AposterioriFineLevel::Full;
+  pgd::ControlledStageOptions stage;  ///< on the separated fine level only
+  ReducedInterfaceOptions zone;       ///< on the separated fine level only
+  NestedInTimeOptions nested;         ///< on the separated fine level only
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
     FasOptions::fields(o.fas, visit);
     AposterioriBasisOptions::fields(o.basis, visit);
+    visit("aposteriori_fine_level", o.fine_level, Keywords<AposterioriFineLevel>(kAposterioriFineLevels));
+    pgd::ControlledStageOptions::fields(o.stage, visit);
+    ReducedInterfaceOptions::fields(o.zone, visit);
+    NestedInTimeOptions::fields(o.nested, visit);
   }
   void validate() const {
     fas.validate();
     basis.validate();
+    stage.validate();
+    zone.validate();
+    nested.validate();
   }
 };
 

@@ -1,5 +1,5 @@
 // The energy factor (pgd/energy_factor.hpp) built column by column against a Cholesky factorisation
-// of the whole Gram matrix, with a dependent column; and the randomized leading singular vectors of
+// of the whole Gram matrix, with a dependent column, its projections of other vectors; and the randomized leading singular vectors of
 // pgd/separated_history.hpp against Eigen's SVD.
 #include <gtest/gtest.h>
 
@@ -52,6 +52,20 @@ TEST(EnergyFactor, ADependentColumnGetsNoRowButKeepsItsCoordinates) {
   EXPECT_LE((Y.transpose() * A * Y - Eigen::MatrixXd::Identity(4, 4)).cwiseAbs().maxCoeff(), 1e-10);
   const Eigen::MatrixXd theta = Eigen::MatrixXd::Random(5, 3);  // uses the dependent column too
   EXPECT_LE((Y * factor.whiten(theta) - Phi * theta).norm(), 1e-10 * (Phi * theta).norm());
+}
+
+TEST(EnergyFactor, ProjectionsAreTheCoordinatesOfTheEnergyProjectionOnTheSpan) {
+  const Eigen::MatrixXd A = spd(20);
+  Eigen::MatrixXd Phi = Eigen::MatrixXd::Random(20, 6);
+  Phi.col(4) = Phi.col(1) + 0.5 * Phi.col(3);  // a dependent column: no row of its own
+  const stc::pgd::EnergyFactor factor = factorOf(Phi, A);
+  ASSERT_EQ(factor.rank(), 5);
+  const Eigen::MatrixXd Phi_hat = Phi * factor.combination(Eigen::MatrixXd::Identity(5, 5));
+  const Eigen::MatrixXd Y = Eigen::MatrixXd::Random(20, 3);
+  const Eigen::MatrixXd S = factor.projections(Phi.transpose() * A * Y);
+  EXPECT_LE((S - Phi_hat.transpose() * A * Y).norm(), 1e-10 * S.norm());
+  // Y − Φ̂ S is A-orthogonal to span Φ: S holds the coordinates of Y's projection.
+  EXPECT_LE((Phi.transpose() * A * (Y - Phi_hat * S)).norm(), 1e-9 * (Phi.transpose() * A * Y).norm());
 }
 
 TEST(LeadingSingularVectors, RandomizedEqualTheSvdsForADecayingSpectrum) {
