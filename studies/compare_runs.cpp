@@ -175,6 +175,33 @@ StrategyMeasurement measureStrategy(Strategy strategy, const CompareContext& c) 
   return m;
 }
 
+std::vector<SolveAtTolerance> measureAtTolerance(const std::vector<Strategy>& strategies, const CompareContext& context,
+                                                 double tolerance) {
+  SolverSpec spec = context.spec;
+  spec.setTolerance(tolerance);
+  CompareContext at{context.problem, spec, context.reference, context.repeats, context.progress};
+  at.keep_going = context.keep_going;
+  std::vector<SolveAtTolerance> out(strategies.size());
+  const int rounds = std::max(1, context.repeats);
+  for (int r = 1; r <= rounds; ++r)
+    for (std::size_t i = 0; i < strategies.size(); ++i) {
+      const std::string solver(nameOf(strategies[i]));
+      const RunOutcome run = runOnce(strategies[i], at, false, repeatLabel(solver + " at tolerance", r, rounds));
+      SolveAtTolerance& a = out[i];
+      a.times_s.push_back(run.total_s);
+      if (r > 1) continue;
+      const SolveSummary& s = run.result.summary;
+      a.tolerance = tolerance;
+      a.termination = s.termination;
+      a.relaxations = s.relaxations;
+      a.sparse_solves = s.sparseSolves();
+      a.error_estimate = s.error_estimate;
+      a.error = context.reference.reference->relativeError(run.result.interface.lambda);
+    }
+  for (SolveAtTolerance& a : out) a.median_s = median(a.times_s);
+  return out;
+}
+
 // Split here rather than by CLI11's ->delimiter(','): CLI11 2.1.2 (Debian 12) drops empty items, so
 // "--solvers latin,,incremental" would pass as two names instead of the documented refusal
 // "--solvers: empty name" (docs/compare.md; the ctest case cli.compare_empty_solver_name).

@@ -49,4 +49,10 @@ Comparison describeComparison(const std::string& scene_file, const std::string& 
 /// an EarlyStop, the message says where and why the error run was stopped.
 StrategyMeasurement measureStrategy(Strategy strategy, const CompareContext& context);
 
+/// Each of `strategies` solved at `tolerance` as a user runs it (context.spec with that tolerance, no
+/// early stop), context.repeats rounds with the strategies alternated within each; the true error of
+/// the first round's last iterate against the reference. In the order of `strategies`.
+std::vector<SolveAtTolerance> measureAtTolerance(const std::vector<Strategy>& strategies, const CompareContext& context,
+                                                 double tolerance);
+
 }  // namespace stc

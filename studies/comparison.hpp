@@ -15,6 +15,19 @@ namespace stc {
 /// The true errors the report asks each strategy to reach.
 const std::vector<double>& targetErrors();
 
+/// A solve at tolerance τ as a user runs it (`stcontact solve --tol τ`): it stops on its own estimate,
+/// timed from the call (set-up included), the strategies alternated within each round of repeats.
+struct SolveAtTolerance {
+  double tolerance = 0.0;
+  Termination termination = Termination::MaxIterations;
+  int relaxations = 0;
+  int sparse_solves = 0;
+  double error_estimate = 0.0;   ///< the estimate it stopped on
+  std::optional<double> error;   ///< true error of its last iterate against the reference
+  std::vector<double> times_s;   ///< one per repeat
+  double median_s = 0.0;
+};
+
 /// Everything measured for one strategy.
 struct StrategyMeasurement {
   std::string solver;
@@ -43,6 +56,8 @@ struct StrategyMeasurement {
   /// solution), not included in its times.
   std::optional<double> prerequisite_s;
   MemoryUse memory;
+  /// The solve at the target as tolerance (`stcontact scaling`; compare's own runs are solves at τ already).
+  std::optional<SolveAtTolerance> at_tolerance;
 };
 
 /// The report's statistics of one strategy.

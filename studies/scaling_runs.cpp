@@ -43,9 +43,19 @@ ScalingPoint measureScalingSize(const Scene& scene, const ScalingSize& size, con
   note(progress, "    reference: " + shortNumber(reference.total_s, 3) + " s");
   CompareContext context{problem, scene.solver, reference, study.repeats, progress};
   context.stop = stop;
+  std::vector<Strategy> strategies;
   for (const std::string& solver : study.solvers) {
-    p.comparison.strategies.push_back(measureStrategy(strategyNamed(solver), context));
+    strategies.push_back(strategyNamed(solver));
+    p.comparison.strategies.push_back(measureStrategy(strategies.back(), context));
     note(progress, strategyLine(study, p, p.comparison.strategies.back()));
+  }
+  // What a user gets: a solve at the target as tolerance, stopping on its own estimate.
+  const std::vector<SolveAtTolerance> at = measureAtTolerance(strategies, context, study.target_error);
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    p.comparison.strategies[i].at_tolerance = at[i];
+    note(progress, "    " + study.solvers[i] + " at tolerance " + shortNumber(study.target_error, 3) + ": " +
+                       toString(at[i].termination) + ", " + shortNumber(at[i].median_s, 3) + " s, true error " +
+                       shortNumber(at[i].error, 2));
   }
   p.comparison.memory_method = describeMemoryMethod(p.comparison.strategies.front().memory.since_reset);
   p.comparison.load_after = loadAverage();

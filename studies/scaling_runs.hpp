@@ -1,6 +1,7 @@
 #pragma once
 // The runs of `stcontact scaling` (docs/scaling.md): at each size of the study, the comparison of
-// `stcontact compare` (compare_runs.hpp) with every iterative run stopped at the target true error.
+// `stcontact compare` (compare_runs.hpp) with every iterative run stopped at the target true error,
+// then every strategy solved as a user runs it, at the target as tolerance (measureAtTolerance).
 // The program plans the sizes from its options; this measures one.
 #include <string>
 #include <vector>

@@ -12,11 +12,29 @@ namespace {
 
 std::string ratioCell(double ratio) { return std::isfinite(ratio) ? shortNumber(ratio, 4) : ""; }
 
+// The solve at the target as tolerance: time, termination, relaxations, sparse solves, estimate, true
+// error, time ÷ incremental's (empty cells when it was not run).
+std::string atToleranceCells(const ScalingPoint& p, const StrategyMeasurement& m) {
+  if (!m.at_tolerance) return ",,,,,,";
+  const SolveAtTolerance& a = *m.at_tolerance;
+  const StrategyMeasurement* incremental = p.strategy("incremental");
+  const double ratio = incremental && incremental->at_tolerance && incremental->at_tolerance->median_s > 0.0
+                           ? a.median_s / incremental->at_tolerance->median_s
+                           : NAN;
+  std::ostringstream cells;
+  cells << shortNumber(a.median_s, 6) << ',' << toString(a.termination) << ',' << a.relaxations << ','
+        << a.sparse_solves << ',' << shortNumber(a.error_estimate, 4) << ',' << shortNumber(a.error, 4) << ','
+        << ratioCell(ratio);
+  return cells.str();
+}
+
 void csvHeader(std::ostream& out, const ScalingStudy& study) {
   out << "series," << study.mesh_parameter << ",dofs,free_dofs,contact_nodes,steps,solver,status,time_to_target_s,"
          "relaxations_to_target,sparse_solves_to_target,repeats_reaching,time_ratio_to_incremental,"
          "error_at_stop,best_error,iterations,peak_rss_mb,rss_growth_mb,baseline_mb,reference_s,error_run_s,"
-         "factor_mb,interface_history_mb,displacement_history_mb,delassus_mb,condensation_mb\n";
+         "factor_mb,interface_history_mb,displacement_history_mb,delassus_mb,condensation_mb,"
+         "time_at_tolerance_s,termination_at_tolerance,relaxations_at_tolerance,sparse_solves_at_tolerance,"
+         "error_estimate_at_tolerance,error_at_tolerance,time_ratio_at_tolerance\n";
 }
 
 void csvRow(std::ostream& out, const ScalingStudy& study, Series series, const ScalingPoint& p,
@@ -34,7 +52,8 @@ void csvRow(std::ostream& out, const ScalingStudy& study, Series series, const S
       << ',' << shortNumber(m.memory.baseline_mb, 5) << ',' << shortNumber(c.reference_s, 4) << ','
       << shortNumber(m.error_run_s, 4) << ',' << shortNumber(e.factor_mb, 4) << ','
       << shortNumber(e.interface_history_mb, 4) << ',' << shortNumber(e.displacement_history_mb, 4) << ','
-      << shortNumber(e.delassus_mb, 4) << ',' << shortNumber(e.condensation_mb, 4) << '\n';
+      << shortNumber(e.delassus_mb, 4) << ',' << shortNumber(e.condensation_mb, 4) << ',' << atToleranceCells(p, m)
+      << '\n';
 }
 
 }  // namespace
