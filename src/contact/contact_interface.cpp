@@ -73,7 +73,7 @@ void checkGap(const ContactInterface& c, const Eigen::MatrixXd& positions, int i
   if (c.initial_gap[i] >= 0.0) return;
   std::ostringstream msg;
   msg << "contact " << describeNode(positions, c.nodes[i]) << " starts inside the obstacle (initial gap "
-      << c.initial_gap[i] << " < 0; check obstacle.point and obstacle.normal)";
+      << c.initial_gap[i] << " < 0; check the [obstacle] table)";
   throw InputError(msg.str());
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// Rigid obstacles. Only a plane for now; the variant keeps room for a circle or a sphere (or any
-// shape that can give a signed distance and an outward normal at a point). Points and normals have
-// the scene's dimension (2 or 3 entries).
+// Rigid obstacles: a plane, or a ball (a sphere in 3D, a cylinder's circular section in 2D) that the
+// body lies outside of, or inside of (a seat). Each gives the signed distance of a point and the unit
+// normal pointing from the obstacle into the body; the contact interface takes both at the nodes'
+// initial positions (small sliding, docs/method.md §1). Points have the scene's dimension.
 #include <Eigen/Core>
 #include <variant>
 
@@ -16,11 +17,21 @@ struct PlaneObstacle {
   Eigen::VectorXd normal;
 };
 
-using Obstacle = std::variant<PlaneObstacle>;
+/// The ball |x − centre| ≤ radius (inside = false), or its complement (inside = true: the body lies
+/// in the ball, the obstacle around it). g0 = |x − c| − R, n = (x − c)/|x − c| outside;
+/// g0 = R − |x − c|, n = (c − x)/|x − c| inside.
+struct BallObstacle {
+  Eigen::VectorXd centre;
+  double radius = 0.0;
+  bool inside = false;
+};
+
+using Obstacle = std::variant<PlaneObstacle, BallObstacle>;
 
 Obstacle makeObstacle(const ObstacleSpec& spec);
 
-/// Unit normal n at x, pointing from the obstacle into the body (docs/method.md §1).
+/// Unit normal n at x, pointing from the obstacle into the body (docs/method.md §1). A ball's normal
+/// at its centre is undefined: InputError.
 Eigen::VectorXd obstacleNormal(const Obstacle& obstacle, const Eigen::VectorXd& x);
 
 /// Signed initial gap g0 = (x − x_obs)·n (negative: x is inside the obstacle).

@@ -198,10 +198,12 @@ Problem buildProblem(const Scene& scene) {
   Problem p;
   p.name = scene.name;
   p.dimension = scene.dimension;
-  if (scene.obstacle.point.size() != p.dimension || scene.obstacle.normal.size() != p.dimension)
+  const bool plane = scene.obstacle.type == ObstacleType::Plane;
+  if (plane ? (scene.obstacle.point.size() != p.dimension || scene.obstacle.normal.size() != p.dimension)
+            : scene.obstacle.centre.size() != p.dimension)
     withContext(scene, "obstacle", [&] {
-      throw InputError("point and normal must have " + std::to_string(p.dimension) + " entries in a " +
-                       std::to_string(p.dimension) + "D scene");
+      throw InputError(std::string(plane ? "point and normal" : "centre") + " must have " +
+                       std::to_string(p.dimension) + " entries in a " + std::to_string(p.dimension) + "D scene");
     });
   withContext(scene, "", [&] { requireFitsInMemory(scene); });  // before the mesh is built
   const std::string mesh_key = scene.mesh.file.empty() ? "mesh.generator" : "";

@@ -66,10 +66,11 @@ void requireLoadScales(const Scene& scene, const Problem& p) {
   }
 }
 
-void requireGapScale(const Problem& p) {
+// `key`: the obstacle's key that sets the gaps (obstacle.point of a plane, obstacle.centre of a ball).
+void requireGapScale(const Problem& p, const std::string& key) {
   const double gap = largestMagnitude(p.contact.initial_gap);
-  requireBelowLargest("obstacle.point", "the largest initial gap", gap);
-  requireBelowLargest("obstacle.point", "the force of the largest initial gap (max |K| · max |g0|)",
+  requireBelowLargest(key, "the largest initial gap", gap);
+  requireBelowLargest(key, "the force of the largest initial gap (max |K| · max |g0|)",
                       largestEntry(p.stiffness) * gap);
 }
 
@@ -79,7 +80,7 @@ void requireRepresentableScales(const Scene& scene, const Problem& problem) {
   requireIncreasingInstants(problem.times);
   requireStiffnessScale(problem.stiffness);
   requireLoadScales(scene, problem);
-  requireGapScale(problem);
+  requireGapScale(problem, scene.obstacle.type == ObstacleType::Plane ? "obstacle.point" : "obstacle.centre");
 }
 
 }  // namespace stc

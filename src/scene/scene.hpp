@@ -39,14 +39,19 @@ struct MaterialSpec {
   double poisson = 0.0;  ///< -1 < nu < 0.5
 };
 
-enum class ObstacleType { Plane };
+/// Plane (2D and 3D); sphere (3D) and cylinder (2D: its cross-section, a circle): a ball.
+enum class ObstacleType { Plane, Sphere, Cylinder };
 
 /// [obstacle]: rigid obstacle. Plane: through `point` with unit `normal` pointing into the body,
-/// both with the scene's dimension of entries.
+/// both with the scene's dimension of entries. Sphere, cylinder: `centre` and `radius`, the solid
+/// ball the body lies outside of, or with `inside` the ball's complement, a seat the body lies in.
 struct ObstacleSpec {
   ObstacleType type = ObstacleType::Plane;
   Eigen::VectorXd point = Eigen::VectorXd::Zero(2);
   Eigen::VectorXd normal = Eigen::VectorXd::Unit(2, 1);  ///< normalised on reading (must be nonzero)
+  Eigen::VectorXd centre = Eigen::VectorXd::Zero(2);     ///< sphere, cylinder
+  double radius = 0.0;                                    ///< sphere, cylinder: > 0
+  bool inside = false;  ///< sphere, cylinder: the body inside the sphere (side = "inside")
 };
 
 /// [contact]: which boundary may touch the obstacle, with which Coulomb coefficient.

@@ -200,11 +200,8 @@ MaterialSpec readMaterial(const TableView& root) {
   return spec;
 }
 
-ObstacleSpec readObstacle(const TableView& root, int dimension) {
-  const TableView obstacle = root.requiredTable("obstacle", {"type", "point", "normal"});
-  ObstacleSpec spec;
-  if (obstacle.has("type")) readKeyword(obstacle, "type", {"plane"});
-  spec.type = ObstacleType::Plane;
+// A plane through `point` with the unit `normal` pointing into the body.
+void readPlane(const TableView& obstacle, int dimension, ObstacleSpec& spec) {
   spec.point = readVector(obstacle, "point", dimension);
   const Eigen::VectorXd normal = readVector(obstacle, "normal", dimension);
   const double length = normal.norm();
@@ -215,6 +212,50 @@ ObstacleSpec readObstacle(const TableView& root, int dimension) {
                            "key 'obstacle.normal' = [" + entries + "] must be a nonzero finite vector");
   }
   spec.normal = normal / length;
+}
+
+// A sphere (3D) or cylinder (2D): `centre`, `radius` > 0 and `side`, "outside" (the default: the
+// obstacle is the ball) or "inside" (the body lies in the ball: a seat).
+void readBall(const TableView& obstacle, int dimension, ObstacleSpec& spec) {
+  spec.centre = readVector(obstacle, "centre", dimension);
+  spec.radius = obstacle.requiredNumber("radius");
+  requireRange(obstacle, "radius", spec.radius, spec.radius > 0.0 && std::isfinite(spec.radius), "must be > 0");
+  if (obstacle.has("side")) spec.inside = readKeyword(obstacle, "side", {"outside", "inside"}) == "inside";
+}
+
+// The keys of each type; a key of another type is refused with the type's list.
+void requireKeysOfType(const TableView& obstacle, const std::string& type, std::initializer_list<const char*> keys) {
+  for (const char* key : {"point", "normal", "centre", "radius", "side"}) {
+    const auto own = [&](const char* k) { return std::string(k) == key; };
+    if (!obstacle.has(key) || std::find_if(keys.begin(), keys.end(), own) != keys.end()) continue;
+    std::string list;
+    for (const char* k : keys) list += (list.empty() ? "'" : ", '") + std::string(k) + "'";
+    const std::string path = obstacle.keyPath(key);
+    obstacle.errors().fail(path, "key '" + path + "' does not apply to obstacle.type = \"" + type +
+                                     "\" (its keys: " + list + ")");
+  }
+}
+
+ObstacleSpec readObstacle(const TableView& root, int dimension) {
+  const TableView obstacle = root.requiredTable("obstacle", {"type", "point", "normal", "centre", "radius", "side"});
+  ObstacleSpec spec;
+  const std::string type =
+      obstacle.has("type") ? readKeyword(obstacle, "type", {"plane", "sphere", "cylinder"}) : "plane";
+  if (type == "plane") {
+    requireKeysOfType(obstacle, type, {"point", "normal"});
+    readPlane(obstacle, dimension, spec);
+    return spec;
+  }
+  const bool sphere = type == "sphere";
+  if (sphere != (dimension == 3)) {
+    const std::string path = obstacle.keyPath("type");
+    obstacle.errors().fail(path, "key '" + path + "' = \"" + type + "\" needs a " + (sphere ? "3D" : "2D") +
+                                     " scene (a " + (sphere ? "cylinder" : "sphere") + " in " +
+                                     (sphere ? "2D" : "3D") + ")");
+  }
+  requireKeysOfType(obstacle, type, {"centre", "radius", "side"});
+  spec.type = sphere ? ObstacleType::Sphere : ObstacleType::Cylinder;
+  readBall(obstacle, dimension, spec);
   return spec;
 }
 

@@ -530,6 +530,40 @@ TEST(SceneReaderErrors, PointWithThreeEntriesIsRejected) {
             "hemicylinder.toml: key 'obstacle.point' must have 2 entries [x, y], got 3");
 }
 
+// A cylinder obstacle (the 2D section of a ball) in place of the seed's plane.
+std::string seedOnCylinder(const std::string& keys) {
+  return seedWith("type = \"plane\"\npoint = [0.0, -1.01]\nnormal = [0.0, 1.0]", "type = \"cylinder\"\n" + keys);
+}
+
+TEST(SceneReader, CylinderObstacleIsReadWithItsCentreRadiusAndSide) {
+  const Scene outside = parseScene(seedOnCylinder("centre = [0.0, -2.01]\nradius = 1.0"), kSource, {});
+  EXPECT_EQ(outside.obstacle.type, ObstacleType::Cylinder);
+  EXPECT_EQ(outside.obstacle.centre, Eigen::Vector2d(0.0, -2.01));
+  EXPECT_EQ(outside.obstacle.radius, 1.0);
+  EXPECT_FALSE(outside.obstacle.inside);
+  const Scene seat = parseScene(seedOnCylinder("centre = [0.0, 0.99]\nradius = 2.0\nside = \"inside\""), kSource, {});
+  EXPECT_TRUE(seat.obstacle.inside);
+}
+
+TEST(SceneReaderErrors, BadCurvedObstaclesAreRejectedWithTheKey) {
+  EXPECT_EQ(errorOf(seedOnCylinder("centre = [0.0, -2.01]\nradius = -1.0")),
+            "hemicylinder.toml: key 'obstacle.radius' = -1 is out of range: must be > 0");
+  EXPECT_EQ(errorOf(seedOnCylinder("centre = [0.0, -2.01, 0.0]\nradius = 1.0")),
+            "hemicylinder.toml: key 'obstacle.centre' must have 2 entries [x, y], got 3");
+  EXPECT_EQ(errorOf(seedOnCylinder("centre = [0.0, -2.01]\nradius = 1.0\nside = \"above\"")),
+            "hemicylinder.toml: key 'obstacle.side' = \"above\" is not one of \"outside\", \"inside\"");
+  EXPECT_EQ(errorOf(seedOnCylinder("centre = [0.0, -2.01]\nradius = 1.0\nnormal = [0.0, 1.0]")),
+            "hemicylinder.toml: key 'obstacle.normal' does not apply to obstacle.type = \"cylinder\" (its keys: "
+            "'centre', 'radius', 'side')");
+  EXPECT_THAT(errorOf(seedOnCylinder("radius = 1.0")), HasSubstr("'obstacle.centre'"));
+  EXPECT_EQ(errorOf(seedWith("type = \"plane\"\npoint = [0.0, -1.01]\nnormal = [0.0, 1.0]",
+                             "type = \"sphere\"\ncentre = [0.0, -2.01]\nradius = 1.0")),
+            "hemicylinder.toml: key 'obstacle.type' = \"sphere\" needs a 3D scene (a cylinder in 2D)");
+  EXPECT_EQ(errorOf(seedWith("normal = [0.0, 1.0]", "normal = [0.0, 1.0]\nradius = 1.0")),
+            "hemicylinder.toml: key 'obstacle.radius' does not apply to obstacle.type = \"plane\" (its keys: "
+            "'point', 'normal')");
+}
+
 TEST(SceneReaderErrors, EmptyBoundaryNameIsRejected) {
   EXPECT_EQ(errorOf(seedWith("boundary = \"arc\"", "boundary = \"\"")),
             "hemicylinder.toml: key 'contact.boundary' must not be empty");
