@@ -305,9 +305,50 @@ History readHistory(const TableView& entry) {
   return history;
 }
 
-/// [[dirichlet]] and [[load]]: an array of tables {boundary, component, times, values}.
+/// With `period` and `cycles` (both or neither), `one` holds one period from its first time and is
+/// repeated `cycles` times: point i of cycle j at t_i + j·period; after the last cycle its last value
+/// holds, as after any history. The period is a whole number of time steps, so that every cycle meets
+/// the same instants; the points lie within one period and end on the value they start with.
+History periodicHistory(const TableView& entry, History one, const TimeSpec& time) {
+  const bool has_period = entry.has("period"), has_cycles = entry.has("cycles");
+  if (!has_period && !has_cycles) return one;
+  const ErrorReporter& errors = entry.errors();
+  const char* given = has_period ? "period" : "cycles";
+  const char* missing = has_period ? "cycles" : "period";
+  if (!has_period || !has_cycles)
+    errors.fail(entry.keyPath(given), "key '" + entry.keyPath(given) + "' needs '" + entry.keyPath(missing) +
+                                          "' too (a periodic history takes both)");
+  const double period = entry.requiredNumber("period");
+  requireRange(entry, "period", period, period > 0.0 && std::isfinite(period), "must be > 0");
+  const int cycles = entry.requiredInt("cycles");
+  requireRange(entry, "cycles", cycles, cycles >= 1, "must be >= 1");
+  const double dt = time.end / (time.steps - 1), steps = period / dt;
+  if (std::abs(steps - std::round(steps)) > 1e-9 * std::max(1.0, steps))
+    errors.fail(entry.keyPath("period"), "key '" + entry.keyPath("period") + "' = " + formatNumber(period) +
+                                             " is not a whole number of time steps (time.end / (time.steps - 1) = " +
+                                             formatNumber(dt) + "): every cycle must meet the same instants");
+  const double span = one.times.back() - one.times.front();
+  if (span > period * (1.0 + 1e-12))
+    errors.fail(entry.keyPath("times"), "key '" + entry.keyPath("times") + "' spans " + formatNumber(span) +
+                                            ", more than one period (" + formatNumber(period) + ")");
+  if (one.values.front() != one.values.back())
+    errors.fail(entry.keyPath("values"), "key '" + entry.keyPath("values") + "' must end on the value it starts with (" +
+                                             formatNumber(one.values.front()) + ", not " +
+                                             formatNumber(one.values.back()) + ") to repeat");
+  const bool whole_period = std::abs(span - period) <= 1e-12 * period;
+  History all;
+  for (int j = 0; j < cycles; ++j)
+    for (std::size_t i = (j > 0 && whole_period) ? 1 : 0; i < one.times.size(); ++i) {
+      all.times.push_back(one.times[i] + j * period);
+      all.values.push_back(one.values[i]);
+    }
+  return all;
+}
+
+/// [[dirichlet]] and [[load]]: an array of tables {boundary, component, times, values[, period,
+/// cycles]}.
 template <class Spec>
-std::vector<Spec> readHistories(const TableView& root, std::string_view key, int dimension) {
+std::vector<Spec> readHistories(const TableView& root, std::string_view key, int dimension, const TimeSpec& time) {
   std::vector<Spec> specs;
   const toml::node* node = root.find(key);
   if (node == nullptr) return specs;
@@ -319,11 +360,11 @@ std::vector<Spec> readHistories(const TableView& root, std::string_view key, int
   for (std::size_t i = 0; i < array->size(); ++i) {
     const std::string entryPath = detail::indexPath(path, i);
     const TableView entry(detail::asTable(*array->get(i), entryPath, root.errors()), entryPath,
-                          root.errors(), {"boundary", "component", "times", "values"});
+                          root.errors(), {"boundary", "component", "times", "values", "period", "cycles"});
     Spec spec;
     spec.boundary = requiredName(entry, "boundary");
     spec.component = readComponent(entry, dimension);
-    spec.history = readHistory(entry);
+    spec.history = periodicHistory(entry, readHistory(entry), time);
     specs.push_back(std::move(spec));
   }
   return specs;
@@ -444,8 +485,8 @@ Scene readTable(const toml::table& table, const std::filesystem::path& source,
   scene.obstacle = readObstacle(root, scene.dimension);
   scene.contact = readContact(root);
   scene.time = readTime(root);
-  scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet", scene.dimension);
-  scene.loads = readHistories<LoadSpec>(root, "load", scene.dimension);
+  scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet", scene.dimension, scene.time);
+  scene.loads = readHistories<LoadSpec>(root, "load", scene.dimension, scene.time);
   scene.solver = readSolver(root);
   scene.output = readOutput(root);
   scene.parameters_json = toJson(table);

@@ -564,6 +564,51 @@ TEST(SceneReaderErrors, BadCurvedObstaclesAreRejectedWithTheKey) {
             "'point', 'normal')");
 }
 
+// The seed's first Dirichlet history (x of the top) replaced by `history` (its keys, one per line).
+std::string seedWithXHistory(const std::string& history) {
+  return seedWith("times  = [0.0, 0.2, 1.0]\nvalues = [0.0, 0.0, 0.05]", history);
+}
+
+TEST(SceneReader, APeriodicHistoryIsItsPeriodRepeated) {
+  // One period of 0.2 (40 steps of 0.005): out and back, three times, then held.
+  const Scene s = parseScene(seedWithXHistory("times = [0.1, 0.15, 0.2, 0.25, 0.3]\n"
+                                              "values = [0.0, 0.01, 0.0, -0.01, 0.0]\nperiod = 0.2\ncycles = 3"),
+                             kSource, {});
+  const std::vector<double> times = {0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7};
+  const std::vector<double> values = {0.0, 0.01, 0.0, -0.01, 0.0, 0.01, 0.0, -0.01, 0.0, 0.01, 0.0, -0.01, 0.0};
+  ASSERT_EQ(s.dirichlet[0].history.times.size(), times.size());
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    EXPECT_NEAR(s.dirichlet[0].history.times[i], times[i], 1e-15) << i;
+    EXPECT_EQ(s.dirichlet[0].history.values[i], values[i]) << i;
+  }
+  // Points that stop short of the period hold their last value until the next cycle starts.
+  const Scene held = parseScene(seedWithXHistory("times = [0.0, 0.05]\nvalues = [0.0, 0.0]\nperiod = 0.1\ncycles = 2"),
+                                kSource, {});
+  const std::vector<double> held_times = {0.0, 0.05, 0.1, 0.15};
+  ASSERT_EQ(held.dirichlet[0].history.times.size(), held_times.size());
+  for (std::size_t i = 0; i < held_times.size(); ++i)
+    EXPECT_NEAR(held.dirichlet[0].history.times[i], held_times[i], 1e-15) << i;
+}
+
+TEST(SceneReaderErrors, BadPeriodicHistoriesAreRejectedWithTheKey) {
+  const std::string one = "times = [0.0, 0.1, 0.2]\nvalues = [0.0, 0.01, 0.0]\n";
+  EXPECT_EQ(errorOf(seedWithXHistory(one + "period = 0.2")),
+            "hemicylinder.toml: key 'dirichlet[0].period' needs 'dirichlet[0].cycles' too (a periodic history "
+            "takes both)");
+  EXPECT_EQ(errorOf(seedWithXHistory(one + "period = 0.2012\ncycles = 2")),
+            "hemicylinder.toml: key 'dirichlet[0].period' = 0.2012 is not a whole number of time steps "
+            "(time.end / (time.steps - 1) = 0.005): every cycle must meet the same instants");
+  EXPECT_EQ(errorOf(seedWithXHistory(one + "period = -0.2\ncycles = 2")),
+            "hemicylinder.toml: key 'dirichlet[0].period' = -0.2 is out of range: must be > 0");
+  EXPECT_EQ(errorOf(seedWithXHistory(one + "period = 0.2\ncycles = 0")),
+            "hemicylinder.toml: key 'dirichlet[0].cycles' = 0 is out of range: must be >= 1");
+  EXPECT_EQ(errorOf(seedWithXHistory(one + "period = 0.1\ncycles = 2")),
+            "hemicylinder.toml: key 'dirichlet[0].times' spans 0.2, more than one period (0.1)");
+  EXPECT_EQ(errorOf(seedWithXHistory("times = [0.0, 0.1]\nvalues = [0.0, 0.01]\nperiod = 0.2\ncycles = 2")),
+            "hemicylinder.toml: key 'dirichlet[0].values' must end on the value it starts with (0, not 0.01) to "
+            "repeat");
+}
+
 TEST(SceneReaderErrors, EmptyBoundaryNameIsRejected) {
   EXPECT_EQ(errorOf(seedWith("boundary = \"arc\"", "boundary = \"\"")),
             "hemicylinder.toml: key 'contact.boundary' must not be empty");
