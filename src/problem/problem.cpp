@@ -14,6 +14,7 @@
 #include "stcontact/mesh/half_ball.hpp"
 #include "stcontact/mesh/half_disc.hpp"
 #include "stcontact/mesh/half_disc_slab.hpp"
+#include "stcontact/problem/distributed_loads.hpp"
 #include "stcontact/problem/representable_scales.hpp"
 #include "stcontact/problem/rigid_motions.hpp"
 #include "stcontact/problem/size_estimate.hpp"
@@ -70,8 +71,14 @@ Eigen::VectorXd facetLoadPattern(const Eigen::MatrixXd& x, const std::vector<Fac
 }
 
 Eigen::VectorXd loadPattern(const Problem& p, const LoadSpec& spec) {
-  return std::visit(Overloaded{[&](const TriMesh& m) { return facetLoadPattern(m.nodes, m.group(spec.boundary).edges, spec); },
-                               [&](const TetMesh& m) {
+  return std::visit(Overloaded{[&](const TriMesh& m) -> Eigen::VectorXd {
+                                 if (spec.kind == LoadKind::Pressure) return pressurePattern(m, spec.boundary);
+                                 if (spec.kind == LoadKind::Body) return bodyForcePattern(m, spec.component);
+                                 return facetLoadPattern(m.nodes, m.group(spec.boundary).edges, spec);
+                               },
+                               [&](const TetMesh& m) -> Eigen::VectorXd {
+                                 if (spec.kind == LoadKind::Pressure) return pressurePattern(m, spec.boundary);
+                                 if (spec.kind == LoadKind::Body) return bodyForcePattern(m, spec.component);
                                  return facetLoadPattern(m.nodes, m.group(spec.boundary).triangles, spec);
                                }},
                     p.body);
@@ -216,7 +223,8 @@ Problem buildProblem(const Scene& scene) {
   for (std::size_t j = 0; j < scene.dirichlet.size(); ++j)  // name the entry whose boundary is missing
     withContext(scene, "dirichlet[" + std::to_string(j) + "].boundary", [&] { group(scene.dirichlet[j].boundary); });
   for (std::size_t j = 0; j < scene.loads.size(); ++j)
-    withContext(scene, "load[" + std::to_string(j) + "].boundary", [&] { group(scene.loads[j].boundary); });
+    if (scene.loads[j].kind != LoadKind::Body)
+      withContext(scene, "load[" + std::to_string(j) + "].boundary", [&] { group(scene.loads[j].boundary); });
   const std::vector<int> owner = withContext(scene, "dirichlet", [&] {
     return std::visit([&](const auto& mesh) { return prescribedBy(mesh, scene.dirichlet); }, p.body);
   });

@@ -81,12 +81,20 @@ struct DirichletSpec {
   History history;
 };
 
+/// What a [[load]] entry's history gives (src/problem/distributed_loads.hpp).
+enum class LoadKind {
+  Force,     ///< the total force on a boundary along `component`, spread by edge length / face area
+  Pressure,  ///< a pressure on a boundary, per unit length (2D) or area (3D), along the inward normal
+  Body,      ///< a force per unit area (2D) or volume (3D) on the whole body, along `component`
+};
+
 /// [[load]]: total force on a boundary (per unit thickness in 2D), spread by edge length (2D) or
-/// face area (3D).
+/// face area (3D); or a pressure on a boundary; or a body force (`type`).
 struct LoadSpec {
-  std::string boundary;
-  Component component = Component::X;
+  std::string boundary;                ///< force, pressure
+  Component component = Component::X;  ///< force, body
   History history;
+  LoadKind kind = LoadKind::Force;
 };
 
 /// Floating-point type of the .vtu arrays (src/io/vtu_writer.hpp).

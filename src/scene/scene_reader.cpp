@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <type_traits>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -305,6 +306,26 @@ History readHistory(const TableView& entry) {
   return history;
 }
 
+/// Fails with "key 'P' <why>" when `table` has `key`.
+void refuseKey(const TableView& table, std::string_view key, const std::string& why) {
+  if (!table.has(key)) return;
+  const std::string path = table.keyPath(key);
+  table.errors().fail(path, "key '" + path + "' " + why);
+}
+
+/// A [[load]] entry's `type` ("force", the default; "pressure"; "body") and the keys it takes: a
+/// force its boundary and component, a pressure its boundary (along the inward normal), a body force
+/// its component (on the whole body).
+void readLoadKind(const TableView& entry, int dimension, LoadSpec& spec) {
+  const std::string type = entry.has("type") ? readKeyword(entry, "type", {"force", "pressure", "body"}) : "force";
+  spec.kind = type == "pressure" ? LoadKind::Pressure : type == "body" ? LoadKind::Body : LoadKind::Force;
+  if (spec.kind == LoadKind::Body) refuseKey(entry, "boundary", "does not apply to type = \"body\" (on the whole body)");
+  else spec.boundary = requiredName(entry, "boundary");
+  if (spec.kind == LoadKind::Pressure)
+    refuseKey(entry, "component", "does not apply to type = \"pressure\" (along the inward normal)");
+  else spec.component = readComponent(entry, dimension);
+}
+
 /// With `period` and `cycles` (both or neither), `one` holds one period from its first time and is
 /// repeated `cycles` times: point i of cycle j at t_i + j·period; after the last cycle its last value
 /// holds, as after any history. The period is a whole number of time steps, so that every cycle meets
@@ -360,10 +381,14 @@ std::vector<Spec> readHistories(const TableView& root, std::string_view key, int
   for (std::size_t i = 0; i < array->size(); ++i) {
     const std::string entryPath = detail::indexPath(path, i);
     const TableView entry(detail::asTable(*array->get(i), entryPath, root.errors()), entryPath,
-                          root.errors(), {"boundary", "component", "times", "values", "period", "cycles"});
+                          root.errors(), {"type", "boundary", "component", "times", "values", "period", "cycles"});
     Spec spec;
-    spec.boundary = requiredName(entry, "boundary");
-    spec.component = readComponent(entry, dimension);
+    if constexpr (std::is_same_v<Spec, LoadSpec>) readLoadKind(entry, dimension, spec);
+    else {
+      refuseKey(entry, "type", "applies to [[load]] entries only");
+      spec.boundary = requiredName(entry, "boundary");
+      spec.component = readComponent(entry, dimension);
+    }
     spec.history = periodicHistory(entry, readHistory(entry), time);
     specs.push_back(std::move(spec));
   }

@@ -609,6 +609,36 @@ TEST(SceneReaderErrors, BadPeriodicHistoriesAreRejectedWithTheKey) {
             "repeat");
 }
 
+// The seed with one [[load]] entry appended (its keys, one per line).
+std::string seedWithLoad(const std::string& keys) { return std::string(kSeed) + "[[load]]\n" + keys + "\n"; }
+
+TEST(SceneReader, PressureAndBodyLoadsAreReadWithTheirKeys) {
+  const Scene pressure = parseScene(seedWithLoad("type = \"pressure\"\nboundary = \"arc\"\ntimes = [0]\nvalues = [1]"),
+                                    kSource, {});
+  ASSERT_EQ(pressure.loads.size(), 1u);
+  EXPECT_EQ(pressure.loads[0].kind, LoadKind::Pressure);
+  EXPECT_EQ(pressure.loads[0].boundary, "arc");
+  const Scene body = parseScene(seedWithLoad("type = \"body\"\ncomponent = \"y\"\ntimes = [0]\nvalues = [-1]"),
+                                kSource, {});
+  EXPECT_EQ(body.loads[0].kind, LoadKind::Body);
+  EXPECT_EQ(body.loads[0].component, Component::Y);
+  const Scene force = parseScene(seedWithLoad("boundary = \"arc\"\ncomponent = \"x\"\ntimes = [0]\nvalues = [1]"),
+                                 kSource, {});
+  EXPECT_EQ(force.loads[0].kind, LoadKind::Force);
+}
+
+TEST(SceneReaderErrors, LoadKeysOfAnotherTypeAreRejected) {
+  EXPECT_EQ(errorOf(seedWithLoad("type = \"pressure\"\nboundary = \"arc\"\ncomponent = \"x\"\ntimes = [0]\nvalues = [1]")),
+            "hemicylinder.toml: key 'load[0].component' does not apply to type = \"pressure\" (along the inward "
+            "normal)");
+  EXPECT_EQ(errorOf(seedWithLoad("type = \"body\"\nboundary = \"arc\"\ncomponent = \"y\"\ntimes = [0]\nvalues = [1]")),
+            "hemicylinder.toml: key 'load[0].boundary' does not apply to type = \"body\" (on the whole body)");
+  EXPECT_EQ(errorOf(seedWithLoad("type = \"gravity\"\ncomponent = \"y\"\ntimes = [0]\nvalues = [1]")),
+            "hemicylinder.toml: key 'load[0].type' = \"gravity\" is not one of \"force\", \"pressure\", \"body\"");
+  EXPECT_THAT(errorOf(seedWith("boundary = \"top\"\ncomponent = \"x\"", "type = \"pressure\"\nboundary = \"top\"\ncomponent = \"x\"")),
+              HasSubstr("key 'dirichlet[0].type' applies to [[load]] entries only"));
+}
+
 TEST(SceneReaderErrors, EmptyBoundaryNameIsRejected) {
   EXPECT_EQ(errorOf(seedWith("boundary = \"arc\"", "boundary = \"\"")),
             "hemicylinder.toml: key 'contact.boundary' must not be empty");
