@@ -24,6 +24,9 @@ class LinearStage {
   virtual long sparseSolves() const = 0;
   /// Size of the separated representation (0 for the exact stage).
   virtual int rank() const { return 0; }
+  /// Whether the map ŝ ↦ s changes from one iteration to the next (a controlled stage adds
+  /// directions), which the error estimate must allow for (latin_solver.cpp).
+  virtual bool changesItsMap() const { return false; }
   /// The factor of A = K_ff + Bᵀ k B.
   virtual const SpdFactor& factor() const = 0;
 };

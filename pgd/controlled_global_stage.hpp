@@ -30,6 +30,7 @@ class ControlledGlobalStage : public latin::LinearStage {
   void observeGap(double gap) override { target_ = options_.gap_share * gap; }
   long sparseSolves() const override { return basis_.sparseSolves(); }
   int rank() const override { return basis_.size(); }
+  bool changesItsMap() const override { return true; }
   const SpdFactor& factor() const override { return factor_; }
 
   /// Starts the directions from `directions` (d n_C × p, e.g. a neighbouring problem's: a warm
