@@ -1,9 +1,10 @@
 #pragma once
 // What the triangle mesh (src/mesh/tri_mesh.hpp) and the tetrahedron mesh (src/mesh/tet_mesh.hpp)
 // do alike with their elements and named boundary groups: look a group up, collect its nodes,
-// check node ids and element measures. A group holds faces (edges in 2D, triangles in 3D) in the
-// member `Group::*faces` and their nodes in `nodes`.
+// check node ids and element measures, find the boundary's faces. A group holds faces (edges in 2D,
+// triangles in 3D) in the member `Group::*faces` and their nodes in `nodes`.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -36,6 +37,25 @@ const Group& findGroup(const std::map<std::string, Group>& groups, const std::st
   for (const auto& [key, value] : groups) msg << " '" << key << "'";
   msg << ")";
   throw InputError(msg.str());
+}
+
+/// The faces that belong to exactly one element, as `face(e, f)` orients them (f < faces_per_element):
+/// an interior face is met twice, once from each side. In the order of their sorted node ids.
+template <std::size_t N, class Face>
+std::vector<std::array<int, N>> facesOfOneElement(int elements, int faces_per_element, Face&& face) {
+  std::map<std::array<int, N>, std::array<int, N>> once;  // sorted ids → oriented face
+  for (int e = 0; e < elements; ++e)
+    for (int f = 0; f < faces_per_element; ++f) {
+      const std::array<int, N> oriented = face(e, f);
+      std::array<int, N> key = oriented;
+      std::sort(key.begin(), key.end());
+      auto [it, inserted] = once.emplace(key, oriented);
+      if (!inserted) once.erase(it);
+    }
+  std::vector<std::array<int, N>> faces;
+  faces.reserve(once.size());
+  for (const auto& [key, oriented] : once) faces.push_back(oriented);
+  return faces;
 }
 
 /// Fills `nodes` of every group from its faces (sorted, unique).

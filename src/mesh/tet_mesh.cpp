@@ -34,19 +34,8 @@ std::array<int, 3> outwardFace(const TetMesh& mesh, int e, int f) {
 }
 
 std::vector<std::array<int, 3>> boundaryTriangles(const TetMesh& mesh) {
-  std::map<std::array<int, 3>, std::array<int, 3>> once;  // sorted ids → oriented face
-  for (int e = 0; e < mesh.numElements(); ++e)
-    for (int f = 0; f < 4; ++f) {
-      const std::array<int, 3> oriented = outwardFace(mesh, e, f);
-      std::array<int, 3> key = oriented;
-      std::sort(key.begin(), key.end());
-      auto [it, inserted] = once.emplace(key, oriented);
-      if (!inserted) once.erase(it);  // an interior face, shared by two elements
-    }
-  std::vector<std::array<int, 3>> faces;
-  faces.reserve(once.size());
-  for (const auto& [key, oriented] : once) faces.push_back(oriented);
-  return faces;
+  const auto face = [&](int e, int f) { return outwardFace(mesh, e, f); };
+  return mesh_checks::facesOfOneElement<3>(mesh.numElements(), 4, face);
 }
 
 }  // namespace stc

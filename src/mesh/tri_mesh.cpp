@@ -24,4 +24,10 @@ void TriMesh::validate() const {
 
 void TriMesh::finalizeGroups() { mesh_checks::finalizeGroupNodes(groups, &BoundaryGroup::edges); }
 
+std::vector<std::array<int, 2>> boundaryEdges(const TriMesh& mesh) {
+  return mesh_checks::facesOfOneElement<2>(mesh.numElements(), 3, [&](int e, int a) {
+    return std::array<int, 2>{mesh.triangles(a, e), mesh.triangles((a + 1) % 3, e)};
+  });
+}
+
 }  // namespace stc

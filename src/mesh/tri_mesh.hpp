@@ -35,4 +35,9 @@ struct TriMesh {
   void finalizeGroups();
 };
 
+/// The edges that belong to exactly one triangle, each oriented as its (counter-clockwise) triangle
+/// runs it: the body lies on its left, its outward normal is (t_y, −t_x) for t = x_b − x_a. The 2D
+/// twin of boundaryTriangles (tet_mesh.hpp).
+std::vector<std::array<int, 2>> boundaryEdges(const TriMesh& mesh);
+
 }  // namespace stc

@@ -2,7 +2,8 @@
 // Nodal force patterns of distributed loads on P1 meshes (per unit value of their history):
 //   pressure p on a boundary group: each facet (edge, triangle) of measure |f| and outward unit
 //     normal n_f gives −p n_f |f| / k to each of its k nodes (the consistent load of a constant
-//     traction on linear elements); n_f points away from the element the facet belongs to;
+//     traction on linear elements); n_f from the facet as the mesh's boundary orients it
+//     (boundaryEdges, boundaryTriangles: the body on its inner side);
 //   body force b along a component: each element of measure |e| gives b |e| / (d + 1) to each of
 //     its d + 1 nodes (Zienkiewicz & Taylor, The Finite Element Method, vol. 1, §6.2: the consistent
 //     load of a constant body force on a linear simplex).
@@ -17,7 +18,7 @@
 namespace stc {
 
 /// The nodal forces of a unit pressure on `group` (2D: per unit thickness). Throws InputError when
-/// the group has no facet, or a facet belongs to no element.
+/// the group has no facet, or a facet that is not on the body's boundary.
 Eigen::VectorXd pressurePattern(const TriMesh& mesh, const std::string& group);
 Eigen::VectorXd pressurePattern(const TetMesh& mesh, const std::string& group);
 

@@ -22,7 +22,6 @@
 namespace stc {
 namespace {
 
-int componentIndex(Component c) { return c == Component::X ? 0 : c == Component::Y ? 1 : 2; }
 const char* componentName(Component c) { return c == Component::X ? "x" : c == Component::Y ? "y" : "z"; }
 
 std::vector<double> uniformGrid(const TimeSpec& time) {
@@ -70,18 +69,18 @@ Eigen::VectorXd facetLoadPattern(const Eigen::MatrixXd& x, const std::vector<Fac
   return f / total;
 }
 
+// A boundary group's facets: edges in 2D, triangles in 3D.
+const std::vector<std::array<int, 2>>& facetsOf(const BoundaryGroup& group) { return group.edges; }
+const std::vector<std::array<int, 3>>& facetsOf(const SurfaceGroup& group) { return group.triangles; }
+
 Eigen::VectorXd loadPattern(const Problem& p, const LoadSpec& spec) {
-  return std::visit(Overloaded{[&](const TriMesh& m) -> Eigen::VectorXd {
-                                 if (spec.kind == LoadKind::Pressure) return pressurePattern(m, spec.boundary);
-                                 if (spec.kind == LoadKind::Body) return bodyForcePattern(m, spec.component);
-                                 return facetLoadPattern(m.nodes, m.group(spec.boundary).edges, spec);
-                               },
-                               [&](const TetMesh& m) -> Eigen::VectorXd {
-                                 if (spec.kind == LoadKind::Pressure) return pressurePattern(m, spec.boundary);
-                                 if (spec.kind == LoadKind::Body) return bodyForcePattern(m, spec.component);
-                                 return facetLoadPattern(m.nodes, m.group(spec.boundary).triangles, spec);
-                               }},
-                    p.body);
+  return std::visit(
+      [&](const auto& m) -> Eigen::VectorXd {
+        if (spec.kind == LoadKind::Pressure) return pressurePattern(m, spec.boundary);
+        if (spec.kind == LoadKind::Body) return bodyForcePattern(m, spec.component);
+        return facetLoadPattern(m.nodes, facetsOf(m.group(spec.boundary)), spec);
+      },
+      p.body);
 }
 
 Eigen::SparseMatrix<double> stiffnessOf(const Problem& p) {

@@ -17,6 +17,9 @@ namespace stc {
 enum class PlaneModel { Strain, Stress };
 enum class Component { X, Y, Z };  ///< Z only in a 3D scene
 
+/// The dof of `c` within a node's d dofs: x 0, y 1, z 2.
+inline int componentIndex(Component c) { return c == Component::X ? 0 : c == Component::Y ? 1 : 2; }
+
 /// [mesh]: either a built-in generator or a Gmsh 4.1 file.
 struct MeshSpec {
   std::string generator;              ///< "half_disc" (2D), "half_ball" or "half_disc_slab" (3D), or empty

@@ -24,7 +24,7 @@ Strings freeMotions(const stc::Scene& scene) {
   const int d = stc::dimensionOf(body);
   std::vector<char> prescribed(static_cast<std::size_t>(d * stc::numNodes(body)), 0);
   for (const stc::DirichletSpec& spec : scene.dirichlet) {
-    const int component = spec.component == stc::Component::X ? 0 : spec.component == stc::Component::Y ? 1 : 2;
+    const int component = stc::componentIndex(spec.component);
     const std::vector<int>& nodes =
         std::visit([&](const auto& mesh) -> const std::vector<int>& { return mesh.group(spec.boundary).nodes; }, body);
     for (int node : nodes) prescribed[static_cast<std::size_t>(d * node + component)] = 1;
