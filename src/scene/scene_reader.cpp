@@ -3,13 +3,13 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
-#include <type_traits>
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
 #include <span>
 #include <sstream>
+#include <type_traits>
 #include <utility>
 
 #include "stcontact/core/input_error.hpp"
@@ -201,6 +201,13 @@ MaterialSpec readMaterial(const TableView& root) {
   return spec;
 }
 
+/// Fails with "key 'P' <why>" when `table` has `key`.
+void refuseKey(const TableView& table, std::string_view key, const std::string& why) {
+  if (!table.has(key)) return;
+  const std::string path = table.keyPath(key);
+  table.errors().fail(path, "key '" + path + "' " + why);
+}
+
 // A plane through `point` with the unit `normal` pointing into the body.
 void readPlane(const TableView& obstacle, int dimension, ObstacleSpec& spec) {
   spec.point = readVector(obstacle, "point", dimension);
@@ -226,14 +233,12 @@ void readBall(const TableView& obstacle, int dimension, ObstacleSpec& spec) {
 
 // The keys of each type; a key of another type is refused with the type's list.
 void requireKeysOfType(const TableView& obstacle, const std::string& type, std::initializer_list<const char*> keys) {
+  std::string list;
+  for (const char* k : keys) list += (list.empty() ? "'" : ", '") + std::string(k) + "'";
   for (const char* key : {"point", "normal", "centre", "radius", "side"}) {
     const auto own = [&](const char* k) { return std::string(k) == key; };
-    if (!obstacle.has(key) || std::find_if(keys.begin(), keys.end(), own) != keys.end()) continue;
-    std::string list;
-    for (const char* k : keys) list += (list.empty() ? "'" : ", '") + std::string(k) + "'";
-    const std::string path = obstacle.keyPath(key);
-    obstacle.errors().fail(path, "key '" + path + "' does not apply to obstacle.type = \"" + type +
-                                     "\" (its keys: " + list + ")");
+    if (std::find_if(keys.begin(), keys.end(), own) == keys.end())
+      refuseKey(obstacle, key, "does not apply to obstacle.type = \"" + type + "\" (its keys: " + list + ")");
   }
 }
 
@@ -304,13 +309,6 @@ History readHistory(const TableView& entry) {
                             std::to_string(history.times.size()) + ": they must match");
   }
   return history;
-}
-
-/// Fails with "key 'P' <why>" when `table` has `key`.
-void refuseKey(const TableView& table, std::string_view key, const std::string& why) {
-  if (!table.has(key)) return;
-  const std::string path = table.keyPath(key);
-  table.errors().fail(path, "key '" + path + "' " + why);
 }
 
 /// A [[load]] entry's `type` ("force", the default; "pressure"; "body") and the keys it takes: a
