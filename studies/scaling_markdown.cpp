@@ -73,10 +73,9 @@ std::string atToleranceCell(const ScalingPoint& p, const std::string& solver) {
   if (!m || !m->at_tolerance) return "—";
   const SolveAtTolerance& a = *m->at_tolerance;
   std::string cell = shortNumber(a.median_s, 3) + " s";
-  const StrategyMeasurement* incremental = p.strategy("incremental");
-  if (incremental && incremental != m && incremental->at_tolerance && incremental->at_tolerance->median_s > 0.0)
-    cell += " (" + shortNumber(a.median_s / incremental->at_tolerance->median_s, 3) + " ×)";
   if (solver == "incremental") return cell;
+  const double ratio = p.timeRatioAtTolerance(*m);
+  if (std::isfinite(ratio)) cell += " (" + shortNumber(ratio, 3) + " ×)";
   return cell + ", " + toString(a.termination) + ", error " + shortNumber(a.error, 2);
 }
 

@@ -26,6 +26,13 @@ const StrategyMeasurement* ScalingPoint::strategy(const std::string& solver) con
   return nullptr;
 }
 
+double ScalingPoint::timeRatioAtTolerance(const StrategyMeasurement& m) const {
+  const StrategyMeasurement* incremental = strategy("incremental");
+  if (!m.at_tolerance || !incremental || !incremental->at_tolerance) return NAN;
+  if (!(incremental->at_tolerance->median_s > 0.0)) return NAN;
+  return m.at_tolerance->median_s / incremental->at_tolerance->median_s;
+}
+
 std::vector<const ScalingPoint*> seriesPoints(const ScalingStudy& study, Series series) {
   std::vector<const ScalingPoint*> points;
   for (const ScalingPoint& p : study.points)

@@ -32,6 +32,9 @@ struct ScalingPoint {
   /// The series' size: dofs (mesh) or instants m (time).
   double size(Series series) const;
   const StrategyMeasurement* strategy(const std::string& solver) const;
+  /// The solve at tolerance of `m` over the incremental solver's at this size (NaN when either was
+  /// not run).
+  double timeRatioAtTolerance(const StrategyMeasurement& m) const;
 };
 
 struct ScalingStudy {

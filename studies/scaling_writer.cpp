@@ -17,14 +17,10 @@ std::string ratioCell(double ratio) { return std::isfinite(ratio) ? shortNumber(
 std::string atToleranceCells(const ScalingPoint& p, const StrategyMeasurement& m) {
   if (!m.at_tolerance) return ",,,,,,";
   const SolveAtTolerance& a = *m.at_tolerance;
-  const StrategyMeasurement* incremental = p.strategy("incremental");
-  const double ratio = incremental && incremental->at_tolerance && incremental->at_tolerance->median_s > 0.0
-                           ? a.median_s / incremental->at_tolerance->median_s
-                           : NAN;
   std::ostringstream cells;
   cells << shortNumber(a.median_s, 6) << ',' << toString(a.termination) << ',' << a.relaxations << ','
         << a.sparse_solves << ',' << shortNumber(a.error_estimate, 4) << ',' << shortNumber(a.error, 4) << ','
-        << ratioCell(ratio);
+        << ratioCell(p.timeRatioAtTolerance(m));
   return cells.str();
 }
 

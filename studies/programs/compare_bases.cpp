@@ -97,9 +97,7 @@ Run runStrategy(const Setup& st, const std::string& name, int repeats) {
 // The first record at or below `target`, its wall time rescaled to the timed runs (the error run's
 // clock includes one true-error evaluation per record).
 const stc::IterationRecord* firstBelow(const Run& r, double target) {
-  for (const auto& h : r.summary.history)
-    if (h.error && *h.error <= target) return &h;
-  return nullptr;
+  return stc::study::firstRecordBelow(r.summary, target);
 }
 double timedWall(const Run& r, const stc::IterationRecord& h) {
   return r.summary.wall_s > 0 ? h.wall_s * r.median_s / r.summary.wall_s : h.wall_s;

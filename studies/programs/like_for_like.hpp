@@ -83,9 +83,8 @@ inline std::vector<VariantRun> runAlternated(const Problem& problem, const std::
 
 /// The relaxations of the first record at or below `target` ("·" when none).
 inline std::string relaxationsTo(const SolveSummary& s, double target) {
-  for (const IterationRecord& h : s.history)
-    if (h.error && *h.error <= target) return std::to_string(h.relaxations);
-  return "·";
+  const IterationRecord* h = firstRecordBelow(s, target);
+  return h ? std::to_string(h->relaxations) : "·";
 }
 
 inline int largestCoarseSpace(const SolveSummary& s) {

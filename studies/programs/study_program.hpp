@@ -16,6 +16,7 @@
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/solver/solve_summary.hpp"
 
 namespace stc::study {
 
@@ -62,6 +63,13 @@ inline int runStudy(CLI::App& app, StudyOptions& o, int argc, char** argv, const
     std::cerr << "error: internal failure: " << e.what() << '\n';
     return 3;
   }
+}
+
+/// The first record of `summary` whose true error is at or below `target` (null: none).
+inline const IterationRecord* firstRecordBelow(const SolveSummary& summary, double target) {
+  for (const IterationRecord& h : summary.history)
+    if (h.error && *h.error <= target) return &h;
+  return nullptr;
 }
 
 /// The wall time of `work`, in seconds.
