@@ -1,5 +1,6 @@
 // stcontact check SCENE: validate and print the model's sizes.
 #include <iostream>
+#include <string>
 
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/problem/problem.hpp"
@@ -19,7 +20,8 @@ int runCheck(const CheckArgs& args) {
             << "elements         " << p.numElements() << "\n"
             << "dofs             " << p.numDofs() << " (" << p.numFreeDofs() << " free, "
             << p.numDofs() - p.numFreeDofs() << " prescribed)\n"
-            << "contact nodes    " << c.size() << " on boundary '" << scene.contact.boundary << "' ("
+            << "contact nodes    " << c.size() << " on boundary '" << scene.contact.boundary << "'"
+            << (c.isPair() ? ", node to node with '" + scene.contact.master + "' (two bodies)" : std::string()) << " ("
             << c.rows() << " interface unknowns per field and instant)\n"
             << "steps            " << p.numSteps() << " instants on [" << p.times.front() << ", " << p.times.back()
             << "]\n"

@@ -6,30 +6,44 @@
 #include <stdexcept>
 #include <string>
 
+#include "stcontact/contact/node_pairing.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/mesh/facet_measure.hpp"
 
 namespace stc {
 namespace {
 
-std::string describeNode(const Eigen::MatrixXd& positions, int node) {
-  std::ostringstream out;
-  out << "node " << node << " at (";
-  for (Eigen::Index d = 0; d < positions.rows(); ++d) out << (d > 0 ? ", " : "") << positions(d, node);
-  out << ")";
-  return out.str();
-}
-
 // Exactly ±1 or 0 up to round-off of a unit normal's components.
 constexpr double kAxisTolerance = 1e-12;
 
-// The group's contact nodes: the rule of buildContactInterface (header).
+// What the interface needs of a group node: its normal and initial gap, and its master node when
+// it faces another body (−1: a rigid obstacle).
+struct NodeGeometry {
+  Eigen::VectorXd normal;
+  double gap = 0.0;
+  int master = -1;
+};
+
+// A master node may have components prescribed only held at 0 (its B entries are then left out):
+// a master moved by a history would move the gap by a known amount the interface cannot carry.
+void requireMasterHeldOrFree(const Eigen::MatrixXd& positions, int master, const DofStatus& dofs) {
+  const int dim = static_cast<int>(positions.rows());
+  for (int a = 0; a < dim; ++a)
+    if (dofs.free_index[dim * master + a] < 0 && !dofs.zero[dim * master + a])
+      throw InputError("contact.master: " + describeNode(positions, master) + " has a prescribed displacement component " +
+                       "xyz"[a] + " that is not held at 0; a master node facing a free slave node may only be free or "
+                       "held at 0");
+}
+
+// The group's contact nodes: the rule of buildContactInterface (header), with each node's geometry.
+template <class GeometryOf>
 std::vector<int> contactNodes(const Eigen::MatrixXd& positions, const std::vector<int>& group_nodes,
-                              const std::string& boundary, const Obstacle& obstacle, const DofStatus& dofs) {
+                              const std::string& boundary, const GeometryOf& geometry_of, const DofStatus& dofs) {
   const int dim = static_cast<int>(positions.rows());
   std::vector<int> nodes;
   for (int node : group_nodes) {
-    const Eigen::VectorXd n = obstacleNormal(obstacle, positions.col(node));
+    const NodeGeometry g = geometry_of(node);
+    const Eigen::VectorXd& n = g.normal;
     const auto prescribed = [&](int a) { return dofs.free_index[dim * node + a] < 0; };
     bool left_out = true, normal_prescribed = false;
     for (int a = 0; a < dim; ++a) {
@@ -43,6 +57,7 @@ std::vector<int> contactNodes(const Eigen::MatrixXd& positions, const std::vecto
                          " has a prescribed displacement component " + "xyz"[a] +
                          "; a contact node may only have components prescribed along its normal, or held at 0 "
                          "along an axis orthogonal to it");
+    if (g.master >= 0) requireMasterHeldOrFree(positions, g.master, dofs);
     nodes.push_back(node);
   }
   if (nodes.empty()) throw InputError("contact boundary '" + boundary + "' has no free node");
@@ -62,10 +77,13 @@ Eigen::MatrixXd tangentFrame(const Eigen::VectorXd& n) {
   return t;
 }
 
-// τ lies along a prescribed axis of the node whose first dof is `first_dof`.
-bool heldTangent(const Eigen::VectorXd& tangent, const std::vector<int>& free_index, int first_dof) {
-  for (Eigen::Index a = 0; a < tangent.size(); ++a)
-    if (std::abs(tangent[a]) > kAxisTolerance && free_index[first_dof + a] >= 0) return false;
+// τ lies along a prescribed axis of the node whose first dof is `first_dof` (of its master too, when
+// it has one: −1 otherwise).
+bool heldTangent(const Eigen::VectorXd& tangent, const std::vector<int>& free_index, int first_dof, int master_dof) {
+  for (Eigen::Index a = 0; a < tangent.size(); ++a) {
+    if (std::abs(tangent[a]) <= kAxisTolerance) continue;
+    if (free_index[first_dof + a] >= 0 || (master_dof >= 0 && free_index[master_dof + a] >= 0)) return false;
+  }
   return true;
 }
 
@@ -77,17 +95,30 @@ void checkGap(const ContactInterface& c, const Eigen::MatrixXd& positions, int i
   throw InputError(msg.str());
 }
 
+// Rows of node i in B: +n, +τ on the node's free dofs, −n, −τ on its master's (u_s − u_m).
+void addRows(const ContactInterface& c, int i, int node, double sign, const std::vector<int>& free_index,
+             std::vector<Eigen::Triplet<double>>& triplets) {
+  const int dim = c.dimension;
+  for (int d = 0; d < dim; ++d) {
+    const int dof = free_index[dim * node + d];
+    if (dof < 0) continue;  // held at 0 (contactNodes)
+    triplets.emplace_back(c.normalRow(i), dof, sign * c.normals(d, i));
+    for (int a = 0; a < dim - 1; ++a)
+      triplets.emplace_back(c.normalRow(i) + 1 + a, dof, sign * c.tangents(d, (dim - 1) * i + a));
+  }
+}
+
 // The interface on a group whose boundary `facets` are edges (2D) or triangles (3D); each facet
 // gives an equal share of its measure to each of its nodes (1/2 of an edge, 1/3 of a triangle).
-template <class Facet>
+template <class Facet, class GeometryOf>
 ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>& group_nodes,
-                       const std::vector<Facet>& facets, const std::string& boundary, const Obstacle& obstacle,
+                       const std::vector<Facet>& facets, const std::string& boundary, const GeometryOf& geometry_of,
                        const DofStatus& dofs, double friction) {
   const std::vector<int>& free_index = dofs.free_index;
   const int dim = static_cast<int>(positions.rows());
   ContactInterface c;
   c.dimension = dim;
-  c.nodes = contactNodes(positions, group_nodes, boundary, obstacle, dofs);
+  c.nodes = contactNodes(positions, group_nodes, boundary, geometry_of, dofs);
   c.friction = friction;
   const int nc = c.size();
   c.normals.resize(dim, nc);
@@ -104,19 +135,18 @@ ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>&
   }
   std::vector<Eigen::Triplet<double>> triplets;
   for (int i = 0; i < nc; ++i) {
-    const Eigen::VectorXd x = positions.col(c.nodes[i]);
-    c.normals.col(i) = obstacleNormal(obstacle, x);
+    const NodeGeometry g = geometry_of(c.nodes[i]);
+    c.normals.col(i) = g.normal;
     c.tangents.middleCols(static_cast<Eigen::Index>(dim - 1) * i, dim - 1) = tangentFrame(c.normals.col(i));
-    c.initial_gap[i] = obstacleGap(obstacle, x);
+    c.initial_gap[i] = g.gap;
     checkGap(c, positions, i);
-    for (int d = 0; d < dim; ++d) {
-      const int dof = free_index[dim * c.nodes[i] + d];
-      if (dof < 0) continue;  // held at 0 (contactNodes)
-      triplets.emplace_back(c.normalRow(i), dof, c.normals(d, i));
-      for (int a = 0; a < dim - 1; ++a) triplets.emplace_back(c.normalRow(i) + 1 + a, dof, c.tangents(d, (dim - 1) * i + a));
+    addRows(c, i, c.nodes[i], 1.0, free_index, triplets);
+    if (g.master >= 0) {
+      c.master_nodes.push_back(g.master);
+      addRows(c, i, g.master, -1.0, free_index, triplets);
     }
     for (int a = 0; a < dim - 1; ++a)  // a tangent along a held axis: no free dof moves the node that way
-      if (heldTangent(c.tangents.col((dim - 1) * i + a), free_index, dim * c.nodes[i]))
+      if (heldTangent(c.tangents.col((dim - 1) * i + a), free_index, dim * c.nodes[i], g.master >= 0 ? dim * g.master : -1))
         c.held_rows.push_back(c.normalRow(i) + 1 + a);
   }
   const int n_free = static_cast<int>(std::count_if(free_index.begin(), free_index.end(), [](int j) { return j >= 0; }));
@@ -125,18 +155,51 @@ ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>&
   return c;
 }
 
+// The geometry of a node facing a rigid obstacle.
+auto facing(const Eigen::MatrixXd& positions, const Obstacle& obstacle) {
+  return [&positions, &obstacle](int node) {
+    const Eigen::VectorXd x = positions.col(node);
+    return NodeGeometry{obstacleNormal(obstacle, x), obstacleGap(obstacle, x), -1};
+  };
+}
+
+// The geometry of each slave node paired with a master node (contact/node_pairing.hpp), looked up
+// by mesh node id.
+template <class Mesh>
+auto paired(const Mesh& mesh, const std::string& slave, const std::string& master, const Eigen::VectorXd& common_normal) {
+  const std::vector<int>& slave_nodes = mesh.group(slave).nodes;
+  const std::vector<NodePair> pairs =
+      pairNodes(mesh.nodes, slave_nodes, mesh.group(master).nodes, outwardNodeNormals(mesh, master), common_normal);
+  std::vector<NodeGeometry> by_node(static_cast<size_t>(mesh.numNodes()));
+  for (size_t i = 0; i < pairs.size(); ++i)
+    by_node[static_cast<size_t>(slave_nodes[i])] = {pairs[i].normal, pairs[i].gap, pairs[i].master};
+  return [by_node = std::move(by_node)](int node) { return by_node[static_cast<size_t>(node)]; };
+}
+
 }  // namespace
 
 ContactInterface buildContactInterface(const TriMesh& mesh, const std::string& boundary, const Obstacle& obstacle,
                                        const DofStatus& dofs, double friction) {
   const BoundaryGroup& group = mesh.group(boundary);
-  return build(mesh.nodes, group.nodes, group.edges, boundary, obstacle, dofs, friction);
+  return build(mesh.nodes, group.nodes, group.edges, boundary, facing(mesh.nodes, obstacle), dofs, friction);
 }
 
 ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& boundary, const Obstacle& obstacle,
                                        const DofStatus& dofs, double friction) {
   const SurfaceGroup& group = mesh.group(boundary);
-  return build(mesh.nodes, group.nodes, group.triangles, boundary, obstacle, dofs, friction);
+  return build(mesh.nodes, group.nodes, group.triangles, boundary, facing(mesh.nodes, obstacle), dofs, friction);
+}
+
+ContactInterface buildContactPair(const TriMesh& mesh, const std::string& slave, const std::string& master,
+                                  const Eigen::VectorXd& common_normal, const DofStatus& dofs, double friction) {
+  const BoundaryGroup& group = mesh.group(slave);
+  return build(mesh.nodes, group.nodes, group.edges, slave, paired(mesh, slave, master, common_normal), dofs, friction);
+}
+
+ContactInterface buildContactPair(const TetMesh& mesh, const std::string& slave, const std::string& master,
+                                  const Eigen::VectorXd& common_normal, const DofStatus& dofs, double friction) {
+  const SurfaceGroup& group = mesh.group(slave);
+  return build(mesh.nodes, group.nodes, group.triangles, slave, paired(mesh, slave, master, common_normal), dofs, friction);
 }
 
 ContactInterface restrictToNodes(const ContactInterface& contact, const std::vector<int>& nodes) {
@@ -158,6 +221,7 @@ ContactInterface restrictToNodes(const ContactInterface& contact, const std::vec
     if (i < 0 || i >= contact.size())
       throw std::out_of_range("restrictToNodes: node index " + std::to_string(i));
     sub.nodes.push_back(contact.nodes[static_cast<size_t>(i)]);
+    if (contact.isPair()) sub.master_nodes.push_back(contact.master_nodes[static_cast<size_t>(i)]);
     sub.normals.col(j) = contact.normals.col(i);
     sub.tangents.middleCols((d - 1) * j, d - 1) = contact.tangents.middleCols((d - 1) * i, d - 1);
     sub.initial_gap[j] = contact.initial_gap[i];

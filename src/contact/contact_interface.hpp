@@ -1,6 +1,7 @@
 #pragma once
 // The discrete contact interface of docs/method.md §1: potential contact nodes facing a rigid obstacle,
-// their frames, initial gaps, tributary measures, the operator B and the LATIN search direction k.
+// or paired with the nodes of another body (node to node), their frames, initial gaps, tributary
+// measures, the operator B and the LATIN search direction k.
 // A node has d = 2 or 3 rows (the scene's dimension): one normal, then d − 1 tangential.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -16,6 +17,9 @@ namespace stc {
 struct ContactInterface {
   int dimension = 2;               ///< d: rows per node (normal + d − 1 tangential)
   std::vector<int> nodes;          ///< mesh node id of each potential contact node i = 0..n_C−1
+  /// Two bodies: the mesh node id of the master node paired with node i (its B rows carry −n, −τ:
+  /// v = relative displacement u_s − u_m); empty against a rigid obstacle.
+  std::vector<int> master_nodes;
   Eigen::MatrixXd normals;         ///< n_i (d × n_C), from the obstacle into the body
   /// Tangential directions, d × (d − 1) n_C: column (d − 1) i + a is τ_{i,a}. 2D: τ = (n_y, −n_x);
   /// 3D: τ_1 = the unit projection of the least aligned coordinate axis (e_x first) on the tangent
@@ -38,6 +42,7 @@ struct ContactInterface {
   double search_scale_per_length = 0.0;  ///< κ E / L, so that k_i = search_scale_per_length · ℓ_i
 
   int size() const { return static_cast<int>(nodes.size()); }
+  bool isPair() const { return !master_nodes.empty(); }
   int rows() const { return dimension * size(); }
   /// Row of the normal component of node i; its tangential rows follow.
   int normalRow(int i) const { return dimension * i; }
@@ -62,6 +67,15 @@ ContactInterface buildContactInterface(const TriMesh& mesh, const std::string& b
 /// The same on a tetrahedron mesh's surface group (3 rows per node).
 ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& boundary, const Obstacle& obstacle,
                                        const DofStatus& dofs, double friction);
+
+/// Two bodies of one mesh: the slave group's nodes paired node to node with the master group's,
+/// along `common_normal` when not empty (contact/node_pairing.hpp), the same rule for prescribed
+/// components as buildContactInterface; a master node may only be free or held at 0. Throws
+/// InputError when the boundaries do not face each other, overlap or do not match.
+ContactInterface buildContactPair(const TriMesh& mesh, const std::string& slave, const std::string& master,
+                                  const Eigen::VectorXd& common_normal, const DofStatus& dofs, double friction);
+ContactInterface buildContactPair(const TetMesh& mesh, const std::string& slave, const std::string& master,
+                                  const Eigen::VectorXd& common_normal, const DofStatus& dofs, double friction);
 
 /// The interface of nodes `nodes` (indices 0..n_C−1 of `contact`, kept in the given order, no
 /// repeats): their frames, gaps, measures, search directions (when set), B rows and held rows,

@@ -33,8 +33,8 @@ std::string frameName(int k) {
   return name;
 }
 
-// Nodal contact force (λ_n n + Σ_a λ_{t,a} τ_a) and state code (−1: not a contact node, 0 open,
-// 1 stick, 2 slip).
+// Nodal contact force (λ_n n + Σ_a λ_{t,a} τ_a; its opposite on a master node of two bodies) and
+// state code (−1: not a contact node, 0 open, 1 stick, 2 slip).
 void contactFields(const Problem& problem, const SolveResult& result, const ContactStateTable& states, int k,
                    Eigen::MatrixXd& force, Eigen::MatrixXd& state) {
   const auto& c = problem.contact;
@@ -46,6 +46,10 @@ void contactFields(const Problem& problem, const SolveResult& result, const Cont
     const Eigen::VectorXd l = result.interface.lambda.col(k).segment(c.normalRow(i), d);
     force.col(node) = l[0] * c.normals.col(i) + c.tangents.middleCols(static_cast<Eigen::Index>(d - 1) * i, d - 1) * l.tail(d - 1);
     state(0, node) = static_cast<double>(states.state(i, k));
+    if (!c.isPair()) continue;
+    const int master = c.master_nodes[i];  // action and reaction
+    force.col(master) = -force.col(node);
+    state(0, master) = state(0, node);
   }
 }
 

@@ -26,6 +26,7 @@ int translationAxis(const SeparatedLoad& load, int d) {
 }  // namespace
 
 std::optional<Eigen::MatrixXd> prescribedTranslation(const Problem& problem) {
+  if (problem.contact.isPair()) return std::nullopt;  // what closes is the bodies' relative motion
   const int d = problem.dimension, m = problem.numSteps();
   Eigen::MatrixXd W = Eigen::MatrixXd::Zero(d, m);
   for (const SeparatedLoad& load : problem.loads) {

@@ -21,7 +21,8 @@ namespace stc {
 
 /// w(t_k), d × m (column k), when the loading is a prescribed translation alone. None (nullopt) for
 /// an applied force (whose reach needs a solve) or a history whose prescribed dofs lie along more
-/// than one axis. Histories and forces that are zero at every instant are left out.
+/// than one axis. Histories and forces that are zero at every instant are left out. None for two
+/// bodies (ContactInterface::isPair): the gaps close by their relative motion, not by w.
 std::optional<Eigen::MatrixXd> prescribedTranslation(const Problem& problem);
 
 /// The nodes i (increasing) with g0_i + min_k n_i · w(t_k) ≤ margin, w = W's columns.

@@ -14,6 +14,7 @@
 #include "stcontact/mesh/half_ball.hpp"
 #include "stcontact/mesh/half_disc.hpp"
 #include "stcontact/mesh/half_disc_slab.hpp"
+#include "stcontact/mesh/mirror_image.hpp"
 #include "stcontact/problem/distributed_loads.hpp"
 #include "stcontact/problem/representable_scales.hpp"
 #include "stcontact/problem/rigid_motions.hpp"
@@ -92,7 +93,8 @@ Eigen::SparseMatrix<double> stiffnessOf(const Problem& p) {
 /// R, the body's size: the generator's radius, else the mesh's largest extent (the default of L).
 double bodySize(const Scene& scene, const Problem& p) {
   if (!scene.mesh.generator.empty()) return scene.mesh.radius;
-  const Eigen::MatrixXd x = p.nodePositions();
+  Eigen::MatrixXd x = p.nodePositions();
+  if (scene.mesh.mirror_gap) x = x.leftCols(x.cols() / 2).eval();  // one body (mesh/mirror_image.hpp)
   return (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).maxCoeff();
 }
 
@@ -185,9 +187,26 @@ auto withContext(const Scene& scene, const std::string& key, Step&& step) {
   }
 }
 
+// The rigid obstacle's interface, or the two bodies' node-to-node pairs (contact.master).
+ContactInterface contactInterfaceOf(const Scene& scene, const Problem& p, const std::vector<char>& zero) {
+  const DofStatus dofs{p.free_index, zero};
+  const ContactSpec& c = scene.contact;
+  if (!c.master.empty())
+    return std::visit([&](const auto& mesh) { return buildContactPair(mesh, c.boundary, c.master, c.normal, dofs, c.friction); },
+                      p.body);
+  const Obstacle obstacle = makeObstacle(scene.obstacle);
+  return std::visit([&](const auto& mesh) { return buildContactInterface(mesh, c.boundary, obstacle, dofs, c.friction); },
+                    p.body);
+}
+
 }  // namespace
 
 BodyMesh buildBodyMesh(const MeshSpec& spec, int dimension) {
+  if (spec.mirror_gap) {
+    MeshSpec body = spec;
+    body.mirror_gap.reset();
+    return withMirrorImage(buildBodyMesh(body, dimension), *spec.mirror_gap);
+  }
   if (dimension == 3) {
     if (!spec.file.empty()) return readGmsh3d(spec.file);
     if (spec.generator == "half_ball") return makeHalfBall({spec.radius, spec.divisions, spec.grading, spec.core});
@@ -205,8 +224,8 @@ Problem buildProblem(const Scene& scene) {
   p.name = scene.name;
   p.dimension = scene.dimension;
   const bool plane = scene.obstacle.type == ObstacleType::Plane;
-  if (plane ? (scene.obstacle.point.size() != p.dimension || scene.obstacle.normal.size() != p.dimension)
-            : scene.obstacle.centre.size() != p.dimension)
+  if (scene.contact.master.empty() && plane ? (scene.obstacle.point.size() != p.dimension || scene.obstacle.normal.size() != p.dimension)
+            : scene.contact.master.empty() && scene.obstacle.centre.size() != p.dimension)
     withContext(scene, "obstacle", [&] {
       throw InputError(std::string(plane ? "point and normal" : "centre") + " must have " +
                        std::to_string(p.dimension) + " entries in a " + std::to_string(p.dimension) + "D scene");
@@ -245,16 +264,8 @@ Problem buildProblem(const Scene& scene) {
 
   withContext(scene, "load", [&] { addLoads(p, scene, owner); });
   withContext(scene, "contact.boundary", [&] { group(scene.contact.boundary); });
-  p.contact = withContext(scene, "", [&] {
-    const Obstacle obstacle = makeObstacle(scene.obstacle);
-    const std::vector<char> zero = heldAtZero(p, owner);
-    const DofStatus dofs{p.free_index, zero};
-    return std::visit(
-        [&](const auto& mesh) {
-          return buildContactInterface(mesh, scene.contact.boundary, obstacle, dofs, scene.contact.friction);
-        },
-        p.body);
-  });
+  if (!scene.contact.master.empty()) withContext(scene, "contact.master", [&] { group(scene.contact.master); });
+  p.contact = withContext(scene, "", [&] { return contactInterfaceOf(scene, p, heldAtZero(p, owner)); });
   withContext(scene, "", [&] { requireRepresentableScales(scene, p); });
   const double size = bodySize(scene, p);
   p.length_scale = scene.contact.length_scale.value_or(size);

@@ -80,7 +80,8 @@ void requireRepresentableScales(const Scene& scene, const Problem& problem) {
   requireIncreasingInstants(problem.times);
   requireStiffnessScale(problem.stiffness);
   requireLoadScales(scene, problem);
-  requireGapScale(problem, scene.obstacle.type == ObstacleType::Plane ? "obstacle.point" : "obstacle.centre");
+  const bool pair = !scene.contact.master.empty();
+  requireGapScale(problem, pair ? "contact.master" : scene.obstacle.type == ObstacleType::Plane ? "obstacle.point" : "obstacle.centre");
 }
 
 }  // namespace stc

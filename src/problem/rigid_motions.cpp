@@ -3,6 +3,9 @@
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 #include <cmath>
+#include <numeric>
+#include <sstream>
+#include <type_traits>
 
 namespace stc {
 namespace {
@@ -44,10 +47,38 @@ std::string describe(const Eigen::VectorXd& motion, Eigen::Index d) {
   return text;
 }
 
-}  // namespace
+// The mesh's connected parts (bodies): node lists, each increasing, by union-find over the elements.
+std::vector<std::vector<int>> connectedParts(const BodyMesh& body) {
+  const int n = numNodes(body);
+  std::vector<int> root(static_cast<std::size_t>(n));
+  std::iota(root.begin(), root.end(), 0);
+  const auto find = [&](int a) {
+    while (root[a] != a) a = root[a] = root[root[a]];
+    return a;
+  };
+  std::visit([&](const auto& mesh) {
+    const auto& elements = [&]() -> const auto& {
+      if constexpr (std::is_same_v<std::decay_t<decltype(mesh)>, TriMesh>) return mesh.triangles;
+      else return mesh.tets;
+    }();
+    for (Eigen::Index e = 0; e < elements.cols(); ++e)
+      for (Eigen::Index a = 1; a < elements.rows(); ++a) root[find(elements(a, e))] = find(elements(0, e));
+  }, body);
+  std::vector<std::vector<int>> parts;
+  std::vector<int> part_of(static_cast<std::size_t>(n), -1);
+  for (int i = 0; i < n; ++i) {
+    int& part = part_of[find(i)];
+    if (part < 0) {
+      part = static_cast<int>(parts.size());
+      parts.emplace_back();
+    }
+    parts[part].push_back(i);
+  }
+  return parts;
+}
 
-std::vector<std::string> freeRigidMotions(const BodyMesh& body, const std::vector<char>& prescribed) {
-  const Eigen::MatrixXd x = nodePositions(body);
+// The free rigid motions of the part with node positions x (d × n) whose dofs `prescribed` flags.
+std::vector<std::string> freeMotionsOfPart(const Eigen::MatrixXd& x, const std::vector<char>& prescribed) {
   const Eigen::MatrixXd R = rigidMotionBasis(x);
   std::vector<Eigen::Index> rows;
   for (Eigen::Index dof = 0; dof < R.rows(); ++dof)
@@ -66,6 +97,33 @@ std::vector<std::string> freeRigidMotions(const BodyMesh& body, const std::vecto
   for (Eigen::Index k = 0; k < R.cols(); ++k) {
     const double s = k < sigma.size() ? sigma[k] : 0.0;
     if (s <= floor) free.push_back(describe(svd.matrixV().col(k), x.rows()));
+  }
+  return free;
+}
+
+}  // namespace
+
+std::vector<std::string> freeRigidMotions(const BodyMesh& body, const std::vector<char>& prescribed) {
+  const Eigen::MatrixXd x = nodePositions(body);
+  const std::vector<std::vector<int>> parts = connectedParts(body);
+  if (parts.size() == 1) return freeMotionsOfPart(x, prescribed);
+  const Eigen::Index d = x.rows();
+  std::vector<std::string> free;
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    std::vector<char> flags;
+    for (int node : parts[p])
+      for (Eigen::Index a = 0; a < d; ++a) flags.push_back(prescribed[static_cast<std::size_t>(d * node + a)]);
+    const Eigen::MatrixXd xp = x(Eigen::all, parts[p]);
+    const std::vector<std::string> motions = freeMotionsOfPart(xp, flags);
+    if (motions.empty()) continue;
+    std::ostringstream text;
+    text.precision(3);
+    text << "body " << p + 1 << " of " << parts.size() << ", around (";
+    const Eigen::VectorXd centre = xp.rowwise().mean();
+    for (Eigen::Index a = 0; a < d; ++a) text << (a > 0 ? ", " : "") << (std::abs(centre[a]) < 1e-12 ? 0.0 : centre[a]);
+    text << "):";
+    for (std::size_t k = 0; k < motions.size(); ++k) text << (k > 0 ? ", " : " ") << motions[k];
+    free.push_back(text.str());
   }
   return free;
 }

@@ -17,7 +17,9 @@ namespace stc {
 
 /// The free rigid motions of `body` given, per dof, whether it is prescribed; each described by its
 /// largest parts ("translation along x", "rotation about z", "translation along x with rotation
-/// about z"). Empty when the conditions hold the body.
+/// about z"). Empty when the conditions hold the body. A mesh of several connected parts (two
+/// bodies) is checked part by part: one entry per part with free motions, "body k of N, around
+/// (x̄): translation along x, rotation about z".
 std::vector<std::string> freeRigidMotions(const BodyMesh& body, const std::vector<char>& prescribed);
 
 }  // namespace stc

@@ -42,6 +42,7 @@ SizeEstimate estimateSize(const Scene& scene) {
   else if (m.generator == "half_ball") e.nodes = halfBallNodeCount({m.radius, m.divisions, m.grading, m.core});
   const int d = scene.dimension;
   e.contact_rows = d * contactNodes(m, e.nodes);
+  if (m.mirror_gap) e.nodes *= 2.0;  // the body and its image (mesh/mirror_image.hpp)
   const double rows = d * e.nodes;
   const double entries_per_row = d == 3 ? 45.0 : 14.0, fill = d == 3 ? 20.0 : 5.0;
   e.bytes = 12.0 * rows * entries_per_row * (3.0 + fill) + 8.0 * 10.0 * e.contact_rows * scene.time.steps;

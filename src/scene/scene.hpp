@@ -34,6 +34,9 @@ struct MeshSpec {
   int layers = 2;                     ///< half_disc_slab: element layers along z (>= 1)
   double core = 0.0;                  ///< half_ball: 0, or the half-width in (0, 1) of the uniformly meshed
                                       ///< core around the pole, in units of R (divisions then counts its cells)
+  /// Two bodies: the mesh and its mirror image this far below it (>= 0; src/mesh/mirror_image.hpp),
+  /// the image's groups named "mirror_" + the mesh's. None: one body.
+  std::optional<double> mirror_gap;
 };
 
 /// [material]: isotropic linear elasticity.
@@ -57,9 +60,14 @@ struct ObstacleSpec {
   bool inside = false;  ///< sphere, cylinder: the body inside the sphere (side = "inside")
 };
 
-/// [contact]: which boundary may touch the obstacle, with which Coulomb coefficient.
+/// [contact]: which boundary may touch the obstacle, with which Coulomb coefficient; or, with
+/// `master`, which two boundaries of two bodies of the mesh may touch each other (node to node,
+/// src/contact/node_pairing.hpp; the scene then has no [obstacle]).
 struct ContactSpec {
-  std::string boundary;
+  std::string boundary;                 ///< the body's contact boundary; with `master`, the slave's
+  std::string master;                   ///< empty: a rigid obstacle; else the other body's boundary
+  Eigen::VectorXd normal;               ///< with `master`: the common normal from the master into the
+                                        ///< slave along which nodes pair (unit), or empty: the nearest
   double friction = 0.0;                ///< mu >= 0
   std::optional<double> length_scale;  ///< L of the search direction k = kappa E l_i / L (> 0);
                                         ///< default: the radius, or the mesh's largest extent
@@ -131,7 +139,7 @@ struct Scene {
   PlaneModel plane = PlaneModel::Strain;  ///< 2D only
   MeshSpec mesh;
   MaterialSpec material;
-  ObstacleSpec obstacle;
+  ObstacleSpec obstacle;         ///< unused when contact.master names a second body
   ContactSpec contact;
   TimeSpec time;
   std::vector<DirichletSpec> dirichlet;

@@ -169,7 +169,8 @@ void readGenerator(const TableView& mesh, MeshSpec& spec) {
 
 MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, int dimension) {
   const TableView mesh = root.requiredTable(
-      "mesh", {"generator", "file", "radius", "arc_nodes", "grading", "divisions", "core", "thickness", "layers"});
+      "mesh", {"generator", "file", "radius", "arc_nodes", "grading", "divisions", "core", "thickness", "layers",
+               "mirror_gap"});
   const ErrorReporter& errors = mesh.errors();
   const bool hasGenerator = mesh.has("generator");
   if (hasGenerator == mesh.has("file")) {
@@ -178,6 +179,10 @@ MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, in
                             : "missing required key 'mesh.generator' or 'mesh.file' (give one)");
   }
   MeshSpec spec;
+  spec.mirror_gap = mesh.optionalNumber("mirror_gap");
+  if (spec.mirror_gap)
+    requireRange(mesh, "mirror_gap", *spec.mirror_gap, *spec.mirror_gap >= 0.0 && std::isfinite(*spec.mirror_gap),
+                 "must be >= 0");
   if (hasGenerator) {
     spec.generator = dimension == 3 ? readKeyword(mesh, "generator", {"half_ball", "half_disc_slab"})
                                     : readKeyword(mesh, "generator", {"half_disc"});
@@ -265,10 +270,24 @@ ObstacleSpec readObstacle(const TableView& root, int dimension) {
   return spec;
 }
 
-ContactSpec readContact(const TableView& root) {
-  const TableView contact = root.requiredTable("contact", {"boundary", "friction", "length_scale"});
+// contact.normal: a nonzero finite vector of `dimension` entries, normalised.
+Eigen::VectorXd readCommonNormal(const TableView& contact, int dimension) {
+  const Eigen::VectorXd normal = readVector(contact, "normal", dimension);
+  if (!(normal.allFinite() && normal.norm() > 0.0))
+    contact.errors().fail(contact.keyPath("normal"), "key 'contact.normal' must be a nonzero finite vector");
+  return normal.normalized();
+}
+
+ContactSpec readContact(const TableView& root, int dimension) {
+  const TableView contact = root.requiredTable("contact", {"boundary", "master", "normal", "friction", "length_scale"});
   ContactSpec spec;
   spec.boundary = requiredName(contact, "boundary");
+  if (contact.has("master")) spec.master = requiredName(contact, "master");
+  if (spec.master == spec.boundary)
+    contact.errors().fail(contact.keyPath("master"), "key '" + contact.keyPath("master") +
+                                                         "' must name another boundary than 'contact.boundary'");
+  if (!spec.master.empty() && contact.has("normal")) spec.normal = readCommonNormal(contact, dimension);
+  if (spec.master.empty()) refuseKey(contact, "normal", "applies to two bodies only (with 'contact.master')");
   spec.friction = contact.requiredNumber("friction");
   requireRange(contact, "friction", spec.friction, spec.friction >= 0.0, "must be >= 0");
   spec.length_scale = contact.optionalNumber("length_scale");
@@ -505,8 +524,11 @@ Scene readTable(const toml::table& table, const std::filesystem::path& source,
   scene.plane = readModel(root, scene.dimension);
   scene.mesh = readMesh(root, source, scene.dimension);
   scene.material = readMaterial(root);
-  scene.obstacle = readObstacle(root, scene.dimension);
-  scene.contact = readContact(root);
+  scene.contact = readContact(root, scene.dimension);
+  if (scene.contact.master.empty()) scene.obstacle = readObstacle(root, scene.dimension);
+  else if (root.has("obstacle"))
+    errors.fail("obstacle", "table [obstacle] and key 'contact.master' exclude each other: a rigid obstacle, or a "
+                            "second body's boundary to touch");
   scene.time = readTime(root);
   scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet", scene.dimension, scene.time);
   scene.loads = readHistories<LoadSpec>(root, "load", scene.dimension, scene.time);

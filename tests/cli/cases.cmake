@@ -18,6 +18,9 @@ stc_cli_test(no_command 1 "subcommand" )
 stc_cli_test(check_seed_sizes 0 "dofs +1142 \\(1088 free, 54 prescribed\\)" check ${seed})
 stc_cli_test(check_seed_contact_nodes 0 "contact nodes +101 on boundary 'arc'" check ${seed})
 stc_cli_test(check_punch 0 "contact nodes" check ${scenes}/punch.toml)
+# Two bodies (examples/scenes/two_cylinders.toml): node-to-node pairs, every body's contact forces.
+stc_cli_test(check_pair 0 "contact nodes +101 on boundary 'arc', node to node with 'mirror_arc' \\(two bodies\\)"
+             check ${scenes}/two_cylinders.toml)
 
 # Solves: exit 0 when converged, 2 when not (results still written).
 set(out ${CMAKE_CURRENT_BINARY_DIR}/out)
@@ -85,6 +88,7 @@ stc_cli_test(svd_small 0 "99.9" svd ${seed} ${small} --out ${out}/svd)
 #   refuse_NAME|PATTERN|SCENE|ARGS...  `solve SCENE --solver latin --out DIR ARGS...`,
 #                                  and DIR not created: the refusal comes before anything is written.
 set(refused ${CMAKE_CURRENT_BINARY_DIR}/refused)
+set(pair ${scenes}/two_cylinders.toml)
 set(trunc ${bad}/truncated.toml)
 string(REPLACE ";" "|" small_fields "${small}")
 set(stc_refusals
@@ -132,6 +136,14 @@ set(stc_refusals
   "refuse_period_off_grid|key 'dirichlet\\[0\\]\\.period' = 0\\.2012 is not a whole number of time steps|${seed}|--set|dirichlet[0].period=0.2012|--set|dirichlet[0].cycles=2"
   "refuse_negative_obstacle_radius|key 'obstacle\\.radius' = -1 is out of range: must be > 0|${scenes}/hemicylinder_seat.toml|--set|obstacle.radius=-1"
   "refuse_obstacles_overlapping_the_body|starts inside the obstacle|${scenes}/hemicylinder_seat.toml|--set|obstacle.radius=1.5"
+  "refuse_pair_negative_mirror_gap|key 'mesh\\.mirror_gap' = -0\\.1 is out of range: must be >= 0|${pair}|--set|mesh.mirror_gap=-0.1"
+  "refuse_pair_with_obstacle|table \\[obstacle\\] and key 'contact\\.master' exclude each other|${pair}|--set|obstacle.point=[0.0, -1.01]"
+  "refuse_pair_same_boundary|key 'contact\\.master' must name another boundary than 'contact\\.boundary'|${pair}|--set|contact.master=arc"
+  "refuse_pair_not_facing|slave node 0 at \\(-1, 0\\) does not face the master boundary|${pair}|--set|contact.master=mirror_top"
+  "refuse_pair_overlapping|has no master node on its line along contact\\.normal \\(no master node lies on the master's side|${pair}|--set|contact.normal=[0.0, -1.0]"
+  "refuse_pair_normal_zero|key 'contact\\.normal' must be a nonzero finite vector|${pair}|--set|contact.normal=[0.0, 0.0]"
+  "refuse_normal_without_master|key 'contact\\.normal' applies to two bodies only|${seed}|--set|contact.normal=[0.0, 1.0]"
+  "refuse_pair_free_body|free to move rigidly \\(body 2 of 2, around \\(0, -1\\.55\\): translation along x, translation along y, rotation about z\\)|${bad}/pair_free_body.toml"
   "refuse_loads_only|free to move rigidly \\(translation along x. translation along y. rotation about z\\)|${bad}/loads_only.toml"
   "bad_check_free_translation|free to move rigidly \\(translation along x\\).*prescribe it on a boundary|check|${bad}/free_translation.toml"
   "bad_check_loads_only|free to move rigidly \\(translation along x. translation along y. rotation about z\\)|check|${bad}/loads_only.toml"

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "fixtures/hemisphere_scene.hpp"
+#include "fixtures/two_bodies_scene.hpp"
 
 namespace stc::validation {
 
@@ -18,12 +19,12 @@ Scene pointContactScene(const PointContactSetup& setup) {
   if (setup.slide_steps == 0) {
     scene.dirichlet[0].history = {{0.0}, {0.0}};
     scene.dirichlet[2].history = {{0.0, 1.0}, {0.0, press}};
-    return scene;
+    return setup.pair ? test::mirroredPair(scene) : scene;
   }
   const double t_press = double(setup.press_steps) / (steps - 1);
   scene.dirichlet[0].history = {{0.0, t_press, 1.0}, {0.0, 0.0, setup.drive}};
   scene.dirichlet[2].history = {{0.0, t_press, 1.0}, {0.0, press, press}};
-  return scene;
+  return setup.pair ? test::mirroredPair(scene) : scene;
 }
 
 std::vector<Eigen::Vector2d> contactXY(const Problem& problem) {

@@ -22,6 +22,7 @@ struct PointContactSetup {
   int press_steps = 1;
   int slide_steps = 0;
   double drive = 0.0;
+  bool pair = false;      ///< two identical half-balls, node to node (tests/fixtures/two_bodies_scene.hpp)
 };
 inline constexpr double kPointIndentation = 0.005;  ///< δ beyond first contact: a ≈ √(R δ) ≈ 0.07 R
 

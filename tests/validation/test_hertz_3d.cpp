@@ -62,17 +62,18 @@ HertzComparison compareWithHertz(const Problem& problem, const Eigen::MatrixXd& 
   return out;
 }
 
-HertzComparison solveAndCompare(int divisions) {
+HertzComparison solveAndCompare(int divisions, bool pair = false) {
   PointContactSetup setup;
   setup.divisions = divisions;
+  setup.pair = pair;
   const Scene scene = pointContactScene(setup);
   const Problem problem = buildProblem(scene);
   const SolveResult result = solveIncremental(problem);
   EXPECT_TRUE(result.summary.converged()) << result.summary.message;
   HertzComparison c = compareWithHertz(problem, result.interface.lambda);
   c.h = coreCellSize(scene);
-  std::printf("[ measured ] divisions %d: %d dofs, %d contact nodes, a/h %.2f, error a %+.2f %%, error p0 %+.2f %%\n",
-              divisions, 3 * problem.numNodes(), problem.contact.size(), c.a / c.h, 100 * c.errorA(),
+  std::printf("[ measured ] %sdivisions %d: %d dofs, %d contact nodes, a/h %.2f, error a %+.2f %%, error p0 %+.2f %%\n",
+              pair ? "pair, " : "", divisions, 3 * problem.numNodes(), problem.contact.size(), c.a / c.h, 100 * c.errorA(),
               100 * c.errorP0());
   return c;
 }
@@ -84,6 +85,19 @@ HertzComparison solveAndCompare(int divisions) {
 // constants, 0.11 and 0.18 at divisions 3 (header), with a third of margin).
 TEST(Hertz3d, ContactRadiusAndPeakPressureConvergeTowardHertz) {
   const HertzComparison coarse = solveAndCompare(3), fine = solveAndCompare(4);
+  for (const HertzComparison& c : {coarse, fine}) {
+    EXPECT_LE(std::abs(c.errorA()), 0.15 * c.h / c.a);
+    EXPECT_LE(std::abs(c.errorP0()), 0.25 * c.h / c.a);
+  }
+  EXPECT_LT(std::abs(fine.errorA()), std::abs(coarse.errorA()));
+  EXPECT_LT(std::abs(fine.errorP0()), std::abs(coarse.errorP0()));
+}
+
+// Two identical elastic half-balls pressed together (node to node): for them R* = R/2 and
+// 1/E* = 2 (1 − ν²)/E, so a³ = 3 P R*/(4 E*) is the one body's on a rigid flat and compareWithHertz
+// applies unchanged; the same bounds and the same refinement.
+TEST(Hertz3d, TwoIdenticalSpheresConvergeTowardHertz) {
+  const HertzComparison coarse = solveAndCompare(3, true), fine = solveAndCompare(4, true);
   for (const HertzComparison& c : {coarse, fine}) {
     EXPECT_LE(std::abs(c.errorA()), 0.15 * c.h / c.a);
     EXPECT_LE(std::abs(c.errorP0()), 0.25 * c.h / c.a);
