@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "stcontact/mesh/connected_parts.hpp"
+
 namespace stc {
 namespace {
 
@@ -23,17 +25,51 @@ int translationAxis(const SeparatedLoad& load, int d) {
   return axis;
 }
 
+// Per node, how its body's translation enters the gaps: empty for one body; for two, +1 on the
+// slave's body, −1 on the master's, 0 elsewhere (g = g0 + n · (w_s − w_m)). None when the slave or
+// the master nodes lie on more than one body.
+std::optional<std::vector<double>> bodySigns(const Problem& problem) {
+  const ContactInterface& c = problem.contact;
+  if (!c.isPair()) return std::vector<double>();
+  const std::vector<int> part = partOfNodes(problem.body);
+  const int slave = part[c.nodes.front()], master = part[c.master_nodes.front()];
+  for (int i = 0; i < c.size(); ++i)
+    if (part[c.nodes[i]] != slave || part[c.master_nodes[i]] != master) return std::nullopt;
+  std::vector<double> sign(part.size(), 0.0);
+  for (std::size_t node = 0; node < part.size(); ++node) sign[node] = part[node] == slave ? 1.0 : part[node] == master ? -1.0 : 0.0;
+  return sign;
+}
+
+// The sign of the one body whose dofs `load` prescribes; none when it prescribes dofs of several.
+std::optional<double> signOfLoad(const SeparatedLoad& load, const std::vector<double>& sign, int d) {
+  std::optional<double> of;
+  for (Eigen::Index dof = 0; dof < load.prescribed.size(); ++dof) {
+    if (load.prescribed[dof] == 0.0) continue;
+    const double s = sign[static_cast<std::size_t>(dof / d)];
+    if (of && *of != s) return std::nullopt;
+    of = s;
+  }
+  return of;
+}
+
 }  // namespace
 
 std::optional<Eigen::MatrixXd> prescribedTranslation(const Problem& problem) {
-  if (problem.contact.isPair()) return std::nullopt;  // what closes is the bodies' relative motion
   const int d = problem.dimension, m = problem.numSteps();
+  const std::optional<std::vector<double>> sign = bodySigns(problem);
+  if (!sign) return std::nullopt;
   Eigen::MatrixXd W = Eigen::MatrixXd::Zero(d, m);
   for (const SeparatedLoad& load : problem.loads) {
     if (allZero(load.values)) continue;
     const int axis = translationAxis(load, d);
     if (axis < 0) return std::nullopt;
-    W.row(axis) += Eigen::Map<const Eigen::RowVectorXd>(load.values.data(), m);
+    double s = 1.0;
+    if (!sign->empty()) {  // two bodies: the part the history moves
+      const std::optional<double> of = signOfLoad(load, *sign, d);
+      if (!of) return std::nullopt;
+      s = *of;
+    }
+    W.row(axis) += s * Eigen::Map<const Eigen::RowVectorXd>(load.values.data(), m);
   }
   return W;
 }

@@ -2,8 +2,8 @@
 // What the prescribed motion tells before any solve (docs/method.md §5, "The reduced interface").
 // Each [[dirichlet]] history moves its dofs along one axis by the same amount (src/problem/problem.hpp,
 // SeparatedLoad), so when the loading is prescribed motion alone it is a translation
-// w(t) = Σ_l values_l(t) a_l, a_l the axis of history l. A body that followed it rigidly would
-// bring contact node i to the gap g0_i + n_i · w(t):
+// w(t) = Σ_l values_l(t) a_l, a_l the axis of history l (for two bodies, the slave's minus the
+// master's). A body that followed it rigidly would bring contact node i to the gap g0_i + n_i · w(t):
 //  - the nodes whose gap it closes at some instant are those the contact can reach. Elastic
 //    deformation moves the nodes near the contact less than the rigid motion (the body is
 //    compressed there), so the set is usually a superset of the contact zone; it is a prediction,
@@ -21,8 +21,9 @@ namespace stc {
 
 /// w(t_k), d × m (column k), when the loading is a prescribed translation alone. None (nullopt) for
 /// an applied force (whose reach needs a solve) or a history whose prescribed dofs lie along more
-/// than one axis. Histories and forces that are zero at every instant are left out. None for two
-/// bodies (ContactInterface::isPair): the gaps close by their relative motion, not by w.
+/// than one axis. Histories and forces that are zero at every instant are left out. Two bodies
+/// (ContactInterface::isPair): the gaps close by the bodies' relative motion, so w is the slave
+/// body's translation minus the master body's (each history moves the dofs of one body, else none).
 std::optional<Eigen::MatrixXd> prescribedTranslation(const Problem& problem);
 
 /// The nodes i (increasing) with g0_i + min_k n_i · w(t_k) ≤ margin, w = W's columns.

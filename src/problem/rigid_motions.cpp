@@ -3,9 +3,9 @@
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 #include <cmath>
-#include <numeric>
 #include <sstream>
-#include <type_traits>
+
+#include "stcontact/mesh/connected_parts.hpp"
 
 namespace stc {
 namespace {
@@ -45,36 +45,6 @@ std::string describe(const Eigen::VectorXd& motion, Eigen::Index d) {
             kAxis[axis];
   }
   return text;
-}
-
-// The mesh's connected parts (bodies): node lists, each increasing, by union-find over the elements.
-std::vector<std::vector<int>> connectedParts(const BodyMesh& body) {
-  const int n = numNodes(body);
-  std::vector<int> root(static_cast<std::size_t>(n));
-  std::iota(root.begin(), root.end(), 0);
-  const auto find = [&](int a) {
-    while (root[a] != a) a = root[a] = root[root[a]];
-    return a;
-  };
-  std::visit([&](const auto& mesh) {
-    const auto& elements = [&]() -> const auto& {
-      if constexpr (std::is_same_v<std::decay_t<decltype(mesh)>, TriMesh>) return mesh.triangles;
-      else return mesh.tets;
-    }();
-    for (Eigen::Index e = 0; e < elements.cols(); ++e)
-      for (Eigen::Index a = 1; a < elements.rows(); ++a) root[find(elements(a, e))] = find(elements(0, e));
-  }, body);
-  std::vector<std::vector<int>> parts;
-  std::vector<int> part_of(static_cast<std::size_t>(n), -1);
-  for (int i = 0; i < n; ++i) {
-    int& part = part_of[find(i)];
-    if (part < 0) {
-      part = static_cast<int>(parts.size());
-      parts.emplace_back();
-    }
-    parts[part].push_back(i);
-  }
-  return parts;
 }
 
 // The free rigid motions of the part with node positions x (d × n) whose dofs `prescribed` flags.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fixtures/seed_scene.hpp"
+#include "fixtures/two_bodies_scene.hpp"
 #include "stcontact/problem/prescribed_reach.hpp"
 #include "stcontact/problem/problem.hpp"
 
@@ -89,4 +90,28 @@ TEST(PrescribedReach, TheRigidMotionHistoryIsTheTranslatedBodysInterfaceDisplace
   }
   EXPECT_EQ(h.lambda.cwiseAbs().maxCoeff(), 0.0);
   EXPECT_GT(h.v.cwiseAbs().maxCoeff(), 0.1);  // the seed's top goes 0.11 down
+}
+
+// Two bodies: the gaps close by the relative motion, w = the slave body's translation minus the
+// master body's, whichever body is driven: the upper half-disc driven as the slave (w = its top's
+// motion), then as the master (w = minus it, the lower body's normal pointing down).
+TEST(PrescribedReach, TwoBodiesTakeTheSlavesTranslationMinusTheMasters) {
+  stc::Scene scene = stc::test::mirroredPair(stc::test::seedScene(21, 11));
+  const stc::Problem upper_slave = stc::buildProblem(scene);
+  const auto w = stc::prescribedTranslation(upper_slave);
+  ASSERT_TRUE(w.has_value());
+  const int top = std::get<stc::TriMesh>(upper_slave.body).group("top").nodes.front();
+  for (int k = 0; k < upper_slave.numSteps(); ++k) {
+    const Eigen::VectorXd u = upper_slave.fullDisplacement(Eigen::VectorXd::Zero(upper_slave.numFreeDofs()), k);
+    EXPECT_EQ(w->col(k), Eigen::Vector2d(u.segment<2>(2 * top))) << k;
+  }
+  std::swap(scene.contact.boundary, scene.contact.master);
+  scene.contact.normal = Eigen::Vector2d(0.0, -1.0);
+  const stc::Problem upper_master = stc::buildProblem(scene);
+  const auto w_master = stc::prescribedTranslation(upper_master);
+  ASSERT_TRUE(w_master.has_value());
+  EXPECT_EQ(*w_master, -*w);
+  EXPECT_EQ(stc::nodesWithinReach(upper_master.contact, *w_master, 0.0),
+            stc::nodesWithinReach(upper_slave.contact, *w, 0.0));
+  EXPECT_FALSE(stc::nodesWithinReach(upper_slave.contact, *w, 0.0).empty());
 }
