@@ -15,6 +15,7 @@
 #include "stcontact/io/json_writer.hpp"
 #include "stcontact/io/vtu_writer.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/mesh/connected_parts.hpp"
 #include "stcontact/spacetime/contact_state_table.hpp"
 
 namespace stc {
@@ -62,14 +63,25 @@ Eigen::MatrixXd inVtkOrder(const Eigen::Ref<const Eigen::MatrixXd>& stress, cons
   return tensor;
 }
 
-// One VTU frame: displacement, contact force and state on the nodes; the stress tensor and von Mises
-// on the elements.
+// The body of each node (1 × n: 0, 1, ...) when the mesh has more than one (two bodies in contact,
+// docs/two_bodies.md), for ParaView's Threshold; empty for one body, whose frames stay as they were.
+Eigen::MatrixXd bodyCodes(const Problem& problem) {
+  if (!problem.contact.isPair()) return {};
+  const std::vector<int> part = partOfNodes(problem.body);
+  Eigen::MatrixXd codes(1, static_cast<Eigen::Index>(part.size()));
+  for (std::size_t i = 0; i < part.size(); ++i) codes(0, static_cast<Eigen::Index>(i)) = part[i];
+  return codes;
+}
+
+// One VTU frame: displacement, contact force and state (and the body, when two) on the nodes; the
+// stress tensor and von Mises on the elements.
 void writeFrame(std::ostream& out, const Problem& problem, const VtuGrid& grid, const Eigen::VectorXd& u,
-                const Eigen::MatrixXd& force, const Eigen::MatrixXd& state) {
+                const Eigen::MatrixXd& force, const Eigen::MatrixXd& state, const Eigen::MatrixXd& bodies) {
   const Eigen::MatrixXd displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), problem.dimension, problem.numNodes());
-  const std::vector<PointField> nodal{{"displacement", displacement},
-                                      {"contact_force", force},
-                                      {"contact_state", state, FieldKind::Code}};
+  std::vector<PointField> nodal{{"displacement", displacement},
+                                {"contact_force", force},
+                                {"contact_state", state, FieldKind::Code}};
+  if (bodies.size() > 0) nodal.push_back({"body", bodies, FieldKind::Code});
   const auto cellFields = [](const Eigen::MatrixXd& stress, const std::array<int, 6>& vtkRows) {
     return std::vector<CellField>{{"stress", inVtkOrder(stress, vtkRows), FieldKind::SymmetricTensor},
                                   {"von_mises", stress.bottomRows(1)}};
@@ -137,6 +149,7 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
   const SpdFactor factor(problem.stiffness_free, "K_ff");
   const ContactStateTable states(problem.contact, result.admissible());
   const VtuGrid grid = gridOf(problem, precision);
+  const Eigen::MatrixXd bodies = bodyCodes(problem);
   const std::vector<int> steps = frameSteps(problem.numSteps(), stride);
   // The frames are independent: each thread solves with its own workspace and writes its own files.
   const int threads = threadCount();
@@ -148,7 +161,7 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
     Eigen::MatrixXd force, state;
     contactFields(problem, result, states, k, force, state);
     AtomicFile file(dir / frameName(k));
-    writeFrame(file.stream(), problem, grid, u, force, state);
+    writeFrame(file.stream(), problem, grid, u, force, state, bodies);
     file.commit();
   });
   std::vector<std::pair<double, std::string>> frames;

@@ -44,6 +44,13 @@ add_test(NAME cli.solve_writes_every_output
          COMMAND bash -c "for f in reactions.csv contact.csv history.csv summary.json solution.pvd vtu/step_00020.vtu; do test -s ${out}/latin3/$f || { echo missing $f; exit 1; }; done; grep -q '\"termination\": \"max_iterations\"' ${out}/latin3/summary.json")
 set_tests_properties(cli.solve_writes_every_output PROPERTIES DEPENDS cli.solve_not_converged_exits_2 LABELS cli)
 
+# Two bodies at small settings: converged, and the frames carry each node's body (one body's do not).
+stc_cli_test(solve_pair_small 0 "fas-apriori: converged" solve ${scenes}/two_cylinders.toml ${small} --out ${out}/pair)
+add_test(NAME cli.solve_pair_writes_the_body_of_each_node
+         COMMAND bash -c "grep -aq 'Name=\"body\"' ${out}/pair/vtu/step_00020.vtu && ! grep -aq 'Name=\"body\"' ${out}/default/vtu/step_00020.vtu")
+set_tests_properties(cli.solve_pair_writes_the_body_of_each_node PROPERTIES
+                     DEPENDS "cli.solve_pair_small;cli.solve_default_is_fas_apriori" LABELS cli)
+
 # The 3D seed scene (examples/scenes/hemisphere.toml) at small settings: sizes, a solve with its
 # 3D tables and tetrahedron VTU, the svd tables.
 set(hemisphere ${scenes}/hemisphere.toml)

@@ -144,4 +144,12 @@ TEST(CattaneoMindlin3d, DISABLED_StickRadiusOnRefinedMeshes) {
     }
 }
 
+// The pair at full size (docs/two_bodies.md): within one node spacing.
+TEST(CattaneoMindlin3d, DISABLED_TwoIdenticalSpheresStickRadiusOnRefinedMeshes) {
+  for (int divisions : {6, 8}) {
+    std::printf("[ measured ] pair, nu 0.30, divisions %d\n", divisions);
+    expectMindlinStickZone(runPartialSlip(divisions, 0.3, 80, 0.004, true), 1.0);
+  }
+}
+
 }  // namespace stc::validation

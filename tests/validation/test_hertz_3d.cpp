@@ -116,4 +116,13 @@ TEST(Hertz3d, DISABLED_WithinTwoPercentOnRefinedMeshes) {
   }
 }
 
+// The same for two identical half-balls (twice the dofs; docs/two_bodies.md).
+TEST(Hertz3d, DISABLED_TwoIdenticalSpheresWithinTwoPercentOnRefinedMeshes) {
+  for (int divisions : {6, 8}) {
+    const HertzComparison c = solveAndCompare(divisions, true);
+    EXPECT_LE(std::abs(c.errorA()), 0.02);
+    EXPECT_LE(std::abs(c.errorP0()), 0.02);
+  }
+}
+
 }  // namespace stc::validation
