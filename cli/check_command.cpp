@@ -25,6 +25,10 @@ int runCheck(const CheckArgs& args) {
             << c.rows() << " interface unknowns per field and instant)\n"
             << "steps            " << p.numSteps() << " instants on [" << p.times.front() << ", " << p.times.back()
             << "]\n"
+            << (p.frame_motion.size() > 0 ? "obstacle motion  a rigid translation up to |d| = " +
+                                                 std::to_string(p.frame_motion.colwise().norm().maxCoeff()) +
+                                                 " (solved in the obstacle's frame)\n"
+                                           : std::string())
             << "initial gap      min " << c.initial_gap.minCoeff() << ", max " << c.initial_gap.maxCoeff() << "\n"
             << "search direction k = kappa E l_i / L: kappa = " << scene.solver.search_scale << ", L = "
             << p.length_scale << ", kappa E / L = " << c.search_scale_per_length << ", k in ["

@@ -199,6 +199,7 @@ py::array displacementsFromForces(const ProblemRef& ref, const Eigen::MatrixXd& 
     py::gil_scoped_release unlocked;
     const SpdFactor factor(problem->stiffness_free, "K_ff");
     u = pgd::fullDisplacementHistory(*problem, factor, forces);
+    for (int k = 0; k < problem->numSteps(); ++k) problem->addFrameMotion(u.col(k), k);  // a moving obstacle's frame
   }
   return movedToNumpy(std::move(u));
 }

@@ -157,7 +157,8 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
   parallelFor(static_cast<int>(steps.size()), threads, [&](int item, int thread) {
     const int k = steps[static_cast<std::size_t>(item)];
     const Eigen::MatrixXd rhs = problem.load(k) + problem.contact.B.transpose() * result.interface.lambda.col(k);
-    const Eigen::VectorXd u = problem.fullDisplacement(factor.solve(rhs, workspaces[static_cast<std::size_t>(thread)]), k);
+    const Eigen::VectorXd u =
+        problem.absoluteDisplacement(factor.solve(rhs, workspaces[static_cast<std::size_t>(thread)]), k);
     Eigen::MatrixXd force, state;
     contactFields(problem, result, states, k, force, state);
     AtomicFile file(dir / frameName(k));

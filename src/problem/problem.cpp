@@ -132,7 +132,10 @@ void addLoads(Problem& p, const Scene& scene, const std::vector<int>& owner) {
     for (int dof = 0; dof < p.numDofs(); ++dof)
       if (owner[dof] == static_cast<int>(j)) pattern[dof] = 1.0;
     const Eigen::VectorXd force = -(K * pattern);  // −K_fD e_D on the free rows
-    p.loads.push_back({restrict(force), pattern, LoadHistory(scene.dirichlet[j].history).sample(p.times)});
+    std::vector<double> values = LoadHistory(scene.dirichlet[j].history).sample(p.times);
+    if (p.frame_motion.size() > 0)  // u_d − d(t): in the obstacle's frame (Problem::frame_motion)
+      for (int k = 0; k < p.numSteps(); ++k) values[k] -= p.frame_motion(componentIndex(scene.dirichlet[j].component), k);
+    p.loads.push_back({restrict(force), pattern, std::move(values)});
   }
   for (const auto& spec : scene.loads)
     p.loads.push_back({restrict(loadPattern(p, spec)), Eigen::VectorXd::Zero(p.numDofs()),
@@ -187,6 +190,19 @@ auto withContext(const Scene& scene, const std::string& key, Step&& step) {
   }
 }
 
+// d(t_k) of the obstacle's [[obstacle.motion]] entries, d × m; empty when it has none or they are
+// zero at every instant (a fixed obstacle: the problem stays as it was).
+Eigen::MatrixXd obstacleMotion(const Scene& scene, const std::vector<double>& times) {
+  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(scene.dimension, static_cast<Eigen::Index>(times.size()));
+  if (!scene.contact.master.empty()) return {};
+  for (const ObstacleMotionSpec& motion : scene.obstacle.motion) {
+    const std::vector<double> values = LoadHistory(motion.history).sample(times);
+    d.row(componentIndex(motion.component)) += Eigen::Map<const Eigen::RowVectorXd>(values.data(), d.cols());
+  }
+  if (d.cwiseAbs().maxCoeff() == 0.0) return {};
+  return d;
+}
+
 // The rigid obstacle's interface, or the two bodies' node-to-node pairs (contact.master).
 ContactInterface contactInterfaceOf(const Scene& scene, const Problem& p, const std::vector<char>& zero) {
   const DofStatus dofs{p.free_index, zero};
@@ -236,6 +252,7 @@ Problem buildProblem(const Scene& scene) {
   p.material = scene.material;
   p.plane = scene.plane;
   p.times = uniformGrid(scene.time);
+  p.frame_motion = obstacleMotion(scene, p.times);
   p.stiffness = stiffnessOf(p);
   const auto group = [&](const std::string& name) { requireGroup(p.body, name); };
   for (std::size_t j = 0; j < scene.dirichlet.size(); ++j)  // name the entry whose boundary is missing
@@ -287,6 +304,17 @@ Eigen::MatrixXd Problem::loadBlock(int k0, int count) const {
     F.noalias() += term.free_force * values;
   }
   return F;
+}
+
+void Problem::addFrameMotion(Eigen::Ref<Eigen::VectorXd> u, int k) const {
+  if (frame_motion.size() == 0) return;
+  for (int node = 0; node < numNodes(); ++node) u.segment(dimension * node, dimension) += frame_motion.col(k);
+}
+
+Eigen::VectorXd Problem::absoluteDisplacement(const Eigen::VectorXd& u_free, int k) const {
+  Eigen::VectorXd u = fullDisplacement(u_free, k);
+  addFrameMotion(u, k);
+  return u;
 }
 
 Eigen::VectorXd Problem::fullDisplacement(const Eigen::VectorXd& u_free, int k) const {

@@ -36,6 +36,12 @@ struct Problem {
   std::vector<SeparatedLoad> loads;
   ContactInterface contact;
   double length_scale = 1.0;                  ///< L of the search direction
+  /// The obstacle's rigid translation d(t_k) (d × m; empty: a fixed obstacle). The problem is posed
+  /// in the obstacle's frame: u' = u − d(t) has the same strains (a rigid translation has none), the
+  /// gaps g0 + n · u' and the slips relative to the obstacle, and the Dirichlet values u_d − d(t)
+  /// (docs/scene_format.md, `obstacle.motion`). Every solver works on u'; absoluteDisplacement
+  /// gives u back for the outputs.
+  Eigen::MatrixXd frame_motion;
 
   int numNodes() const { return stc::numNodes(body); }
   int numElements() const { return stc::numElements(body); }
@@ -49,8 +55,14 @@ struct Problem {
   Eigen::VectorXd load(int k) const;
   /// [f(t_0) … f(t_{m−1})] restricted to the instants [k0, k0 + count).
   Eigen::MatrixXd loadBlock(int k0, int count) const;
-  /// Full displacement at instant k from the free part.
+  /// Full displacement at instant k from the free part (in the obstacle's frame when it moves).
   Eigen::VectorXd fullDisplacement(const Eigen::VectorXd& u_free, int k) const;
+  /// The same with the obstacle's translation added back to every node: the displacement in the
+  /// scene's fixed frame (the outputs').
+  Eigen::VectorXd absoluteDisplacement(const Eigen::VectorXd& u_free, int k) const;
+  /// Adds the obstacle's translation at instant k to every node of the full displacement u: from
+  /// its frame to the scene's (nothing for a fixed obstacle).
+  void addFrameMotion(Eigen::Ref<Eigen::VectorXd> u, int k) const;
 };
 
 /// Builds the mesh (triangles or tetrahedra, by scene.dimension), assembles K, eliminates Dirichlet dofs, samples the histories and sets up the

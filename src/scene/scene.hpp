@@ -48,6 +48,18 @@ struct MaterialSpec {
 /// Plane (2D and 3D); sphere (3D) and cylinder (2D: its cross-section, a circle): a ball.
 enum class ObstacleType { Plane, Sphere, Cylinder };
 
+/// One piecewise-linear history of a scalar: `times` strictly increasing, same length as `values`.
+struct History {
+  std::vector<double> times;
+  std::vector<double> values;
+};
+
+/// [[obstacle.motion]]: the obstacle's rigid translation along `component` (docs/scene_format.md).
+struct ObstacleMotionSpec {
+  Component component = Component::X;
+  History history;
+};
+
 /// [obstacle]: rigid obstacle. Plane: through `point` with unit `normal` pointing into the body,
 /// both with the scene's dimension of entries. Sphere, cylinder: `centre` and `radius`, the solid
 /// ball the body lies outside of, or with `inside` the ball's complement, a seat the body lies in.
@@ -58,6 +70,9 @@ struct ObstacleSpec {
   Eigen::VectorXd centre = Eigen::VectorXd::Zero(2);     ///< sphere, cylinder
   double radius = 0.0;                                    ///< sphere, cylinder: > 0
   bool inside = false;  ///< sphere, cylinder: the body inside the sphere (side = "inside")
+  /// Its rigid translation d(t), one history per component (none: fixed). The problem is solved in
+  /// the obstacle's frame (src/problem/problem.hpp, Problem::frame_motion).
+  std::vector<ObstacleMotionSpec> motion;
 };
 
 /// [contact]: which boundary may touch the obstacle, with which Coulomb coefficient; or, with
@@ -77,12 +92,6 @@ struct ContactSpec {
 struct TimeSpec {
   int steps = 0;       ///< m >= 2
   double end = 1.0;    ///< > 0
-};
-
-/// One piecewise-linear history of a scalar: `times` strictly increasing, same length as `values`.
-struct History {
-  std::vector<double> times;
-  std::vector<double> values;
 };
 
 /// [[dirichlet]]: prescribed displacement component on every node of a boundary.

@@ -247,9 +247,14 @@ void requireKeysOfType(const TableView& obstacle, const std::string& type, std::
   }
 }
 
-ObstacleSpec readObstacle(const TableView& root, int dimension) {
-  const TableView obstacle = root.requiredTable("obstacle", {"type", "point", "normal", "centre", "radius", "side"});
+template <class Spec>
+std::vector<Spec> readHistories(const TableView& root, std::string_view key, int dimension, const TimeSpec& time);
+
+ObstacleSpec readObstacle(const TableView& root, int dimension, const TimeSpec& time) {
+  const TableView obstacle =
+      root.requiredTable("obstacle", {"type", "point", "normal", "centre", "radius", "side", "motion"});
   ObstacleSpec spec;
+  spec.motion = readHistories<ObstacleMotionSpec>(obstacle, "motion", dimension, time);
   const std::string type =
       obstacle.has("type") ? readKeyword(obstacle, "type", {"plane", "sphere", "cylinder"}) : "plane";
   if (type == "plane") {
@@ -401,7 +406,11 @@ std::vector<Spec> readHistories(const TableView& root, std::string_view key, int
                           root.errors(), {"type", "boundary", "component", "times", "values", "period", "cycles"});
     Spec spec;
     if constexpr (std::is_same_v<Spec, LoadSpec>) readLoadKind(entry, dimension, spec);
-    else {
+    else if constexpr (std::is_same_v<Spec, ObstacleMotionSpec>) {
+      refuseKey(entry, "type", "applies to [[load]] entries only");
+      refuseKey(entry, "boundary", "does not apply to the obstacle's motion (it moves as a whole)");
+      spec.component = readComponent(entry, dimension);
+    } else {
       refuseKey(entry, "type", "applies to [[load]] entries only");
       spec.boundary = requiredName(entry, "boundary");
       spec.component = readComponent(entry, dimension);
@@ -525,11 +534,11 @@ Scene readTable(const toml::table& table, const std::filesystem::path& source,
   scene.mesh = readMesh(root, source, scene.dimension);
   scene.material = readMaterial(root);
   scene.contact = readContact(root, scene.dimension);
-  if (scene.contact.master.empty()) scene.obstacle = readObstacle(root, scene.dimension);
+  scene.time = readTime(root);
+  if (scene.contact.master.empty()) scene.obstacle = readObstacle(root, scene.dimension, scene.time);
   else if (root.has("obstacle"))
     errors.fail("obstacle", "table [obstacle] and key 'contact.master' exclude each other: a rigid obstacle, or a "
                             "second body's boundary to touch");
-  scene.time = readTime(root);
   scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet", scene.dimension, scene.time);
   scene.loads = readHistories<LoadSpec>(root, "load", scene.dimension, scene.time);
   scene.solver = readSolver(root);

@@ -44,6 +44,8 @@ add_test(NAME cli.solve_writes_every_output
          COMMAND bash -c "for f in reactions.csv contact.csv history.csv summary.json solution.pvd vtu/step_00020.vtu; do test -s ${out}/latin3/$f || { echo missing $f; exit 1; }; done; grep -q '\"termination\": \"max_iterations\"' ${out}/latin3/summary.json")
 set_tests_properties(cli.solve_writes_every_output PROPERTIES DEPENDS cli.solve_not_converged_exits_2 LABELS cli)
 
+# A moving obstacle: check says so.
+stc_cli_test(check_moving_pad 0 "obstacle motion +a rigid translation up to \\|d\\| = 0\\.0632" check ${scenes}/moving_pad.toml)
 # Two bodies at small settings: converged, and the frames carry each node's body (one body's do not).
 stc_cli_test(solve_pair_small 0 "fas-apriori: converged" solve ${scenes}/two_cylinders.toml ${small} --out ${out}/pair)
 add_test(NAME cli.solve_pair_writes_the_body_of_each_node
@@ -151,6 +153,8 @@ set(stc_refusals
   "refuse_pair_normal_zero|key 'contact\\.normal' must be a nonzero finite vector|${pair}|--set|contact.normal=[0.0, 0.0]"
   "refuse_normal_without_master|key 'contact\\.normal' applies to two bodies only|${seed}|--set|contact.normal=[0.0, 1.0]"
   "refuse_pair_free_body|free to move rigidly \\(body 2 of 2, around \\(0, -1\\.55\\): translation along x, translation along y, rotation about z\\)|${bad}/pair_free_body.toml"
+  "refuse_obstacle_motion_boundary|key 'obstacle\\.motion\\[0\\]\\.boundary' does not apply to the obstacle's motion|${scenes}/moving_pad.toml|--set|obstacle.motion[0].boundary=arc"
+  "refuse_obstacle_motion_period_off_grid|key 'obstacle\\.motion\\[1\\]\\.period' = 0\\.201 is not a whole number of time steps|${scenes}/moving_pad.toml|--set|obstacle.motion[1].period=0.201"
   "refuse_loads_only|free to move rigidly \\(translation along x. translation along y. rotation about z\\)|${bad}/loads_only.toml"
   "bad_check_free_translation|free to move rigidly \\(translation along x\\).*prescribe it on a boundary|check|${bad}/free_translation.toml"
   "bad_check_loads_only|free to move rigidly \\(translation along x. translation along y. rotation about z\\)|check|${bad}/loads_only.toml"
