@@ -1,6 +1,6 @@
 #pragma once
-// Rigid obstacles: a plane, or a ball (a sphere in 3D, a cylinder's circular section in 2D) that the
-// body lies outside of, or inside of (a seat). Each gives the signed distance of a point and the unit
+// Rigid obstacles: a plane, a ball (a sphere in 3D, a cylinder's circular section in 2D) that the
+// body lies outside of, or inside of (a seat), or a polyline (2D) the body lies to the left of. Each gives the signed distance of a point and the unit
 // normal pointing from the obstacle into the body; the contact interface takes both at the nodes'
 // initial positions (small sliding, docs/method.md §1). Points have the scene's dimension.
 #include <Eigen/Core>
@@ -26,7 +26,17 @@ struct BallObstacle {
   bool inside = false;
 };
 
-using Obstacle = std::variant<PlaneObstacle, BallObstacle>;
+/// The polyline through `points` (2 × p, p ≥ 2, consecutive points distinct), the body on its left
+/// as one walks along it (the normal of segment t is (−t_y, t_x) / |t|). A point's gap and normal
+/// come from its closest point on the polyline: inside a segment, the segment's normal and the
+/// signed distance to its line; at a vertex (or beyond an end), the unit vector from the vertex to
+/// the point, signed by the side of the vertex's mean normal (the pseudo-normal of a signed
+/// distance), or the mean normal itself for a point on the vertex.
+struct PolylineObstacle {
+  Eigen::Matrix2Xd points;
+};
+
+using Obstacle = std::variant<PlaneObstacle, BallObstacle, PolylineObstacle>;
 
 Obstacle makeObstacle(const ObstacleSpec& spec);
 

@@ -190,6 +190,18 @@ auto withContext(const Scene& scene, const std::string& key, Step&& step) {
   }
 }
 
+// A plane's point and normal, a ball's centre, have the scene's dimension (a polyline's points are
+// checked by the reader; two bodies have no obstacle). Scenes built in code skip the reader.
+void requireObstacleDimension(const Scene& scene) {
+  const ObstacleSpec& o = scene.obstacle;
+  const int d = scene.dimension;
+  if (!scene.contact.master.empty() || o.type == ObstacleType::Polyline) return;
+  const bool plane = o.type == ObstacleType::Plane;
+  if (plane ? (o.point.size() == d && o.normal.size() == d) : o.centre.size() == d) return;
+  throw InputError(std::string(plane ? "point and normal" : "centre") + " must have " + std::to_string(d) +
+                   " entries in a " + std::to_string(d) + "D scene");
+}
+
 // d(t_k) of the obstacle's [[obstacle.motion]] entries, d × m; empty when it has none or they are
 // zero at every instant (a fixed obstacle: the problem stays as it was).
 Eigen::MatrixXd obstacleMotion(const Scene& scene, const std::vector<double>& times) {
@@ -239,13 +251,7 @@ Problem buildProblem(const Scene& scene) {
   Problem p;
   p.name = scene.name;
   p.dimension = scene.dimension;
-  const bool plane = scene.obstacle.type == ObstacleType::Plane;
-  if (scene.contact.master.empty() && plane ? (scene.obstacle.point.size() != p.dimension || scene.obstacle.normal.size() != p.dimension)
-            : scene.contact.master.empty() && scene.obstacle.centre.size() != p.dimension)
-    withContext(scene, "obstacle", [&] {
-      throw InputError(std::string(plane ? "point and normal" : "centre") + " must have " +
-                       std::to_string(p.dimension) + " entries in a " + std::to_string(p.dimension) + "D scene");
-    });
+  withContext(scene, "obstacle", [&] { requireObstacleDimension(scene); });
   withContext(scene, "", [&] { requireFitsInMemory(scene); });  // before the mesh is built
   const std::string mesh_key = scene.mesh.file.empty() ? "mesh.generator" : "";
   p.body = withContext(scene, mesh_key, [&] { return buildBodyMesh(scene.mesh, p.dimension); });

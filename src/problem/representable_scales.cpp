@@ -81,7 +81,11 @@ void requireRepresentableScales(const Scene& scene, const Problem& problem) {
   requireStiffnessScale(problem.stiffness);
   requireLoadScales(scene, problem);
   const bool pair = !scene.contact.master.empty();
-  requireGapScale(problem, pair ? "contact.master" : scene.obstacle.type == ObstacleType::Plane ? "obstacle.point" : "obstacle.centre");
+  const ObstacleType type = scene.obstacle.type;
+  requireGapScale(problem, pair                           ? "contact.master"
+                           : type == ObstacleType::Plane    ? "obstacle.point"
+                           : type == ObstacleType::Polyline ? "obstacle.points"
+                                                            : "obstacle.centre");
 }
 
 }  // namespace stc

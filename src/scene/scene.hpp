@@ -45,8 +45,9 @@ struct MaterialSpec {
   double poisson = 0.0;  ///< -1 < nu < 0.5
 };
 
-/// Plane (2D and 3D); sphere (3D) and cylinder (2D: its cross-section, a circle): a ball.
-enum class ObstacleType { Plane, Sphere, Cylinder };
+/// Plane (2D and 3D); sphere (3D) and cylinder (2D: its cross-section, a circle): a ball; polyline
+/// (2D): a rigid profile given by its points.
+enum class ObstacleType { Plane, Sphere, Cylinder, Polyline };
 
 /// One piecewise-linear history of a scalar: `times` strictly increasing, same length as `values`.
 struct History {
@@ -70,6 +71,7 @@ struct ObstacleSpec {
   Eigen::VectorXd centre = Eigen::VectorXd::Zero(2);     ///< sphere, cylinder
   double radius = 0.0;                                    ///< sphere, cylinder: > 0
   bool inside = false;  ///< sphere, cylinder: the body inside the sphere (side = "inside")
+  Eigen::Matrix2Xd points;  ///< polyline: its points (≥ 2, consecutive ones distinct), the body on the left
   /// Its rigid translation d(t), one history per component (none: fixed). The problem is solved in
   /// the obstacle's frame (src/problem/problem.hpp, Problem::frame_motion).
   std::vector<ObstacleMotionSpec> motion;

@@ -240,7 +240,7 @@ void readBall(const TableView& obstacle, int dimension, ObstacleSpec& spec) {
 void requireKeysOfType(const TableView& obstacle, const std::string& type, std::initializer_list<const char*> keys) {
   std::string list;
   for (const char* k : keys) list += (list.empty() ? "'" : ", '") + std::string(k) + "'";
-  for (const char* key : {"point", "normal", "centre", "radius", "side"}) {
+  for (const char* key : {"point", "normal", "centre", "radius", "side", "points"}) {
     const auto own = [&](const char* k) { return std::string(k) == key; };
     if (std::find_if(keys.begin(), keys.end(), own) == keys.end())
       refuseKey(obstacle, key, "does not apply to obstacle.type = \"" + type + "\" (its keys: " + list + ")");
@@ -250,16 +250,40 @@ void requireKeysOfType(const TableView& obstacle, const std::string& type, std::
 template <class Spec>
 std::vector<Spec> readHistories(const TableView& root, std::string_view key, int dimension, const TimeSpec& time);
 
+// A polyline (2D): `points` = [x0, y0, x1, y1, ...], at least two points, consecutive ones distinct.
+void readPolyline(const TableView& obstacle, ObstacleSpec& spec) {
+  const std::vector<double> xy = obstacle.requiredNumbers("points");
+  const std::string path = obstacle.keyPath("points");
+  if (xy.size() < 4 || xy.size() % 2 != 0)
+    obstacle.errors().fail(path, "key '" + path + "' must list x, y pairs of at least two points [x0, y0, x1, y1, ...], got " +
+                                     std::to_string(xy.size()) + " numbers");
+  spec.points = Eigen::Map<const Eigen::Matrix2Xd>(xy.data(), 2, static_cast<Eigen::Index>(xy.size() / 2));
+  for (Eigen::Index i = 1; i < spec.points.cols(); ++i)
+    if (spec.points.col(i) == spec.points.col(i - 1))
+      obstacle.errors().fail(path, "key '" + path + "': points " + std::to_string(i - 1) + " and " + std::to_string(i) +
+                                       " coincide (a segment must have a length)");
+  spec.type = ObstacleType::Polyline;
+}
+
 ObstacleSpec readObstacle(const TableView& root, int dimension, const TimeSpec& time) {
   const TableView obstacle =
-      root.requiredTable("obstacle", {"type", "point", "normal", "centre", "radius", "side", "motion"});
+      root.requiredTable("obstacle", {"type", "point", "normal", "centre", "radius", "side", "points", "motion"});
   ObstacleSpec spec;
   spec.motion = readHistories<ObstacleMotionSpec>(obstacle, "motion", dimension, time);
   const std::string type =
-      obstacle.has("type") ? readKeyword(obstacle, "type", {"plane", "sphere", "cylinder"}) : "plane";
+      obstacle.has("type") ? readKeyword(obstacle, "type", {"plane", "sphere", "cylinder", "polyline"}) : "plane";
   if (type == "plane") {
     requireKeysOfType(obstacle, type, {"point", "normal"});
     readPlane(obstacle, dimension, spec);
+    return spec;
+  }
+  if (type == "polyline") {
+    if (dimension != 2)
+      obstacle.errors().fail(obstacle.keyPath("type"), "key '" + obstacle.keyPath("type") +
+                                                           "' = \"polyline\" needs a 2D scene (a rigid surface mesh in 3D "
+                                                           "is not implemented)");
+    requireKeysOfType(obstacle, type, {"points"});
+    readPolyline(obstacle, spec);
     return spec;
   }
   const bool sphere = type == "sphere";

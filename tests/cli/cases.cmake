@@ -98,6 +98,7 @@ stc_cli_test(svd_small 0 "99.9" svd ${seed} ${small} --out ${out}/svd)
 #                                  and DIR not created: the refusal comes before anything is written.
 set(refused ${CMAKE_CURRENT_BINARY_DIR}/refused)
 set(pair ${scenes}/two_cylinders.toml)
+set(hemisphere_scene ${scenes}/hemisphere.toml)
 set(trunc ${bad}/truncated.toml)
 string(REPLACE ";" "|" small_fields "${small}")
 set(stc_refusals
@@ -155,6 +156,11 @@ set(stc_refusals
   "refuse_pair_free_body|free to move rigidly \\(body 2 of 2, around \\(0, -1\\.55\\): translation along x, translation along y, rotation about z\\)|${bad}/pair_free_body.toml"
   "refuse_obstacle_motion_boundary|key 'obstacle\\.motion\\[0\\]\\.boundary' does not apply to the obstacle's motion|${scenes}/moving_pad.toml|--set|obstacle.motion[0].boundary=arc"
   "refuse_obstacle_motion_period_off_grid|key 'obstacle\\.motion\\[1\\]\\.period' = 0\\.201 is not a whole number of time steps|${scenes}/moving_pad.toml|--set|obstacle.motion[1].period=0.201"
+  "refuse_polyline_odd|key 'obstacle\\.points' must list x, y pairs of at least two points|${scenes}/groove.toml|--set|obstacle.points=[-2.0, -0.2, 0.0]"
+  "refuse_polyline_coincident|key 'obstacle\\.points': points 0 and 1 coincide|${scenes}/groove.toml|--set|obstacle.points=[0.0, -1.2, 0.0, -1.2, 2.0, -0.2]"
+  "refuse_polyline_point_key|key 'obstacle\\.point' does not apply to obstacle\\.type = \"polyline\" \\(its keys: 'points'\\)|${scenes}/groove.toml|--set|obstacle.point=[0.0, 0.0]"
+  "refuse_polyline_in_3d|key 'obstacle\\.type' = \"polyline\" needs a 2D scene|${hemisphere_scene}|--set|obstacle.type=polyline"
+  "refuse_polyline_through_the_body|starts inside the obstacle|${scenes}/groove.toml|--set|obstacle.points=[-2.0, -0.2, 0.0, -0.9, 2.0, -0.2]"
   "refuse_loads_only|free to move rigidly \\(translation along x. translation along y. rotation about z\\)|${bad}/loads_only.toml"
   "bad_check_free_translation|free to move rigidly \\(translation along x\\).*prescribe it on a boundary|check|${bad}/free_translation.toml"
   "bad_check_loads_only|free to move rigidly \\(translation along x. translation along y. rotation about z\\)|check|${bad}/loads_only.toml"
