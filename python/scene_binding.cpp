@@ -51,7 +51,8 @@ py::dict checkSizes(const SceneHandle& handle) {
 }
 
 /// The mesh and the contact interface as arrays: nodes (N × d), triangles (E × 3, counter-clockwise
-/// node ids; 2D) or tetrahedra (E × 4, positive volume; 3D), contact_nodes (n_C mesh node ids, in the order of the interface rows), times (m).
+/// node ids; 2D) or tetrahedra (E × 4, positive volume; 3D), contact_nodes (n_C mesh node ids, in the order of the interface rows),
+/// master_nodes (two bodies: the master node paired with each, else empty), initial_gap (n_C), times (m).
 py::dict meshArrays(const SceneHandle& handle) {
   const std::shared_ptr<const Problem> problem = handle.problem();
   py::dict mesh;
@@ -60,6 +61,7 @@ py::dict meshArrays(const SceneHandle& handle) {
                         [&](const TetMesh& m) { mesh["tetrahedra"] = movedToNumpy(Eigen::MatrixXi(m.tets.transpose())); }},
              problem->body);
   mesh["contact_nodes"] = movedToNumpy(std::vector<int>(problem->contact.nodes));
+  mesh["master_nodes"] = movedToNumpy(std::vector<int>(problem->contact.master_nodes));
   mesh["initial_gap"] = movedToNumpy(Eigen::VectorXd(problem->contact.initial_gap));
   mesh["times"] = movedToNumpy(std::vector<double>(problem->times));
   return mesh;

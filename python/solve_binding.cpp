@@ -138,6 +138,7 @@ py::dict resultDict(const SceneHandle& run, SolveResult&& result) {
   out["reactions"] = reactionArrays(*problem, result);
   out["times"] = movedToNumpy(std::vector<double>(problem->times));
   out["contact_nodes"] = movedToNumpy(std::vector<int>(problem->contact.nodes));
+  out["master_nodes"] = movedToNumpy(std::vector<int>(problem->contact.master_nodes));
   out["forces"] = movedToNumpy(std::move(result.interface.lambda));
   out["displacements"] = movedToNumpy(std::move(result.interface.v));
   out["spatial_modes"] = movedToNumpy(std::move(result.spatial_modes));

@@ -113,7 +113,8 @@ class Scene:
         return self._handle.check()
 
     def mesh(self) -> dict[str, Any]:
-        """nodes (N x 2), triangles (E x 3 node ids), contact_nodes (n_C node ids), initial_gap (n_C), times (m)."""
+        """nodes (N x 2), triangles (E x 3 node ids), contact_nodes (n_C node ids), master_nodes (two bodies:
+        the master node paired with each contact node, else empty), initial_gap (n_C), times (m)."""
         return self._handle.mesh()
 
     def _key(self):

@@ -26,7 +26,9 @@ class SolveResult:
                                n_C x m    views of the rows above (no copy); tangential: along tau_1
       tangential_forces_2, tangential_displacements_2
                                n_C x m    3D only: along tau_2
-    Node i of the interface is mesh node contact_nodes[i].
+    Node i of the interface is mesh node contact_nodes[i]; with two bodies (contact.master) it is paired
+    with mesh node master_nodes[i] (empty for a rigid obstacle) and its rows are the relative
+    displacement u_s - u_m and the force on the slave (its opposite acts on the master).
     A priori strategies (fas-apriori, latin-pgd; no columns for the others):
       spatial_modes            n_free x r  energy modes of the separated expansion, by energy
       interface_directions     d n_C x p   the separated global stage's directions (warm starts)
@@ -40,6 +42,7 @@ class SolveResult:
         self.reactions = data["reactions"]
         self.times = data["times"]
         self.contact_nodes = data["contact_nodes"]
+        self.master_nodes = data["master_nodes"]
         self.interface_forces = data["forces"]
         self.interface_displacements = data["displacements"]
         self.spatial_modes = data["spatial_modes"]
