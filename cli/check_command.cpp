@@ -1,5 +1,6 @@
 // stcontact check SCENE: validate and print the model's sizes.
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include "stcontact/cli/commands.hpp"
@@ -7,6 +8,17 @@
 #include "stcontact/scene/scene_reader.hpp"
 
 namespace stc::cli {
+namespace {
+
+// "; master body E = 9000, nu = 0.25" for two bodies of two materials, else nothing.
+std::string masterMaterial(const Problem& p) {
+  if (!p.master_material) return {};
+  std::ostringstream text;
+  text << "; master body E = " << p.master_material->young << ", nu = " << p.master_material->poisson;
+  return text.str();
+}
+
+}  // namespace
 
 int runCheck(const CheckArgs& args) {
   const Scene scene = readScene(args.scene, args.overrides);
@@ -15,7 +27,8 @@ int runCheck(const CheckArgs& args) {
   std::cout << "scene            " << scene.name << " (" << args.scene << ")\n"
             << "model            "
             << (p.dimension == 3 ? "3D, P1 tetrahedra" : p.plane == PlaneModel::Strain ? "plane strain" : "plane stress")
-            << ", E = " << p.material.young << ", nu = " << p.material.poisson << ", mu = " << c.friction << "\n"
+            << ", E = " << p.material.young << ", nu = " << p.material.poisson << masterMaterial(p)
+            << ", mu = " << c.friction << "\n"
             << "nodes            " << p.numNodes() << "\n"
             << "elements         " << p.numElements() << "\n"
             << "dofs             " << p.numDofs() << " (" << p.numFreeDofs() << " free, "

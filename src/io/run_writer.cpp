@@ -86,15 +86,27 @@ void writeFrame(std::ostream& out, const Problem& problem, const VtuGrid& grid, 
     return std::vector<CellField>{{"stress", inVtkOrder(stress, vtkRows), FieldKind::SymmetricTensor},
                                   {"von_mises", stress.bottomRows(1)}};
   };
+  // Each element's stresses with its body's material (two bodies of two materials: both computed,
+  // each element's taken).
+  const auto perElement = [&](auto&& stresses) {
+    auto out = stresses(problem.material);
+    if (!problem.master_material) return out;
+    const auto master = stresses(*problem.master_material);
+    for (Eigen::Index e = 0; e < out.cols(); ++e)
+      if (problem.master_elements[static_cast<std::size_t>(e)]) out.col(e) = master.col(e);
+    return out;
+  };
   const std::vector<CellField> cells = std::visit(
       Overloaded{[&](const TriMesh& m) {
                    // rows σ_xx, σ_yy, σ_xy, σ_zz, von Mises (σ_zz = ν(σ_xx + σ_yy) in plane strain,
                    // 0 in plane stress); σ_yz = σ_xz = 0
-                   return cellFields(elementStresses(m, problem.material, problem.plane, u), {0, 1, 3, 2, -1, -1});
+                   return cellFields(perElement([&](const MaterialSpec& mat) { return elementStresses(m, mat, problem.plane, u); }),
+                                     {0, 1, 3, 2, -1, -1});
                  },
                  [&](const TetMesh& m) {
                    // rows σ_xx, σ_yy, σ_zz, σ_yz, σ_xz, σ_xy, von Mises
-                   return cellFields(elementStresses(m, problem.material, u), {0, 1, 2, 5, 3, 4});
+                   return cellFields(perElement([&](const MaterialSpec& mat) { return elementStresses(m, mat, u); }),
+                                     {0, 1, 2, 5, 3, 4});
                  }},
       problem.body);
   grid.write(out, nodal, cells);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <type_traits>
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/missing_file_error.hpp"
@@ -9,6 +10,7 @@
 #include "stcontact/fem/elasticity.hpp"
 #include "stcontact/fem/elasticity_3d.hpp"
 #include "stcontact/fem/load_history.hpp"
+#include "stcontact/mesh/connected_parts.hpp"
 #include "stcontact/mesh/facet_measure.hpp"
 #include "stcontact/mesh/gmsh_reader.hpp"
 #include "stcontact/mesh/half_ball.hpp"
@@ -84,10 +86,47 @@ Eigen::VectorXd loadPattern(const Problem& p, const LoadSpec& spec) {
       p.body);
 }
 
+// The mesh with only its elements e of flag[e] == keep (the same nodes and groups).
+template <class Mesh>
+Mesh withElements(const Mesh& mesh, const std::vector<char>& flag, char keep) {
+  std::vector<Eigen::Index> kept;
+  for (int e = 0; e < mesh.numElements(); ++e)
+    if (flag[static_cast<std::size_t>(e)] == keep) kept.push_back(e);
+  Mesh part = mesh;
+  if constexpr (std::is_same_v<Mesh, TriMesh>) part.triangles = mesh.triangles(Eigen::all, kept);
+  else part.tets = mesh.tets(Eigen::all, kept);
+  return part;
+}
+
+Eigen::SparseMatrix<double> stiffnessOf(const BodyMesh& body, const MaterialSpec& material, PlaneModel plane) {
+  return std::visit(Overloaded{[&](const TriMesh& m) { return assembleStiffness(m, hookeMatrix(material, plane)); },
+                               [&](const TetMesh& m) { return assembleStiffness(m, hookeMatrix3d(material)); }},
+                    body);
+}
+
+// K = Σ_e K_e with each element's material: the slave body's (and one body's) `material`, the
+// master body's `master_material` on its elements.
 Eigen::SparseMatrix<double> stiffnessOf(const Problem& p) {
-  return std::visit(Overloaded{[&](const TriMesh& m) { return assembleStiffness(m, hookeMatrix(p.material, p.plane)); },
-                               [&](const TetMesh& m) { return assembleStiffness(m, hookeMatrix3d(p.material)); }},
-                    p.body);
+  if (!p.master_material) return stiffnessOf(p.body, p.material, p.plane);
+  const auto part = [&](char master) {
+    return std::visit([&](const auto& m) { return BodyMesh(withElements(m, p.master_elements, master)); }, p.body);
+  };
+  return stiffnessOf(part(0), p.material, p.plane) + stiffnessOf(part(1), *p.master_material, p.plane);
+}
+
+// Per element, 1 when it belongs to the body of the boundary group `master`.
+std::vector<char> elementsOfBodyOf(const BodyMesh& body, const std::string& master) {
+  const std::vector<int> part = partOfNodes(body);
+  const int master_part = std::visit([&](const auto& m) { return part[m.group(master).nodes.front()]; }, body);
+  return std::visit([&](const auto& m) {
+    const auto& elements = [&]() -> const auto& {
+      if constexpr (std::is_same_v<std::decay_t<decltype(m)>, TriMesh>) return m.triangles;
+      else return m.tets;
+    }();
+    std::vector<char> flag(static_cast<std::size_t>(elements.cols()));
+    for (Eigen::Index e = 0; e < elements.cols(); ++e) flag[e] = part[elements(0, e)] == master_part ? 1 : 0;
+    return flag;
+  }, body);
 }
 
 /// R, the body's size: the generator's radius, else the mesh's largest extent (the default of L).
@@ -256,6 +295,11 @@ Problem buildProblem(const Scene& scene) {
   const std::string mesh_key = scene.mesh.file.empty() ? "mesh.generator" : "";
   p.body = withContext(scene, mesh_key, [&] { return buildBodyMesh(scene.mesh, p.dimension); });
   p.material = scene.material;
+  if (scene.master_material) {
+    withContext(scene, "contact.master", [&] { requireGroup(p.body, scene.contact.master); });
+    p.master_material = scene.master_material;
+    p.master_elements = elementsOfBodyOf(p.body, scene.contact.master);
+  }
   p.plane = scene.plane;
   p.times = uniformGrid(scene.time);
   p.frame_motion = obstacleMotion(scene, p.times);
@@ -293,7 +337,11 @@ Problem buildProblem(const Scene& scene) {
   const double size = bodySize(scene, p);
   p.length_scale = scene.contact.length_scale.value_or(size);
   withContext(scene, "", [&] { requireMeaningfulSearchDirection(scene, size, p.length_scale); });
-  setSearchDirection(p.contact, scene.solver.search_scale, p.material.young, p.length_scale);
+  // Two materials: E of k = κ E ℓ / L is their harmonic mean, the stiffness of the two bodies in series
+  // scaled so that equal materials give E (docs/two_bodies.md).
+  const double young = p.master_material ? 2.0 / (1.0 / p.material.young + 1.0 / p.master_material->young)
+                                         : p.material.young;
+  setSearchDirection(p.contact, scene.solver.search_scale, young, p.length_scale);
   return p;
 }
 

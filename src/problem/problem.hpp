@@ -3,6 +3,7 @@
 // separated form on the time grid, and the contact interface. Built once from a validated Scene.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,11 @@ struct Problem {
   std::string name;
   int dimension = 2;                          ///< d: 2 (triangles) or 3 (tetrahedra), dimensionOf(body)
   BodyMesh body;                              ///< the body's mesh
-  MaterialSpec material;
+  MaterialSpec material;                      ///< the body's (with two bodies, the slave's)
+  /// Two bodies of different materials ([master_material]): the master body's, and per element 1
+  /// when it belongs to the master body (empty: `material` everywhere).
+  std::optional<MaterialSpec> master_material;
+  std::vector<char> master_elements;
   PlaneModel plane = PlaneModel::Strain;      ///< 2D only
   std::vector<double> times;                  ///< t_0 … t_{m−1}
   Eigen::SparseMatrix<double> stiffness;      ///< full, unconstrained K (n × n), for energies

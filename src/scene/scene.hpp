@@ -149,7 +149,9 @@ struct Scene {
   int dimension = 2;             ///< 2 (plane, P1 triangles) or 3 (P1 tetrahedra)
   PlaneModel plane = PlaneModel::Strain;  ///< 2D only
   MeshSpec mesh;
-  MaterialSpec material;
+  MaterialSpec material;         ///< the body's; with two bodies, the slave body's (and the master's by default)
+  /// [master_material]: the master body's, with contact.master only (none: [material]).
+  std::optional<MaterialSpec> master_material;
   ObstacleSpec obstacle;         ///< unused when contact.master names a second body
   ContactSpec contact;
   TimeSpec time;

@@ -195,8 +195,7 @@ MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, in
   return spec;
 }
 
-MaterialSpec readMaterial(const TableView& root) {
-  const TableView material = root.requiredTable("material", {"young", "poisson"});
+MaterialSpec readMaterial(const TableView& material) {
   MaterialSpec spec;
   spec.young = material.requiredNumber("young");
   requireRange(material, "young", spec.young, spec.young > 0.0, "must be > 0");
@@ -548,7 +547,7 @@ std::string toJson(const toml::table& table) {
 Scene readTable(const toml::table& table, const std::filesystem::path& source,
                 const ErrorReporter& errors) {
   const TableView root(table, "", errors,
-                       {"name", "dimension", "model", "mesh", "material", "obstacle", "contact", "time",
+                       {"name", "dimension", "model", "mesh", "material", "master_material", "obstacle", "contact", "time",
                         "dirichlet", "load", "solver", "output"});
   Scene scene;
   scene.source = source;
@@ -556,11 +555,16 @@ Scene readTable(const toml::table& table, const std::filesystem::path& source,
   scene.dimension = readDimension(root);
   scene.plane = readModel(root, scene.dimension);
   scene.mesh = readMesh(root, source, scene.dimension);
-  scene.material = readMaterial(root);
+  scene.material = readMaterial(root.requiredTable("material", {"young", "poisson"}));
   scene.contact = readContact(root, scene.dimension);
   scene.time = readTime(root);
   if (scene.contact.master.empty()) scene.obstacle = readObstacle(root, scene.dimension, scene.time);
-  else if (root.has("obstacle"))
+  if (const auto master = root.optionalTable("master_material", {"young", "poisson"})) {
+    if (scene.contact.master.empty())
+      errors.fail("master_material", "table [master_material] applies to two bodies only (with 'contact.master')");
+    scene.master_material = readMaterial(*master);
+  }
+  if (!scene.contact.master.empty() && root.has("obstacle"))
     errors.fail("obstacle", "table [obstacle] and key 'contact.master' exclude each other: a rigid obstacle, or a "
                             "second body's boundary to touch");
   scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet", scene.dimension, scene.time);

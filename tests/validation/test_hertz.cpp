@@ -34,11 +34,14 @@ constexpr double kGrading = 1.05;
 struct Support {
   double radius = 0.0;  ///< R2; 0: the flat
   bool seat = false;    ///< the body inside the cylinder
-  bool pair = false;    ///< two identical elastic bodies (tests/fixtures/two_bodies_scene.hpp)
+  bool pair = false;    ///< two elastic bodies (tests/fixtures/two_bodies_scene.hpp)
+  double master_young = 0.0;  ///< pair: the lower body's E ([master_material]); 0: the same E = 3000
   /// R* of Hertz: 1/R* = 1/R + 1/R2 on a cylinder, 1/R − 1/R2 in a seat, R on the flat (R = 1).
-  /// Two identical bodies: R* = R/2 and 1/E* = 2 (1 − ν²)/E, so a² = 4 P R*/(π E*) is the one body's
-  /// on a rigid flat, and compareWithHertz's E/(1 − ν²) with R* = R gives it.
+  /// Two bodies: R* = R/2 and 1/E* = (1 − ν²)(1/E1 + 1/E2), so a² = 4 P R*/(π E*) is
+  /// compareWithHertz's 4 P R_eff (1 − ν²)/(π E1) with R_eff = (R/2)(1 + E1/E2): R for identical
+  /// bodies (the one body's on a rigid flat).
   double effectiveRadius() const {
+    if (pair) return 0.5 * (1.0 + (master_young > 0.0 ? 3000.0 / master_young : 1.0));
     if (radius == 0.0) return 1.0;
     return 1.0 / (1.0 + (seat ? -1.0 : 1.0) / radius);
   }
@@ -60,7 +63,10 @@ Scene hertzScene(int arc_nodes, const Support& support = {}) {
   const double indentation = kIndentation / support.effectiveRadius();
   scene.dirichlet[0].history = {{0.0, 1.0}, {0.0, 0.0}};
   scene.dirichlet[1].history = {{0.0, 1.0}, {0.0, -(g0 + indentation)}};
-  return support.pair ? test::mirroredPair(scene) : scene;
+  if (!support.pair) return scene;
+  Scene pair = test::mirroredPair(scene);
+  if (support.master_young > 0.0) pair.master_material = MaterialSpec{support.master_young, scene.material.poisson};
+  return pair;
 }
 
 struct HertzComparison {
@@ -147,6 +153,13 @@ TEST(Hertz, InACylindricalSeatHalfWidthAndPeakPressureConvergeToTheory) { expect
 // Measured at 801: the flat's figures, a −0.45 %, p0 +0.36 % (the frictionless pair carries the one
 // body's forces to round-off, tests/validation/test_two_bodies.cpp).
 TEST(Hertz, TwoIdenticalCylindersHalfWidthAndPeakPressureConvergeToTheory) { expectConvergenceToHertz({0.0, false, true}); }
+
+// Two cylinders of two materials ([master_material]: the lower one three times stiffer, E2 = 9000):
+// Hertz with 1/E* = (1 − ν²)(1/E1 + 1/E2), frictionless (β ≠ 0 matters for friction only), the
+// same bound. Measured: a −2.3 / −0.78 / −0.48 %, p0 +1.4 / +0.48 / +0.39 % at 201 / 401 / 801 (a/h 22 at 801).
+TEST(Hertz, TwoCylindersOfTwoMaterialsHalfWidthAndPeakPressureConvergeToTheory) {
+  expectConvergenceToHertz({0.0, false, true, 9000.0});
+}
 
 // LATIN on the coarsest Hertz mesh must give the incremental solver's a and p0: both solve the same
 // discrete problem, and a and p0 are smooth functions of the nodal forces. Tolerance 1e-6 relative.

@@ -98,3 +98,27 @@ TEST(TwoBodies, EveryStrategyReachesTheIncrementalSolutionOfThePairIn3d) {
 
 }  // namespace
 }  // namespace stc::validation
+
+namespace stc::validation {
+namespace {
+
+// [master_material] equal to [material] assembles the same stiffness (the two bodies' parts summed)
+// and gives the same forces; a stiffer master changes them.
+TEST(TwoBodies, AMasterMaterialEqualToTheBodysChangesNothing) {
+  const Scene one = test::mirroredPair(pressedSeed(31, 11, 0.15));
+  Scene same = one;
+  same.master_material = one.material;
+  const Problem a = buildProblem(one), b = buildProblem(same);
+  ASSERT_TRUE(b.master_material.has_value());
+  const double scale = Eigen::MatrixXd(a.stiffness).cwiseAbs().maxCoeff();
+  EXPECT_LE(Eigen::MatrixXd(a.stiffness - b.stiffness).cwiseAbs().maxCoeff(), 1e-14 * scale);
+  EXPECT_LE((a.contact.search_direction - b.contact.search_direction).cwiseAbs().maxCoeff(),
+            1e-14 * a.contact.search_direction.maxCoeff());
+  Scene stiffer = one;
+  stiffer.master_material = MaterialSpec{9000.0, 0.3};
+  const SolveResult r_a = solveIncremental(a), r_s = solveIncremental(buildProblem(stiffer));
+  EXPECT_GT(largestRow(r_s.interface.lambda, 0), 1.2 * largestRow(r_a.interface.lambda, 0));
+}
+
+}  // namespace
+}  // namespace stc::validation
