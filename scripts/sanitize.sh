@@ -18,7 +18,7 @@
 #   Not built: the Python module (-DSTC_BUILD_PYTHON=OFF): a sanitized extension cannot be loaded
 #   into an interpreter that is not; the Release run tests it.
 # Sample run:
-#   bash scripts/sanitize.sh                 # whole suite, about 14 min on 2 cores (build 11, tests 3)
+#   bash scripts/sanitize.sh                 # whole suite, about 20 min on 2 cores (build 11, tests 9)
 #   bash scripts/sanitize.sh -R 'Scene|Gmsh'  # extra arguments go to ctest
 # Options (environment):
 #   STC_ASAN_DIR   build folder (default: build-asan/ in the repository)
