@@ -78,10 +78,9 @@ NodePair nearestPair(const Eigen::MatrixXd& positions, int s, const Eigen::Matri
   (xm.colwise() - positions.col(s)).colwise().squaredNorm().minCoeff(&j);
   const int m = master_nodes[static_cast<size_t>(j)];
   const Eigen::VectorXd d = positions.col(s) - positions.col(m);
-  NodePair pair{m, master_normals.col(j), d.norm()};
-  if (pair.gap > kCoincident * extent) pair.normal = d / pair.gap;
-  else pair.gap = 0.0;
-  return pair;
+  const double distance = d.norm();
+  if (distance > kCoincident * extent) return {m, d / distance, distance};
+  return {m, master_normals.col(j), 0.0};
 }
 
 // The master node on the line through slave node s along the common normal n̄, on its master side.
