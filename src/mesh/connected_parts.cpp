@@ -1,7 +1,6 @@
 #include "stcontact/mesh/connected_parts.hpp"
 
 #include <numeric>
-#include <type_traits>
 
 namespace stc {
 
@@ -14,10 +13,7 @@ std::vector<int> partOfNodes(const BodyMesh& body) {
     return a;
   };
   std::visit([&](const auto& mesh) {
-    const auto& elements = [&]() -> const auto& {
-      if constexpr (std::is_same_v<std::decay_t<decltype(mesh)>, TriMesh>) return mesh.triangles;
-      else return mesh.tets;
-    }();
+    const auto& elements = elementNodes(mesh);
     for (Eigen::Index e = 0; e < elements.cols(); ++e)
       for (Eigen::Index a = 1; a < elements.rows(); ++a) root[find(elements(a, e))] = find(elements(0, e));
   }, body);

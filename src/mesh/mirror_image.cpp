@@ -17,14 +17,8 @@ Mesh mirrored(const Mesh& body, double gap) {
   pair.nodes.leftCols(n) = body.nodes;
   pair.nodes.rightCols(n) = body.nodes;
   pair.nodes.row(d - 1).tail(n) = (2.0 * plane - body.nodes.row(d - 1).array()).matrix();
-  auto& elements = [&]() -> auto& {
-    if constexpr (std::is_same_v<Mesh, TriMesh>) return pair.triangles;
-    else return pair.tets;
-  }();
-  const auto& source = [&]() -> const auto& {
-    if constexpr (std::is_same_v<Mesh, TriMesh>) return body.triangles;
-    else return body.tets;
-  }();
+  auto& elements = elementNodes(pair);
+  const auto& source = elementNodes(body);
   elements.resize(source.rows(), 2 * ne);
   elements.leftCols(ne) = source;
   elements.rightCols(ne) = source.array() + static_cast<int>(n);

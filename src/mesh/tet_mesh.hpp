@@ -38,6 +38,10 @@ struct TetMesh {
   void finalizeGroups();
 };
 
+/// The element node ids, one column per element (the twin of elementNodes(TriMesh), tri_mesh.hpp).
+inline const Eigen::Matrix4Xi& elementNodes(const TetMesh& mesh) { return mesh.tets; }
+inline Eigen::Matrix4Xi& elementNodes(TetMesh& mesh) { return mesh.tets; }
+
 /// The faces of a positive tetrahedron (0, 1, 2, 3), each oriented outward (counter-clockwise seen
 /// from outside): local node numbers.
 inline constexpr int kTetFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};

@@ -35,6 +35,11 @@ struct TriMesh {
   void finalizeGroups();
 };
 
+/// The element node ids, one column per element (the twin of elementNodes(TetMesh), tet_mesh.hpp),
+/// for code written once for both meshes.
+inline const Eigen::Matrix3Xi& elementNodes(const TriMesh& mesh) { return mesh.triangles; }
+inline Eigen::Matrix3Xi& elementNodes(TriMesh& mesh) { return mesh.triangles; }
+
 /// The edges that belong to exactly one triangle, each oriented as its (counter-clockwise) triangle
 /// runs it: the body lies on its left, its outward normal is (t_y, −t_x) for t = x_b − x_a. The 2D
 /// twin of boundaryTriangles (tet_mesh.hpp).

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <sstream>
-#include <type_traits>
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/missing_file_error.hpp"
@@ -93,8 +92,7 @@ Mesh withElements(const Mesh& mesh, const std::vector<char>& flag, char keep) {
   for (int e = 0; e < mesh.numElements(); ++e)
     if (flag[static_cast<std::size_t>(e)] == keep) kept.push_back(e);
   Mesh part = mesh;
-  if constexpr (std::is_same_v<Mesh, TriMesh>) part.triangles = mesh.triangles(Eigen::all, kept);
-  else part.tets = mesh.tets(Eigen::all, kept);
+  elementNodes(part) = elementNodes(mesh)(Eigen::all, kept);
   return part;
 }
 
@@ -117,12 +115,9 @@ Eigen::SparseMatrix<double> stiffnessOf(const Problem& p) {
 // Per element, 1 when it belongs to the body of the boundary group `master`.
 std::vector<char> elementsOfBodyOf(const BodyMesh& body, const std::string& master) {
   const std::vector<int> part = partOfNodes(body);
-  const int master_part = std::visit([&](const auto& m) { return part[m.group(master).nodes.front()]; }, body);
   return std::visit([&](const auto& m) {
-    const auto& elements = [&]() -> const auto& {
-      if constexpr (std::is_same_v<std::decay_t<decltype(m)>, TriMesh>) return m.triangles;
-      else return m.tets;
-    }();
+    const int master_part = part[m.group(master).nodes.front()];
+    const auto& elements = elementNodes(m);
     std::vector<char> flag(static_cast<std::size_t>(elements.cols()));
     for (Eigen::Index e = 0; e < elements.cols(); ++e) flag[e] = part[elements(0, e)] == master_part ? 1 : 0;
     return flag;
@@ -295,8 +290,9 @@ Problem buildProblem(const Scene& scene) {
   const std::string mesh_key = scene.mesh.file.empty() ? "mesh.generator" : "";
   p.body = withContext(scene, mesh_key, [&] { return buildBodyMesh(scene.mesh, p.dimension); });
   p.material = scene.material;
-  if (scene.master_material) {
+  if (!scene.contact.master.empty())  // before the master body's elements are looked up
     withContext(scene, "contact.master", [&] { requireGroup(p.body, scene.contact.master); });
+  if (scene.master_material) {
     p.master_material = scene.master_material;
     p.master_elements = elementsOfBodyOf(p.body, scene.contact.master);
   }
@@ -331,7 +327,6 @@ Problem buildProblem(const Scene& scene) {
 
   withContext(scene, "load", [&] { addLoads(p, scene, owner); });
   withContext(scene, "contact.boundary", [&] { group(scene.contact.boundary); });
-  if (!scene.contact.master.empty()) withContext(scene, "contact.master", [&] { group(scene.contact.master); });
   p.contact = withContext(scene, "", [&] { return contactInterfaceOf(scene, p, heldAtZero(p, owner)); });
   withContext(scene, "", [&] { requireRepresentableScales(scene, p); });
   const double size = bodySize(scene, p);

@@ -212,18 +212,23 @@ void refuseKey(const TableView& table, std::string_view key, const std::string& 
   table.errors().fail(path, "key '" + path + "' " + why);
 }
 
+// `dimension` entries of a nonzero finite vector, normalised (a normal: obstacle.normal, contact.normal).
+Eigen::VectorXd readUnitVector(const TableView& table, std::string_view key, int dimension) {
+  const Eigen::VectorXd v = readVector(table, key, dimension);
+  const double length = v.norm();
+  if (!(length > 0.0) || !std::isfinite(length)) {
+    std::string entries;
+    for (double x : v) entries += (entries.empty() ? "" : ", ") + formatNumber(x);
+    const std::string path = table.keyPath(key);
+    table.errors().fail(path, "key '" + path + "' = [" + entries + "] must be a nonzero finite vector");
+  }
+  return v / length;
+}
+
 // A plane through `point` with the unit `normal` pointing into the body.
 void readPlane(const TableView& obstacle, int dimension, ObstacleSpec& spec) {
   spec.point = readVector(obstacle, "point", dimension);
-  const Eigen::VectorXd normal = readVector(obstacle, "normal", dimension);
-  const double length = normal.norm();
-  if (!(length > 0.0) || !std::isfinite(length)) {
-    std::string entries;
-    for (double x : normal) entries += (entries.empty() ? "" : ", ") + formatNumber(x);
-    obstacle.errors().fail(obstacle.keyPath("normal"),
-                           "key 'obstacle.normal' = [" + entries + "] must be a nonzero finite vector");
-  }
-  spec.normal = normal / length;
+  spec.normal = readUnitVector(obstacle, "normal", dimension);
 }
 
 // A sphere (3D) or cylinder (2D): `centre`, `radius` > 0 and `side`, "outside" (the default: the
@@ -298,14 +303,6 @@ ObstacleSpec readObstacle(const TableView& root, int dimension, const TimeSpec& 
   return spec;
 }
 
-// contact.normal: a nonzero finite vector of `dimension` entries, normalised.
-Eigen::VectorXd readCommonNormal(const TableView& contact, int dimension) {
-  const Eigen::VectorXd normal = readVector(contact, "normal", dimension);
-  if (!(normal.allFinite() && normal.norm() > 0.0))
-    contact.errors().fail(contact.keyPath("normal"), "key 'contact.normal' must be a nonzero finite vector");
-  return normal.normalized();
-}
-
 ContactSpec readContact(const TableView& root, int dimension) {
   const TableView contact = root.requiredTable("contact", {"boundary", "master", "normal", "friction", "length_scale"});
   ContactSpec spec;
@@ -314,7 +311,7 @@ ContactSpec readContact(const TableView& root, int dimension) {
   if (spec.master == spec.boundary)
     contact.errors().fail(contact.keyPath("master"), "key '" + contact.keyPath("master") +
                                                          "' must name another boundary than 'contact.boundary'");
-  if (!spec.master.empty() && contact.has("normal")) spec.normal = readCommonNormal(contact, dimension);
+  if (!spec.master.empty() && contact.has("normal")) spec.normal = readUnitVector(contact, "normal", dimension);
   if (spec.master.empty()) refuseKey(contact, "normal", "applies to two bodies only (with 'contact.master')");
   spec.friction = contact.requiredNumber("friction");
   requireRange(contact, "friction", spec.friction, spec.friction >= 0.0, "must be >= 0");
@@ -429,13 +426,11 @@ std::vector<Spec> readHistories(const TableView& root, std::string_view key, int
                           root.errors(), {"type", "boundary", "component", "times", "values", "period", "cycles"});
     Spec spec;
     if constexpr (std::is_same_v<Spec, LoadSpec>) readLoadKind(entry, dimension, spec);
-    else if constexpr (std::is_same_v<Spec, ObstacleMotionSpec>) {
+    else {
       refuseKey(entry, "type", "applies to [[load]] entries only");
-      refuseKey(entry, "boundary", "does not apply to the obstacle's motion (it moves as a whole)");
-      spec.component = readComponent(entry, dimension);
-    } else {
-      refuseKey(entry, "type", "applies to [[load]] entries only");
-      spec.boundary = requiredName(entry, "boundary");
+      if constexpr (std::is_same_v<Spec, ObstacleMotionSpec>)
+        refuseKey(entry, "boundary", "does not apply to the obstacle's motion (it moves as a whole)");
+      else spec.boundary = requiredName(entry, "boundary");
       spec.component = readComponent(entry, dimension);
     }
     spec.history = periodicHistory(entry, readHistory(entry), time);

@@ -151,7 +151,7 @@ set(stc_refusals
   "refuse_pair_same_boundary|key 'contact\\.master' must name another boundary than 'contact\\.boundary'|${pair}|--set|contact.master=arc"
   "refuse_pair_not_facing|slave node 0 at \\(-1, 0\\) does not face the master boundary|${pair}|--set|contact.master=mirror_top"
   "refuse_pair_overlapping|has no master node on its line along contact\\.normal \\(no master node lies on the master's side|${pair}|--set|contact.normal=[0.0, -1.0]"
-  "refuse_pair_normal_zero|key 'contact\\.normal' must be a nonzero finite vector|${pair}|--set|contact.normal=[0.0, 0.0]"
+  "refuse_pair_normal_zero|key 'contact\\.normal' = \\[0, 0\\] must be a nonzero finite vector|${pair}|--set|contact.normal=[0.0, 0.0]"
   "refuse_master_material_without_master|table \\[master_material\\] applies to two bodies only|${seed}|--set|master_material.young=9000|--set|master_material.poisson=0.3"
   "refuse_normal_without_master|key 'contact\\.normal' applies to two bodies only|${seed}|--set|contact.normal=[0.0, 1.0]"
   "refuse_pair_free_body|free to move rigidly \\(body 2 of 2, around \\(0, -1\\.55\\): translation along x, translation along y, rotation about z\\)|${bad}/pair_free_body.toml"
