@@ -18,6 +18,8 @@ import sys
 
 import gmsh
 
+from gmsh_session import use_only_size_field, write_mesh
+
 
 def build(pole: float, far: float, reach: float, radius: float) -> None:
     """The half-ball as an OpenCASCADE solid, its two physical surfaces, and the size field."""
@@ -42,10 +44,7 @@ def build(pole: float, far: float, reach: float, radius: float) -> None:
     size = gmsh.model.mesh.field.add("MathEval")
     d = f"Sqrt(x^2 + y^2 + (z + {radius!r})^2)"
     gmsh.model.mesh.field.setString(size, "F", f"{pole!r} + {far - pole!r} * Min({d} / {reach!r}, 1)")
-    gmsh.model.mesh.field.setAsBackgroundMesh(size)
-    gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
-    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
-    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
+    use_only_size_field(size)
 
 
 def main() -> int:
@@ -58,20 +57,7 @@ def main() -> int:
     args = parser.parse_args()
     if not 0 < args.pole <= args.far or args.reach <= 0 or args.radius <= 0:
         parser.error("needs 0 < pole <= far, reach > 0, radius > 0")
-    gmsh.initialize(["-noenv"])
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.option.setNumber("Mesh.RandomSeed", 1)
-        gmsh.option.setNumber("Mesh.MshFileVersion", 4.1)
-        gmsh.option.setNumber("Mesh.Binary", 0)
-        gmsh.option.setNumber("Mesh.SaveAll", 0)
-        build(args.pole, args.far, args.reach, args.radius)
-        gmsh.model.mesh.generate(3)
-        gmsh.write(args.out)
-        nodes = len(gmsh.model.mesh.getNodes()[0])
-        print(f"{args.out}: {nodes} nodes")
-    finally:
-        gmsh.finalize()
+    write_mesh(lambda: build(args.pole, args.far, args.reach, args.radius), 3, args.out)
     return 0
 
 

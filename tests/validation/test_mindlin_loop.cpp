@@ -15,10 +15,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include "fixtures/two_bodies_scene.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
+#include "validation/hysteresis_loop.hpp"
 #include "validation/point_contact_3d.hpp"
 
 namespace stc::validation {
@@ -43,33 +45,9 @@ Scene loopScene(int divisions) {
 }
 
 struct Loop {
-  std::vector<double> q, delta;  // Q and δ at every instant from the end of pressing
-  double area = 0.0, width = 0.0, q_star = 0.0, P = 0.0, a = 0.0;
-  double closure = 0.0;  // |Q at the end − Q*| / Q*
-  double masing = 0.0;   // largest |δ* − δ_u(Q) − 2 f_FE((Q* − Q)/2)| / δ* over the unloading branch
+  HysteresisLoop cycle;
+  double P = 0.0, a = 0.0;  // the normal force and the contact radius at the end
 };
-
-// δ on the initial loading branch (instants 0 … kQuarterSteps, Q increasing) at force q, by linear
-// interpolation: f_FE, the finite element model's own initial loading curve.
-double initialLoading(const Loop& loop, double q) {
-  for (int k = 0; k < kQuarterSteps; ++k)
-    if (q <= loop.q[k + 1]) {
-      const double s = (q - loop.q[k]) / (loop.q[k + 1] - loop.q[k]);
-      return loop.delta[k] + s * (loop.delta[k + 1] - loop.delta[k]);
-    }
-  return loop.delta[kQuarterSteps];
-}
-
-// The δ of branch [k0, k1] (monotone in Q) where Q crosses 0, by linear interpolation.
-double deltaAtZeroForce(const Loop& loop, int k0, int k1) {
-  for (int k = k0; k < k1; ++k)
-    if ((loop.q[k] <= 0.0) != (loop.q[k + 1] <= 0.0)) {
-      const double s = loop.q[k] / (loop.q[k] - loop.q[k + 1]);
-      return loop.delta[k] + s * (loop.delta[k + 1] - loop.delta[k]);
-    }
-  ADD_FAILURE() << "Q does not change sign on the branch";
-  return 0.0;
-}
 
 Loop measureLoop(int divisions) {
   const Problem problem = buildProblem(loopScene(divisions));
@@ -77,23 +55,14 @@ Loop measureLoop(int divisions) {
   EXPECT_TRUE(result.summary.converged()) << result.summary.message;
   const Eigen::MatrixXd& lambda = result.interface.lambda;
   const int top = std::get<TetMesh>(problem.body).group("top").nodes.front();
-  Loop loop;
+  std::vector<double> q, delta;
   for (int k = kPressSteps; k < problem.numSteps(); ++k) {
-    double q = 0.0;  // the master's force on the upper body is −λ_t: Q > 0 resists a drive along +x
-    for (int i = 0; i < problem.contact.size(); ++i) q -= lambda(3 * i + 1, k);
-    loop.q.push_back(q);
-    loop.delta.push_back(problem.fullDisplacement(Eigen::VectorXd::Zero(problem.numFreeDofs()), k)[3 * top]);
+    double force = 0.0;  // the master's force on the upper body is −λ_t: Q > 0 resists a drive along +x
+    for (int i = 0; i < problem.contact.size(); ++i) force -= lambda(3 * i + 1, k);
+    q.push_back(force);
+    delta.push_back(problem.fullDisplacement(Eigen::VectorXd::Zero(problem.numFreeDofs()), k)[3 * top]);
   }
-  const int extreme = kQuarterSteps, closed = 5 * kQuarterSteps;  // +δ*, then back to it
-  for (int k = extreme; k < closed; ++k)
-    loop.area += 0.5 * (loop.q[k] + loop.q[k + 1]) * (loop.delta[k + 1] - loop.delta[k]);
-  loop.area = std::abs(loop.area);
-  loop.width = deltaAtZeroForce(loop, extreme, 3 * kQuarterSteps) - deltaAtZeroForce(loop, 3 * kQuarterSteps, closed);
-  loop.q_star = loop.q[extreme];
-  loop.closure = std::abs(loop.q[closed] - loop.q_star) / loop.q_star;
-  const double delta_star = loop.delta[extreme];
-  for (int k = extreme; k <= 3 * kQuarterSteps; ++k)  // Masing: the unloading branch is f scaled by 2
-    loop.masing = std::max(loop.masing, std::abs(delta_star - loop.delta[k] - 2.0 * initialLoading(loop, 0.5 * (loop.q_star - loop.q[k]))) / delta_star);
+  Loop loop{hysteresisLoop(std::move(q), std::move(delta), kQuarterSteps)};
   const int k = problem.numSteps() - 1;
   std::vector<double> normal;
   for (int i = 0; i < problem.contact.size(); ++i) normal.push_back(lambda(3 * i, k));
@@ -111,13 +80,12 @@ Mindlin mindlin(const Loop& loop, double poisson) {
   const double mu_p = kFriction * loop.P, shear = 3000.0 / (2.0 * (1.0 + poisson));
   const double K = 3.0 * mu_p * (2.0 - poisson) / (8.0 * shear * loop.a);
   const auto f = [&](double q) { return K * (1.0 - std::pow(1.0 - q / mu_p, 2.0 / 3.0)); };
-  const double r = 1.0 - loop.q_star / mu_p;
+  const double r = 1.0 - loop.cycle.q_star / mu_p;
   Mindlin m;
-  m.area = K * (24.0 * mu_p / 5.0 * (1.0 - std::pow(r, 5.0 / 3.0)) - 4.0 * loop.q_star * (1.0 + std::pow(r, 2.0 / 3.0)));
-  m.width = 2.0 * f(loop.q_star) - 4.0 * f(0.5 * loop.q_star);
+  m.area = K * (24.0 * mu_p / 5.0 * (1.0 - std::pow(r, 5.0 / 3.0)) - 4.0 * loop.cycle.q_star * (1.0 + std::pow(r, 2.0 / 3.0)));
+  m.width = 2.0 * f(loop.cycle.q_star) - 4.0 * f(0.5 * loop.cycle.q_star);
   return m;
 }
-
 
 struct LoopErrors {
   double area = 0.0, width = 0.0;  // relative to Mindlin's
@@ -128,12 +96,12 @@ LoopErrors compareWithMindlin(int divisions) {
   LoopErrors e;
   e.loop = measureLoop(divisions);
   const Mindlin m = mindlin(e.loop, 0.3);
-  e.area = e.loop.area / m.area - 1.0;
-  e.width = e.loop.width / m.width - 1.0;
+  e.area = e.loop.cycle.area / m.area - 1.0;
+  e.width = e.loop.cycle.width / m.width - 1.0;
   std::printf("[ measured ] divisions %d: Q*/muP %.3f, a %.4f; loop area %.4e (Mindlin %.4e, %+.1f %%), width at Q = 0 "
               "%.4e (Mindlin %.4e, %+.1f %%); closure %.1e, Masing %.1e\n",
-              divisions, e.loop.q_star / (kFriction * e.loop.P), e.loop.a, e.loop.area, m.area, 100 * e.area,
-              e.loop.width, m.width, 100 * e.width, e.loop.closure, e.loop.masing);
+              divisions, e.loop.cycle.q_star / (kFriction * e.loop.P), e.loop.a, e.loop.cycle.area, m.area, 100 * e.area,
+              e.loop.cycle.width, m.width, 100 * e.width, e.loop.cycle.closure, e.loop.cycle.masing);
   return e;
 }
 
@@ -154,8 +122,8 @@ TEST(MindlinLoop, TwoIdenticalSpheresRunMindlinsLoop) {
   for (int divisions : {3, 4}) {
     const LoopErrors e = compareWithMindlin(divisions);
     const double h_over_a = coreCellSize(loopScene(divisions)) / e.loop.a;
-    EXPECT_LE(e.loop.closure, 1e-3);
-    EXPECT_LE(e.loop.masing, 1e-2);
+    EXPECT_LE(e.loop.cycle.closure, 1e-3);
+    EXPECT_LE(e.loop.cycle.masing, 1e-2);
     EXPECT_LE(std::abs(e.area), h_over_a) << "divisions " << divisions;
     EXPECT_LE(std::abs(e.width), h_over_a) << "divisions " << divisions;
   }
