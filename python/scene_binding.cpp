@@ -52,7 +52,9 @@ py::dict checkSizes(const SceneHandle& handle) {
 
 /// The mesh and the contact interface as arrays: nodes (N × d), triangles (E × 3, counter-clockwise
 /// node ids; 2D) or tetrahedra (E × 4, positive volume; 3D), contact_nodes (n_C mesh node ids, in the order of the interface rows),
-/// master_nodes (two bodies: the master node paired with each, else empty), initial_gap (n_C), times (m).
+/// master_nodes (two bodies: the master node paired with each, else empty), master_facets and
+/// master_weights (two bodies: n_C × k, the master nodes each is compared with, −1 padded, and their
+/// weights; k = 1 node to node, d node to segment; else 0 × 0), initial_gap (n_C), times (m).
 py::dict meshArrays(const SceneHandle& handle) {
   const std::shared_ptr<const Problem> problem = handle.problem();
   py::dict mesh;
@@ -62,6 +64,8 @@ py::dict meshArrays(const SceneHandle& handle) {
              problem->body);
   mesh["contact_nodes"] = movedToNumpy(std::vector<int>(problem->contact.nodes));
   mesh["master_nodes"] = movedToNumpy(std::vector<int>(problem->contact.master_nodes));
+  mesh["master_facets"] = movedToNumpy(Eigen::MatrixXi(problem->contact.master_facets.transpose()));
+  mesh["master_weights"] = movedToNumpy(Eigen::MatrixXd(problem->contact.master_weights.transpose()));
   mesh["initial_gap"] = movedToNumpy(Eigen::VectorXd(problem->contact.initial_gap));
   mesh["times"] = movedToNumpy(std::vector<double>(problem->times));
   return mesh;

@@ -13,6 +13,9 @@ Physical groups: surfaces `pad`, `specimen`; curves `pad_top` (y = 0), `pad_face
 Regenerate the committed meshes (Debian 12 package python3-gmsh), from this folder:
     python3 fretting_pad.py --h 0.01 --out fretting_pad.msh
     python3 fretting_pad.py --h 0.02 --out fretting_pad_small.msh
+With --specimen-h H the specimen's face has nodes at equal spacing H instead (non-matching meshes, for
+contact.pairing = "segment"):
+    python3 fretting_pad.py --h 0.02 --specimen-h 0.013 --out fretting_pad_nonmatching_small.msh
 The refinement study of docs/two_bodies.md ("Mindlin's loop in 2D") adds --h 0.005 and 0.0025. The
 committed meshes were written by Gmsh 4.8; its Delaunay mesher with a fixed seed gives the same mesh
 on the same Gmsh version (the faces' nodes, which the pairing needs, on any).
@@ -40,7 +43,8 @@ def polyline(geo, points: list) -> list:
     return [geo.addLine(a, b) for a, b in zip(points[:-1], points[1:])]
 
 
-def build(h: float, far: float, grow: float, half_width: float, radius: float, gap: float, length: float, depth: float) -> None:
+def build(h: float, far: float, grow: float, half_width: float, radius: float, gap: float, length: float, depth: float,
+          specimen_h: float) -> None:
     gmsh.model.add("fretting_pad")
     geo = gmsh.model.geo
     n = math.ceil(math.asin(min(half_width / radius, 1.0)) * radius / h)
@@ -57,7 +61,11 @@ def build(h: float, far: float, grow: float, half_width: float, radius: float, g
     pad = geo.addPlaneSurface([geo.addCurveLoop(pad_face_lines + [pad_right, pad_top, pad_left])])
     # The specimen, counter-clockwise: bottom, right side, its top from the right (face reversed), left side.
     top = -radius - gap
-    specimen_face = face_points(geo, n, h, radius, lambda t: top)
+    if specimen_h > 0:  # non-matching: equal spacing, one node beyond the pad's face on each side
+        count = math.ceil(radius * math.sin(n * h / radius) / specimen_h) + 1
+        specimen_face = [geo.addPoint(k * specimen_h, top, 0.0) for k in range(-count, count + 1)]
+    else:
+        specimen_face = face_points(geo, n, h, radius, lambda t: top)
     corners = [geo.addPoint(x, y, 0.0) for x, y in ((-length, top - depth), (length, top - depth), (length, top), (-length, top))]
     bottom = geo.addLine(corners[0], corners[1])
     right_side = geo.addLine(corners[1], corners[2])
@@ -92,11 +100,14 @@ def main() -> int:
     parser.add_argument("--gap", type=float, default=0.005, help="g0, between the pad and the specimen")
     parser.add_argument("--length", type=float, default=3.0, help="the specimen's half-width L")
     parser.add_argument("--depth", type=float, default=2.0, help="the specimen's depth D")
+    parser.add_argument("--specimen-h", type=float, default=0.0,
+                        help="node spacing on the specimen's face (0: the pad's nodes, matching)")
     parser.add_argument("--out", required=True, help="the .msh file to write (MSH 4.1 ASCII)")
     args = parser.parse_args()
-    if not 0 < args.h <= args.far or args.grow <= 0 or min(args.face, args.radius, args.length, args.depth) <= 0 or args.gap < 0:
+    if not 0 < args.h <= args.far or args.grow <= 0 or args.specimen_h < 0 or min(args.face, args.radius, args.length, args.depth) <= 0 or args.gap < 0:
         parser.error("needs 0 < h <= far, positive face, radius, length and depth, gap >= 0")
-    write_mesh(lambda: build(args.h, args.far, args.grow, args.face, args.radius, args.gap, args.length, args.depth), 2, args.out)
+    write_mesh(lambda: build(args.h, args.far, args.grow, args.face, args.radius, args.gap, args.length, args.depth,
+                             args.specimen_h), 2, args.out)
     return 0
 
 

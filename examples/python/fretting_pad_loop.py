@@ -13,7 +13,11 @@
 Sample run:
   PYTHONPATH=build/python /usr/bin/python3 examples/python/fretting_pad_loop.py results/fretting_pad
   PYTHONPATH=build/python /usr/bin/python3 examples/python/fretting_pad_loop.py /tmp/pad --h 0.02,0.01
-Options: --h LIST (comma-separated node spacings, default 0.02,0.01,0.005,0.0025).
+  PYTHONPATH=build/python /usr/bin/python3 examples/python/fretting_pad_loop.py results/fretting_pad_nonmatching \\
+      --specimen-ratio 0.65
+Options: --h LIST (comma-separated node spacings, default 0.02,0.01,0.005,0.0025); --specimen-ratio R
+  (the specimen's face nodes R h apart, not below the pad's: non-matching faces, contact.pairing =
+  "segment"; default 0, matching).
 """
 
 import argparse
@@ -34,17 +38,20 @@ import stcontact  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENE = os.path.normpath(os.path.join(HERE, "..", "scenes", "fretting_pad.toml"))
 MESHES = os.path.normpath(os.path.join(HERE, "..", "meshes"))
-COMMITTED = {0.02: "fretting_pad_small.msh", 0.01: "fretting_pad.msh"}
+COMMITTED = {(0.02, 0.0): "fretting_pad_small.msh", (0.01, 0.0): "fretting_pad.msh",
+             (0.02, 0.65): "fretting_pad_nonmatching_small.msh"}
 PRESS_STEPS, QUARTER = 20, 16  # the scene's instants: pressing, then each quarter cycle
 
 
-def mesh_for(h, out):
-    """The committed mesh of spacing h, or one made by the mesh script in out/meshes."""
-    if h in COMMITTED:
-        return os.path.join(MESHES, COMMITTED[h])
+def mesh_for(h, ratio, out):
+    """The committed mesh of spacing h (the specimen's ratio h, 0: matching), or one made by the mesh
+    script in out/meshes."""
+    if (h, ratio) in COMMITTED:
+        return os.path.join(MESHES, COMMITTED[(h, ratio)])
     os.makedirs(os.path.join(out, "meshes"), exist_ok=True)
-    path = os.path.abspath(os.path.join(out, "meshes", f"fretting_pad_h{h}.msh"))
-    subprocess.run([sys.executable, os.path.join(MESHES, "fretting_pad.py"), "--h", str(h), "--out", path], check=True)
+    path = os.path.abspath(os.path.join(out, "meshes", f"fretting_pad_h{h}_r{ratio}.msh"))
+    subprocess.run([sys.executable, os.path.join(MESHES, "fretting_pad.py"), "--h", str(h),
+                    "--specimen-h", str(round(ratio * h, 12)), "--out", path], check=True)
     return path
 
 
@@ -73,9 +80,10 @@ def mindlin_area(q_star, mu_p, e_star):
     return 4.0 * mu_p * mu_p / (np.pi * e_star) * (0.5 * (1 - r * r) + r * np.log(r))
 
 
-def measure(scene, h, out):
+def measure(scene, h, ratio, out):
     """The loop on the mesh of spacing h: forces, drive, and its comparison with Mindlin's."""
-    result = stcontact.solve(SCENE, "incremental", sets=[f"mesh.file={mesh_for(h, out)}"], reference=False)
+    sets = [f"mesh.file={mesh_for(h, ratio, out)}"] + (["contact.pairing=segment"] if ratio > 0 else [])
+    result = stcontact.solve(SCENE, "incremental", sets=sets, reference=False)
     if not result.converged:
         sys.exit(f"h = {h}: the incremental solve did not converge ({result.termination})")
     m = result.interface_forces.shape[1]
@@ -141,16 +149,20 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("out", help="output folder (created)")
     parser.add_argument("--h", default="0.02,0.01,0.005,0.0025", help="node spacings of the faces")
+    parser.add_argument("--specimen-ratio", type=float, default=0.0,
+                        help="the specimen's face spacing over h (non-matching faces, node to segment; 0: matching)")
     args = parser.parse_args()
     spacings = [float(v) for v in args.h.split(",")]
     if any(h <= 0 for h in spacings):
         parser.error("--h: node spacings must be positive")
+    if args.specimen_ratio < 0:
+        parser.error("--specimen-ratio must be >= 0")
     os.makedirs(args.out, exist_ok=True)
     with open(SCENE, "rb") as f:
         scene = tomllib.load(f)
     runs = []
     for h in spacings:
-        runs.append(measure(scene, h, args.out))
+        runs.append(measure(scene, h, args.specimen_ratio, args.out))
         print(f"h = {h:g}: solved", flush=True)
     write_table(runs, args.out)
     draw(runs, args.out)

@@ -114,7 +114,10 @@ class Scene:
 
     def mesh(self) -> dict[str, Any]:
         """nodes (N x 2), triangles (E x 3 node ids), contact_nodes (n_C node ids), master_nodes (two bodies:
-        the master node paired with each contact node, else empty), initial_gap (n_C), times (m)."""
+        the master node paired with each contact node, else empty), master_facets and master_weights (two
+        bodies: n_C x k, the master nodes each contact node is compared with, -1 padded, and their
+        weights summing to 1; k = 1 node to node, d with contact.pairing = "segment"), initial_gap (n_C),
+        times (m)."""
         return self._handle.mesh()
 
     def _key(self):

@@ -17,11 +17,14 @@ namespace {
 constexpr double kAxisTolerance = 1e-12;
 
 // What the interface needs of a group node: its normal and initial gap, and its master node when
-// it faces another body (−1: a rigid obstacle).
+// it faces another body (−1: a rigid obstacle) with the master nodes it is compared with and their
+// weights (contact/node_pairing.hpp, NodePair).
 struct NodeGeometry {
   Eigen::VectorXd normal;
   double gap = 0.0;
   int master = -1;
+  std::vector<int> facet;
+  std::vector<double> weights;
 };
 
 // A master node may have components prescribed only held at 0 (its B entries are then left out):
@@ -57,7 +60,7 @@ std::vector<int> contactNodes(const Eigen::MatrixXd& positions, const std::vecto
                          " has a prescribed displacement component " + "xyz"[a] +
                          "; a contact node may only have components prescribed along its normal, or held at 0 "
                          "along an axis orthogonal to it");
-    if (g.master >= 0) requireMasterHeldOrFree(positions, g.master, dofs);
+    for (int master : g.facet) requireMasterHeldOrFree(positions, master, dofs);
     nodes.push_back(node);
   }
   if (nodes.empty()) throw InputError("contact boundary '" + boundary + "' has no free node");
@@ -77,14 +80,28 @@ Eigen::MatrixXd tangentFrame(const Eigen::VectorXd& n) {
   return t;
 }
 
-// τ lies along a prescribed axis of the node whose first dof is `first_dof` (of its master too, when
-// it has one: −1 otherwise).
-bool heldTangent(const Eigen::VectorXd& tangent, const std::vector<int>& free_index, int first_dof, int master_dof) {
-  for (Eigen::Index a = 0; a < tangent.size(); ++a) {
+// τ lies along a prescribed axis of `node` (and of each of its master nodes, when it has some).
+bool heldTangent(const Eigen::VectorXd& tangent, const std::vector<int>& free_index, int node, const std::vector<int>& masters) {
+  const Eigen::Index dim = tangent.size();
+  const auto free = [&](int n, Eigen::Index a) { return free_index[static_cast<size_t>(dim * n + a)] >= 0; };
+  for (Eigen::Index a = 0; a < dim; ++a) {
     if (std::abs(tangent[a]) <= kAxisTolerance) continue;
-    if (free_index[first_dof + a] >= 0 || (master_dof >= 0 && free_index[master_dof + a] >= 0)) return false;
+    if (free(node, a) || std::any_of(masters.begin(), masters.end(), [&](int m) { return free(m, a); })) return false;
   }
   return true;
+}
+
+// Column i of the master matrices (header: ContactInterface::master_facets) from the pairs' facets.
+void storeMasters(ContactInterface& c, const std::vector<NodeGeometry>& pairs) {
+  size_t rows = 0;
+  for (const NodeGeometry& g : pairs) rows = std::max(rows, g.facet.size());
+  c.master_facets = Eigen::MatrixXi::Constant(static_cast<Eigen::Index>(rows), c.size(), -1);
+  c.master_weights = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), c.size());
+  for (int i = 0; i < c.size(); ++i)
+    for (size_t j = 0; j < pairs[static_cast<size_t>(i)].facet.size(); ++j) {
+      c.master_facets(static_cast<Eigen::Index>(j), i) = pairs[static_cast<size_t>(i)].facet[j];
+      c.master_weights(static_cast<Eigen::Index>(j), i) = pairs[static_cast<size_t>(i)].weights[j];
+    }
 }
 
 void checkGap(const ContactInterface& c, const Eigen::MatrixXd& positions, int i) {
@@ -134,6 +151,7 @@ ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>&
       if (local[node] >= 0) c.tributary[local[node]] += share * measure;
   }
   std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<NodeGeometry> pairs;
   for (int i = 0; i < nc; ++i) {
     const NodeGeometry g = geometry_of(c.nodes[i]);
     c.normals.col(i) = g.normal;
@@ -143,12 +161,14 @@ ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>&
     addRows(c, i, c.nodes[i], 1.0, free_index, triplets);
     if (g.master >= 0) {
       c.master_nodes.push_back(g.master);
-      addRows(c, i, g.master, -1.0, free_index, triplets);
+      for (size_t j = 0; j < g.facet.size(); ++j) addRows(c, i, g.facet[j], -g.weights[j], free_index, triplets);
+      pairs.push_back(g);
     }
     for (int a = 0; a < dim - 1; ++a)  // a tangent along a held axis: no free dof moves the node that way
-      if (heldTangent(c.tangents.col((dim - 1) * i + a), free_index, dim * c.nodes[i], g.master >= 0 ? dim * g.master : -1))
+      if (heldTangent(c.tangents.col((dim - 1) * i + a), free_index, c.nodes[i], g.facet))
         c.held_rows.push_back(c.normalRow(i) + 1 + a);
   }
+  if (!pairs.empty()) storeMasters(c, pairs);
   const int n_free = static_cast<int>(std::count_if(free_index.begin(), free_index.end(), [](int j) { return j >= 0; }));
   c.B.resize(c.rows(), n_free);
   c.B.setFromTriplets(triplets.begin(), triplets.end());
@@ -159,20 +179,22 @@ ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>&
 auto facing(const Eigen::MatrixXd& positions, const Obstacle& obstacle) {
   return [&positions, &obstacle](int node) {
     const Eigen::VectorXd x = positions.col(node);
-    return NodeGeometry{obstacleNormal(obstacle, x), obstacleGap(obstacle, x), -1};
+    return NodeGeometry{obstacleNormal(obstacle, x), obstacleGap(obstacle, x), -1, {}, {}};
   };
 }
 
-// The geometry of each slave node paired with a master node (contact/node_pairing.hpp), looked up
-// by mesh node id.
+// The geometry of each slave node paired with a master node or facet (contact/node_pairing.hpp),
+// looked up by mesh node id.
 template <class Mesh>
-auto paired(const Mesh& mesh, const std::string& slave, const std::string& master, const Eigen::VectorXd& common_normal) {
+auto paired(const Mesh& mesh, const std::string& slave, const std::string& master, const Eigen::VectorXd& common_normal,
+            bool to_segment) {
   const std::vector<int>& slave_nodes = mesh.group(slave).nodes;
   const std::vector<NodePair> pairs =
-      pairNodes(mesh.nodes, slave_nodes, mesh.group(master).nodes, outwardNodeNormals(mesh, master), common_normal);
+      to_segment ? pairNodesToFacets(mesh.nodes, slave_nodes, masterFacets(mesh, master), common_normal)
+                 : pairNodes(mesh.nodes, slave_nodes, mesh.group(master).nodes, outwardNodeNormals(mesh, master), common_normal);
   std::vector<NodeGeometry> by_node(static_cast<size_t>(mesh.numNodes()));
   for (size_t i = 0; i < pairs.size(); ++i)
-    by_node[static_cast<size_t>(slave_nodes[i])] = {pairs[i].normal, pairs[i].gap, pairs[i].master};
+    by_node[static_cast<size_t>(slave_nodes[i])] = {pairs[i].normal, pairs[i].gap, pairs[i].master, pairs[i].facet, pairs[i].weights};
   return [by_node = std::move(by_node)](int node) { return by_node[static_cast<size_t>(node)]; };
 }
 
@@ -191,15 +213,19 @@ ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& b
 }
 
 ContactInterface buildContactPair(const TriMesh& mesh, const std::string& slave, const std::string& master,
-                                  const Eigen::VectorXd& common_normal, const DofStatus& dofs, double friction) {
+                                  const Eigen::VectorXd& common_normal, bool to_segment, const DofStatus& dofs,
+                                  double friction) {
   const BoundaryGroup& group = mesh.group(slave);
-  return build(mesh.nodes, group.nodes, group.edges, slave, paired(mesh, slave, master, common_normal), dofs, friction);
+  return build(mesh.nodes, group.nodes, group.edges, slave, paired(mesh, slave, master, common_normal, to_segment), dofs,
+               friction);
 }
 
 ContactInterface buildContactPair(const TetMesh& mesh, const std::string& slave, const std::string& master,
-                                  const Eigen::VectorXd& common_normal, const DofStatus& dofs, double friction) {
+                                  const Eigen::VectorXd& common_normal, bool to_segment, const DofStatus& dofs,
+                                  double friction) {
   const SurfaceGroup& group = mesh.group(slave);
-  return build(mesh.nodes, group.nodes, group.triangles, slave, paired(mesh, slave, master, common_normal), dofs, friction);
+  return build(mesh.nodes, group.nodes, group.triangles, slave, paired(mesh, slave, master, common_normal, to_segment),
+               dofs, friction);
 }
 
 ContactInterface restrictToNodes(const ContactInterface& contact, const std::vector<int>& nodes) {
@@ -221,7 +247,15 @@ ContactInterface restrictToNodes(const ContactInterface& contact, const std::vec
     if (i < 0 || i >= contact.size())
       throw std::out_of_range("restrictToNodes: node index " + std::to_string(i));
     sub.nodes.push_back(contact.nodes[static_cast<size_t>(i)]);
-    if (contact.isPair()) sub.master_nodes.push_back(contact.master_nodes[static_cast<size_t>(i)]);
+    if (contact.isPair()) {
+      sub.master_nodes.push_back(contact.master_nodes[static_cast<size_t>(i)]);
+      if (j == 0) {
+        sub.master_facets.resize(contact.master_facets.rows(), count);
+        sub.master_weights.resize(contact.master_weights.rows(), count);
+      }
+      sub.master_facets.col(j) = contact.master_facets.col(i);
+      sub.master_weights.col(j) = contact.master_weights.col(i);
+    }
     sub.normals.col(j) = contact.normals.col(i);
     sub.tangents.middleCols((d - 1) * j, d - 1) = contact.tangents.middleCols((d - 1) * i, d - 1);
     sub.initial_gap[j] = contact.initial_gap[i];

@@ -17,9 +17,15 @@ namespace stc {
 struct ContactInterface {
   int dimension = 2;               ///< d: rows per node (normal + d − 1 tangential)
   std::vector<int> nodes;          ///< mesh node id of each potential contact node i = 0..n_C−1
-  /// Two bodies: the mesh node id of the master node paired with node i (its B rows carry −n, −τ:
-  /// v = relative displacement u_s − u_m); empty against a rigid obstacle.
+  /// Two bodies: the mesh node id of the master node paired with node i (node to segment: the node of
+  /// its master facet with the largest weight); empty against a rigid obstacle.
   std::vector<int> master_nodes;
+  /// Two bodies: the master nodes node i is compared with, column i (node to node: one row, the master
+  /// node; node to segment: d rows, its master facet's nodes of nonzero weight, then −1), and their
+  /// weights w_j (then 0; Σ_j w_j = 1). B rows of node i carry −w_j n, −w_j τ on master node j:
+  /// v = relative displacement u_i − Σ_j w_j u_j (contact/node_pairing.hpp). Empty for a rigid obstacle.
+  Eigen::MatrixXi master_facets;
+  Eigen::MatrixXd master_weights;
   Eigen::MatrixXd normals;         ///< n_i (d × n_C), from the obstacle into the body
   /// Tangential directions, d × (d − 1) n_C: column (d − 1) i + a is τ_{i,a}. 2D: τ = (n_y, −n_x);
   /// 3D: τ_1 = the unit projection of the least aligned coordinate axis (e_x first) on the tangent
@@ -69,13 +75,16 @@ ContactInterface buildContactInterface(const TetMesh& mesh, const std::string& b
                                        const DofStatus& dofs, double friction);
 
 /// Two bodies of one mesh: the slave group's nodes paired node to node with the master group's,
-/// along `common_normal` when not empty (contact/node_pairing.hpp), the same rule for prescribed
+/// along `common_normal` when not empty, or with the points of its facets along it when `to_segment`
+/// (contact/node_pairing.hpp), the same rule for prescribed
 /// components as buildContactInterface; a master node may only be free or held at 0. Throws
 /// InputError when the boundaries do not face each other, overlap or do not match.
 ContactInterface buildContactPair(const TriMesh& mesh, const std::string& slave, const std::string& master,
-                                  const Eigen::VectorXd& common_normal, const DofStatus& dofs, double friction);
+                                  const Eigen::VectorXd& common_normal, bool to_segment, const DofStatus& dofs,
+                                  double friction);
 ContactInterface buildContactPair(const TetMesh& mesh, const std::string& slave, const std::string& master,
-                                  const Eigen::VectorXd& common_normal, const DofStatus& dofs, double friction);
+                                  const Eigen::VectorXd& common_normal, bool to_segment, const DofStatus& dofs,
+                                  double friction);
 
 /// The interface of nodes `nodes` (indices 0..n_C−1 of `contact`, kept in the given order, no
 /// repeats): their frames, gaps, measures, search directions (when set), B rows and held rows,

@@ -17,8 +17,16 @@
 // say so: n · n_m ≥ 1/2 (the pair lies within 60° of the master's normal: a slave node behind the
 // master boundary, overlapping bodies, or boundaries that do not face each other fail it; along a
 // common normal n̄ · n_m ≥ 0, the master node on the master's side), and
-// each master node is paired once (node-to-segment pairing of non-matching meshes is not
-// implemented).
+// each master node is paired once.
+//
+// Node to segment (contact.pairing = "segment", non-matching meshes; along a common normal n̄ only):
+// the line through slave node s along n̄ meets the master boundary at a point p of one of its facets
+// (an edge in 2D, a triangle in 3D, the nearest such point on the master's side); p = Σ_j w_j x_j over
+// the facet's nodes with barycentric weights w_j ≥ 0, Σ w_j = 1, and the relative displacement is
+// u_s − Σ_j w_j u_j: g = g0 + n̄ · (u_s − Σ_j w_j u_j), g0 = n̄ · (x_s − p) (small sliding: p stays the
+// pair's point). Weights below 1e-12 are dropped, so a slave node right above a master node pairs
+// with that node alone, as node to node. The facet must face the slave (n̄ · n_F ≥ 0, n_F its outward
+// normal); master nodes may be shared by any number of slave nodes.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -29,9 +37,11 @@
 namespace stc {
 
 struct NodePair {
-  int master = -1;         ///< mesh node id of the master node
+  int master = -1;         ///< mesh node id of the master node (node to segment: of the largest weight)
   Eigen::VectorXd normal;  ///< from the master into the slave, unit
   double gap = 0.0;        ///< g0 ≥ 0
+  std::vector<int> facet;  ///< the master nodes compared with the slave: {master}, or the facet's nodes
+  std::vector<double> weights;  ///< their weights w_j > 0, Σ w_j = 1 (node to node: {1})
 };
 
 /// "node 12 at (x, y)": a node named in an input error.
@@ -50,5 +60,17 @@ Eigen::MatrixXd outwardNodeNormals(const TetMesh& mesh, const std::string& group
 std::vector<NodePair> pairNodes(const Eigen::MatrixXd& positions, const std::vector<int>& slave_nodes,
                                 const std::vector<int>& master_nodes, const Eigen::MatrixXd& master_normals,
                                 const Eigen::VectorXd& common_normal);
+
+/// The master group's boundary facets (edges, triangles), oriented as the mesh's boundary: outward
+/// normal (t_y, −t_x) of an edge, (x1 − x0) × (x2 − x0) of a triangle.
+std::vector<std::vector<int>> masterFacets(const TriMesh& mesh, const std::string& group);
+std::vector<std::vector<int>> masterFacets(const TetMesh& mesh, const std::string& group);
+
+/// Node to segment (see above): the point of a master facet on the line through each slave node along
+/// the unit `common_normal`. Throws InputError naming the node when no facet facing the slave meets
+/// that line on the master's side.
+std::vector<NodePair> pairNodesToFacets(const Eigen::MatrixXd& positions, const std::vector<int>& slave_nodes,
+                                        const std::vector<std::vector<int>>& master_facets,
+                                        const Eigen::VectorXd& common_normal);
 
 }  // namespace stc

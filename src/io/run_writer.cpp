@@ -34,8 +34,9 @@ std::string frameName(int k) {
   return name;
 }
 
-// Nodal contact force (λ_n n + Σ_a λ_{t,a} τ_a; its opposite on a master node of two bodies) and
-// state code (−1: not a contact node, 0 open, 1 stick, 2 slip).
+// Nodal contact force (λ_n n + Σ_a λ_{t,a} τ_a; its opposite, times w_j, on the master nodes j of two
+// bodies) and state code (−1: not a contact node, 0 open, 1 stick, 2 slip; a master node shared by
+// several pairs shows the highest).
 void contactFields(const Problem& problem, const SolveResult& result, const ContactStateTable& states, int k,
                    Eigen::MatrixXd& force, Eigen::MatrixXd& state) {
   const auto& c = problem.contact;
@@ -48,9 +49,13 @@ void contactFields(const Problem& problem, const SolveResult& result, const Cont
     force.col(node) = l[0] * c.normals.col(i) + c.tangents.middleCols(static_cast<Eigen::Index>(d - 1) * i, d - 1) * l.tail(d - 1);
     state(0, node) = static_cast<double>(states.state(i, k));
     if (!c.isPair()) continue;
-    const int master = c.master_nodes[i];  // action and reaction
-    force.col(master) = -force.col(node);
-    state(0, master) = state(0, node);
+    for (Eigen::Index j = 0; j < c.master_facets.rows() && c.master_facets(j, i) >= 0; ++j) {  // action and reaction
+      const int master = c.master_facets(j, i);
+      const Eigen::VectorXd share = -c.master_weights(j, i) * force.col(node);
+      if (state(0, master) < 0.0) force.col(master) = share;  // its first pair (node to node: its only one)
+      else force.col(master) += share;
+      state(0, master) = std::max(state(0, master), state(0, node));
+    }
   }
 }
 

@@ -254,7 +254,7 @@ ContactInterface contactInterfaceOf(const Scene& scene, const Problem& p, const 
   const DofStatus dofs{p.free_index, zero};
   const ContactSpec& c = scene.contact;
   if (!c.master.empty())
-    return std::visit([&](const auto& mesh) { return buildContactPair(mesh, c.boundary, c.master, c.normal, dofs, c.friction); },
+    return std::visit([&](const auto& mesh) { return buildContactPair(mesh, c.boundary, c.master, c.normal, c.to_segment, dofs, c.friction); },
                       p.body);
   const Obstacle obstacle = makeObstacle(scene.obstacle);
   return std::visit([&](const auto& mesh) { return buildContactInterface(mesh, c.boundary, obstacle, dofs, c.friction); },

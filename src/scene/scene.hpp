@@ -85,6 +85,9 @@ struct ContactSpec {
   std::string master;                   ///< empty: a rigid obstacle; else the other body's boundary
   Eigen::VectorXd normal;               ///< with `master`: the common normal from the master into the
                                         ///< slave along which nodes pair (unit), or empty: the nearest
+  /// With `master`: each slave node pairs with a master node (matching meshes) or, with `segment`, with
+  /// the point of a master facet (edge, triangle) on its line along `normal` (non-matching meshes).
+  bool to_segment = false;
   double friction = 0.0;                ///< mu >= 0
   std::optional<double> length_scale;  ///< L of the search direction k = kappa E l_i / L (> 0);
                                         ///< default: the radius, or the mesh's largest extent

@@ -304,7 +304,8 @@ ObstacleSpec readObstacle(const TableView& root, int dimension, const TimeSpec& 
 }
 
 ContactSpec readContact(const TableView& root, int dimension) {
-  const TableView contact = root.requiredTable("contact", {"boundary", "master", "normal", "friction", "length_scale"});
+  const TableView contact =
+      root.requiredTable("contact", {"boundary", "master", "normal", "pairing", "friction", "length_scale"});
   ContactSpec spec;
   spec.boundary = requiredName(contact, "boundary");
   if (contact.has("master")) spec.master = requiredName(contact, "master");
@@ -313,6 +314,11 @@ ContactSpec readContact(const TableView& root, int dimension) {
                                                          "' must name another boundary than 'contact.boundary'");
   if (!spec.master.empty() && contact.has("normal")) spec.normal = readUnitVector(contact, "normal", dimension);
   if (spec.master.empty()) refuseKey(contact, "normal", "applies to two bodies only (with 'contact.master')");
+  if (spec.master.empty()) refuseKey(contact, "pairing", "applies to two bodies only (with 'contact.master')");
+  if (contact.has("pairing")) spec.to_segment = readKeyword(contact, "pairing", {"node", "segment"}) == "segment";
+  if (spec.to_segment && spec.normal.size() == 0)
+    contact.errors().fail(contact.keyPath("pairing"), "key '" + contact.keyPath("pairing") +
+                                                          "' = \"segment\" needs 'contact.normal' (the line along which a slave node meets a master facet)");
   spec.friction = contact.requiredNumber("friction");
   requireRange(contact, "friction", spec.friction, spec.friction >= 0.0, "must be >= 0");
   spec.length_scale = contact.optionalNumber("length_scale");

@@ -22,6 +22,22 @@ def test_two_bodies_give_each_contact_node_its_master():
     assert (nodes[result.contact_nodes, 1] > nodes[result.master_nodes, 1]).all()
 
 
+def test_non_matching_faces_pair_node_to_segment():
+    """Each pad node meets the specimen's face at the point its weights give, right below it."""
+    scene = stcontact.load_scene(SCENES / "fretting_pad.toml", sets=[
+        "mesh.file=../meshes/fretting_pad_nonmatching_small.msh", "contact.pairing=segment", "time.steps=21"])
+    mesh = scene.mesh()
+    facets, weights, nodes = mesh["master_facets"], mesh["master_weights"], mesh["nodes"]
+    assert facets.shape == weights.shape == (len(mesh["contact_nodes"]), 2)
+    np.testing.assert_allclose(weights.sum(axis=1), 1.0, rtol=0, atol=1e-15)
+    assert ((weights > 0) == (facets >= 0)).all()
+    points = np.einsum("ij,ijk->ik", weights, nodes[np.where(facets >= 0, facets, 0)])
+    np.testing.assert_allclose(points[:, 0], nodes[mesh["contact_nodes"], 0], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(mesh["initial_gap"], nodes[mesh["contact_nodes"], 1] - points[:, 1], rtol=0, atol=1e-12)
+    result = stcontact.solve(scene, solver="fas-apriori")
+    assert result.converged and result.error <= 1e-6
+
+
 def test_one_body_has_no_master_nodes():
     scene = stcontact.load_scene(SCENES / "hemicylinder.toml", sets=SMALL)
     assert len(scene.mesh()["master_nodes"]) == 0
