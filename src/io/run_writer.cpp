@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "stcontact/core/overloaded.hpp"
@@ -11,6 +12,7 @@
 #include "stcontact/fem/elasticity_3d.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/io/atomic_file.hpp"
+#include "stcontact/io/body_blocks.hpp"
 #include "stcontact/io/contact_tables.hpp"
 #include "stcontact/io/json_writer.hpp"
 #include "stcontact/io/vtu_writer.hpp"
@@ -28,9 +30,11 @@ std::vector<int> frameSteps(int steps, int stride) {
   return frames;
 }
 
-std::string frameName(int k) {
-  char name[32];
-  std::snprintf(name, sizeof name, "vtu/step_%05d.vtu", k);
+// vtu/step_NNNNN.vtu, or vtu/step_NNNNN_body<b>.vtu for body b of several.
+std::string frameName(int k, int body = -1) {
+  char name[48];
+  if (body < 0) std::snprintf(name, sizeof name, "vtu/step_%05d.vtu", k);
+  else std::snprintf(name, sizeof name, "vtu/step_%05d_body%d.vtu", k, body);
   return name;
 }
 
@@ -78,10 +82,15 @@ Eigen::MatrixXd bodyCodes(const Problem& problem) {
   return codes;
 }
 
-// One VTU frame: displacement, contact force and state (and the body, when two) on the nodes; the
-// stress tensor and von Mises on the elements.
-void writeFrame(std::ostream& out, const Problem& problem, const VtuGrid& grid, const Eigen::VectorXd& u,
-                const Eigen::MatrixXd& force, const Eigen::MatrixXd& state, const Eigen::MatrixXd& bodies) {
+// The fields of a frame: displacement, contact force and state (and the body, when two) on the
+// nodes; the stress tensor and von Mises on the elements.
+struct FrameFields {
+  std::vector<PointField> nodal;
+  std::vector<CellField> cells;
+};
+
+FrameFields frameFields(const Problem& problem, const Eigen::VectorXd& u, const Eigen::MatrixXd& force,
+                        const Eigen::MatrixXd& state, const Eigen::MatrixXd& bodies) {
   const Eigen::MatrixXd displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), problem.dimension, problem.numNodes());
   std::vector<PointField> nodal{{"displacement", displacement},
                                 {"contact_force", force},
@@ -114,7 +123,7 @@ void writeFrame(std::ostream& out, const Problem& problem, const VtuGrid& grid, 
                                      {0, 1, 2, 5, 3, 4});
                  }},
       problem.body);
-  grid.write(out, nodal, cells);
+  return {std::move(nodal), cells};
 }
 
 VtuGrid gridOf(const Problem& problem, VtuPrecision precision) {
@@ -165,7 +174,9 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
   ensureWritableDirectory(dir / "vtu");
   const SpdFactor factor(problem.stiffness_free, "K_ff");
   const ContactStateTable states(problem.contact, result.admissible());
-  const VtuGrid grid = gridOf(problem, precision);
+  // One grid, or one block per body (io/body_blocks.hpp); the one-body frames as they always were.
+  const std::vector<BodyBlock> blocks = problem.contact.isPair() ? bodyBlocks(problem.body, precision) : std::vector<BodyBlock>{};
+  const std::optional<VtuGrid> grid = blocks.empty() ? std::optional<VtuGrid>(gridOf(problem, precision)) : std::nullopt;
   const Eigen::MatrixXd bodies = bodyCodes(problem);
   const std::vector<int> steps = frameSteps(problem.numSteps(), stride);
   // The frames are independent: each thread solves with its own workspace and writes its own files.
@@ -178,12 +189,18 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
         problem.absoluteDisplacement(factor.solve(rhs, workspaces[static_cast<std::size_t>(thread)]), k);
     Eigen::MatrixXd force, state;
     contactFields(problem, result, states, k, force, state);
-    AtomicFile file(dir / frameName(k));
-    writeFrame(file.stream(), problem, grid, u, force, state, bodies);
-    file.commit();
+    const FrameFields fields = frameFields(problem, u, force, state, bodies);
+    for (int b = 0; b < std::max<int>(1, static_cast<int>(blocks.size())); ++b) {
+      AtomicFile file(dir / frameName(k, grid ? -1 : b));
+      if (grid) grid->write(file.stream(), fields.nodal, fields.cells);
+      else writeBlock(file.stream(), blocks[static_cast<std::size_t>(b)], fields.nodal, fields.cells);
+      file.commit();
+    }
   });
-  std::vector<std::pair<double, std::string>> frames;
-  for (int k : steps) frames.emplace_back(problem.times[k], frameName(k));
+  std::vector<PvdDataSet> frames;
+  for (int k : steps)
+    for (int b = 0; b < std::max<int>(1, static_cast<int>(blocks.size())); ++b)
+      frames.push_back({problem.times[k], frameName(k, grid ? -1 : b), b, grid ? "" : "body " + std::to_string(b)});
   writeFileAtomically(dir / "solution.pvd", pvdDocument(frames));
 }
 

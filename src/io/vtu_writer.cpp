@@ -157,21 +157,24 @@ std::string vtuDocument(const TetMesh& mesh, const std::vector<PointField>& poin
   return out.str();
 }
 
-std::string pvdDocument(const std::vector<std::pair<double, std::string>>& frames) {
+std::string pvdDocument(const std::vector<PvdDataSet>& frames) {
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "  <Collection>\n";
-  for (const auto& [time, file] : frames) {
+  for (const auto& [time, file, part, name] : frames) {
     if (file.empty())
       throw std::invalid_argument("PVD frame at time " + std::to_string(time) +
                                   ": empty file name");
     if (!std::isfinite(time))
       throw std::invalid_argument("PVD frame '" + file + "': non-finite time");
+    if (part < 0) throw std::invalid_argument("PVD frame '" + file + "': negative part");
     char buffer[32];  // shortest exact form: close instants stay distinct
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, time);
     out << "    <DataSet timestep=\"" << std::string_view(buffer, result.ptr - buffer)
-        << "\" group=\"\" part=\"0\" file=\"" << escapeXml(file) << "\"/>\n";
+        << "\" group=\"\" part=\"" << part << "\" file=\"" << escapeXml(file) << '"';
+    if (!name.empty()) out << " name=\"" << escapeXml(name) << '"';
+    out << "/>\n";
   }
   out << "  </Collection>\n"
       << "</VTKFile>\n";

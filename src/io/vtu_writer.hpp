@@ -66,8 +66,18 @@ class VtuGrid {
   std::vector<EncodedArray> cellArrays_;  ///< <Cells>: connectivity, offsets, types
 };
 
-/// A ParaView collection listing `frames` (time, file name relative to the .pvd) in the given
-/// order. Throws std::invalid_argument for an empty file name or a non-finite time.
-std::string pvdDocument(const std::vector<std::pair<double, std::string>>& frames);
+/// One file of a ParaView collection: its time, its name relative to the .pvd, its part and, when not
+/// empty, that part's name. ParaView's PVD reader makes the files of one time the blocks of a
+/// multiblock dataset, each named by its `name` (a body, docs/two_bodies.md; vtkXMLCollectionReader).
+struct PvdDataSet {
+  double time = 0.0;
+  std::string file;
+  int part = 0;
+  std::string name;
+};
+
+/// A ParaView collection listing `frames` in the given order. Throws std::invalid_argument for an
+/// empty file name, a non-finite time or a negative part.
+std::string pvdDocument(const std::vector<PvdDataSet>& frames);
 
 }  // namespace stc

@@ -349,10 +349,21 @@ TEST(PvdDocument, EmptyCollectionIsWellFormed) {
   EXPECT_EQ(xmlStructureProblem(pvdDocument({})), "");
 }
 
-TEST(PvdDocument, RejectsEmptyFileNamesAndNonFiniteTimes) {
+TEST(PvdDocument, RejectsEmptyFileNamesNonFiniteTimesAndNegativeParts) {
   EXPECT_THROW(pvdDocument({{0.0, ""}}), std::invalid_argument);
   EXPECT_THROW(pvdDocument({{std::numeric_limits<double>::quiet_NaN(), "a.vtu"}}),
                std::invalid_argument);
+  EXPECT_THROW(pvdDocument({{0.0, "a.vtu", -1}}), std::invalid_argument);
+}
+
+// Two bodies: the files of one time are parts 0 and 1, each named (the blocks ParaView shows).
+TEST(PvdDocument, ListsThePartsOfOneTimeWithTheirNames) {
+  const std::string document = pvdDocument({{0.5, "vtu/step_00001_body0.vtu", 0, "body 0"},
+                                            {0.5, "vtu/step_00001_body1.vtu", 1, "body <1>"}});
+  EXPECT_EQ(xmlStructureProblem(document), "");
+  EXPECT_NE(document.find(R"(<DataSet timestep="0.5" group="" part="0" file="vtu/step_00001_body0.vtu" name="body 0"/>)"),
+            std::string::npos);
+  EXPECT_NE(document.find(R"(part="1" file="vtu/step_00001_body1.vtu" name="body &lt;1&gt;"/>)"), std::string::npos);
 }
 
 }  // namespace
