@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <limits>
+#include <utility>
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/overloaded.hpp"
+#include "stcontact/mesh/gmsh_reader.hpp"
 
 namespace stc {
 namespace {
@@ -62,6 +64,10 @@ Obstacle makeObstacle(const ObstacleSpec& spec) {
       return BallObstacle{spec.centre, spec.radius, spec.inside};
     case ObstacleType::Polyline:
       return PolylineObstacle{spec.points};
+    case ObstacleType::Surface: {
+      SurfaceTriangles surface = readGmshSurface(spec.file);
+      return makeSurfaceObstacle(std::move(surface.nodes), std::move(surface.triangles), spec.inside);
+    }
   }
   return PlaneObstacle{spec.point, spec.normal.normalized()};
 }
@@ -78,6 +84,9 @@ Eigen::VectorXd obstacleNormal(const Obstacle& obstacle, const Eigen::VectorXd& 
                                },
                                [&](const PolylineObstacle& line) -> Eigen::VectorXd {
                                  return closestPoint(line, x).normal;
+                               },
+                               [&](const SurfaceObstacle& surface) -> Eigen::VectorXd {
+                                 return closestSurfacePoint(surface, x).normal;
                                }},
                     obstacle);
 }
@@ -88,7 +97,8 @@ double obstacleGap(const Obstacle& obstacle, const Eigen::VectorXd& x) {
                                  const double distance = (x - ball.centre).norm();
                                  return ball.inside ? ball.radius - distance : distance - ball.radius;
                                },
-                               [&](const PolylineObstacle& line) { return closestPoint(line, x).gap; }},
+                               [&](const PolylineObstacle& line) { return closestPoint(line, x).gap; },
+                               [&](const SurfaceObstacle& surface) { return closestSurfacePoint(surface, x).gap; }},
                     obstacle);
 }
 

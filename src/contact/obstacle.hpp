@@ -1,11 +1,13 @@
 #pragma once
 // Rigid obstacles: a plane, a ball (a sphere in 3D, a cylinder's circular section in 2D) that the
-// body lies outside of, or inside of (a seat), or a polyline (2D) the body lies to the left of. Each gives the signed distance of a point and the unit
+// body lies outside of, or inside of (a seat), a polyline (2D) the body lies to the left of, or a
+// triangulated surface (3D, surface_obstacle.hpp). Each gives the signed distance of a point and the unit
 // normal pointing from the obstacle into the body; the contact interface takes both at the nodes'
 // initial positions (small sliding, docs/method.md §1). Points have the scene's dimension.
 #include <Eigen/Core>
 #include <variant>
 
+#include "stcontact/contact/surface_obstacle.hpp"
 #include "stcontact/scene/scene.hpp"
 
 namespace stc {
@@ -36,8 +38,10 @@ struct PolylineObstacle {
   Eigen::Matrix2Xd points;
 };
 
-using Obstacle = std::variant<PlaneObstacle, BallObstacle, PolylineObstacle>;
+using Obstacle = std::variant<PlaneObstacle, BallObstacle, PolylineObstacle, SurfaceObstacle>;
 
+/// The obstacle of the scene's [obstacle] table; a surface's file is read here (mesh/gmsh_reader.hpp,
+/// readGmshSurface: an InputError names the file).
 Obstacle makeObstacle(const ObstacleSpec& spec);
 
 /// Unit normal n at x, pointing from the obstacle into the body (docs/method.md §1). A ball's normal

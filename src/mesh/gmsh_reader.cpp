@@ -327,7 +327,7 @@ void skipSection(LineReader& r, const std::string& header) {
 
 }  // namespace
 
-GmshData readSections(std::istream& in, const std::string& source_name, int dimension) {
+GmshData readSections(std::istream& in, const std::string& source_name, int dimension, bool body_required) {
   LineReader r(in, source_name);
   if (!r.next()) r.failFile("empty file (expected $MeshFormat)");
   if (r.line() != "$MeshFormat")
@@ -355,7 +355,7 @@ GmshData readSections(std::istream& in, const std::string& source_name, int dime
   if (dimension == 2 && data.triangles.empty())
     r.failFile("no triangles (with TriMesh.SaveAll = 0, Gmsh saves only the elements of physical "
                "groups: is there a Physical Surface?)");
-  if (dimension == 3 && data.tets.empty())
+  if (dimension == 3 && body_required && data.tets.empty())
     r.failFile("no tetrahedra (with TriMesh.SaveAll = 0, Gmsh saves only the elements of physical "
                "groups: is there a Physical Volume?)");
   return data;

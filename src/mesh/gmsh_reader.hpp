@@ -61,4 +61,16 @@ TriMesh parseGmsh(std::istream& in, const std::string& source_name);
 TetMesh readGmsh3d(const std::filesystem::path& file);
 TetMesh parseGmsh3d(std::istream& in, const std::string& source_name);
 
+/// A triangulated surface in 3D (a rigid obstacle, src/contact/surface_obstacle.hpp): the 3-node
+/// triangles of the file (those of its physical surfaces when Gmsh saves only those), in file order
+/// and as oriented in the file, and the nodes they use, renumbered in file order. Lines and points
+/// are skipped; tetrahedra are an InputError (a volume mesh is not a surface), so is a file without
+/// triangles or with a degenerate one (zero area, named by element tag and line).
+struct SurfaceTriangles {
+  Eigen::Matrix3Xd nodes;
+  Eigen::Matrix3Xi triangles;
+};
+SurfaceTriangles readGmshSurface(const std::filesystem::path& file);
+SurfaceTriangles parseGmshSurface(std::istream& in, const std::string& source_name);
+
 }  // namespace stc

@@ -1,4 +1,5 @@
 // The 3D build of the Gmsh reader (src/mesh/gmsh_reader.hpp): tetrahedra and named boundary surfaces.
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -113,6 +114,38 @@ void buildSurfaceGroups(const GmshData& data, const std::vector<int>& index, con
   }
 }
 
+// The triangles, renumbered over the nodes they use (in file order).
+SurfaceTriangles usedNodesAndTriangles(const GmshData& data, const std::vector<RawTriangle>& raw) {
+  std::vector<int> index(data.coords.size(), -1);
+  for (const RawTriangle& t : raw)
+    for (int node : t.nodes) index[static_cast<std::size_t>(node)] = 0;
+  int used = 0;
+  for (int& i : index)
+    if (i == 0) i = used++;
+  SurfaceTriangles surface;
+  surface.nodes.resize(3, used);
+  for (std::size_t i = 0; i < index.size(); ++i)
+    if (index[i] >= 0) surface.nodes.col(index[i]) = data.coords[i];
+  surface.triangles.resize(3, static_cast<Eigen::Index>(raw.size()));
+  for (std::size_t e = 0; e < raw.size(); ++e)
+    for (int a = 0; a < 3; ++a) surface.triangles(a, static_cast<Eigen::Index>(e)) = index[static_cast<std::size_t>(raw[e].nodes[a])];
+  return surface;
+}
+
+// A triangle of area ≤ 1e-12 of the mean is named by element tag and line.
+void requireNonDegenerate(const SurfaceTriangles& surface, const std::vector<RawTriangle>& raw, const std::string& source) {
+  const auto twiceArea = [&](Eigen::Index e) {
+    const Eigen::Vector3d x0 = surface.nodes.col(surface.triangles(0, e));
+    return (surface.nodes.col(surface.triangles(1, e)) - x0).cross(surface.nodes.col(surface.triangles(2, e)) - x0).norm();
+  };
+  double mean = 0.0;
+  for (Eigen::Index e = 0; e < surface.triangles.cols(); ++e) mean += twiceArea(e) / static_cast<double>(raw.size());
+  for (Eigen::Index e = 0; e < surface.triangles.cols(); ++e)
+    if (!(twiceArea(e) > 1e-12 * mean))
+      throw InputError(at(source, raw[static_cast<std::size_t>(e)].line) + "triangle " +
+                       std::to_string(raw[static_cast<std::size_t>(e)].tag) + " is degenerate (zero area)");
+}
+
 }  // namespace
 
 TetMesh parseGmsh3d(std::istream& in, const std::string& source_name) {
@@ -130,6 +163,28 @@ TetMesh parseGmsh3d(std::istream& in, const std::string& source_name) {
 TetMesh readGmsh3d(const std::filesystem::path& file) {
   std::ifstream in = detail::openMeshFile(file);
   return parseGmsh3d(in, file.string());
+}
+
+SurfaceTriangles parseGmshSurface(std::istream& in, const std::string& source_name) {
+  const GmshData data = detail::readSections(in, source_name, 3, false);
+  if (!data.tets.empty())
+    throw InputError(at(source_name, data.tet_origin.front().second) + "tetrahedron " +
+                     std::to_string(data.tet_origin.front().first) + ": a rigid surface is given by its triangles alone "
+                     "(this file holds a volume mesh)");
+  std::vector<RawTriangle> raw;
+  for (const auto& [surface, triangles] : data.surface_triangles) raw.insert(raw.end(), triangles.begin(), triangles.end());
+  if (raw.empty())
+    throw InputError(source_name + ": no triangles (with Mesh.SaveAll = 0, Gmsh saves only the elements of physical "
+                                   "groups: is there a Physical Surface?)");
+  std::sort(raw.begin(), raw.end(), [](const RawTriangle& a, const RawTriangle& b) { return a.line < b.line; });
+  SurfaceTriangles surface = usedNodesAndTriangles(data, raw);
+  requireNonDegenerate(surface, raw, source_name);
+  return surface;
+}
+
+SurfaceTriangles readGmshSurface(const std::filesystem::path& file) {
+  std::ifstream in = detail::openMeshFile(file);
+  return parseGmshSurface(in, file.string());
 }
 
 }  // namespace stc

@@ -224,12 +224,13 @@ auto withContext(const Scene& scene, const std::string& key, Step&& step) {
   }
 }
 
-// A plane's point and normal, a ball's centre, have the scene's dimension (a polyline's points are
-// checked by the reader; two bodies have no obstacle). Scenes built in code skip the reader.
+// A plane's point and normal, a ball's centre, have the scene's dimension (a polyline's points and a
+// surface's file are checked by the reader; two bodies have no obstacle). Scenes built in code skip
+// the reader.
 void requireObstacleDimension(const Scene& scene) {
   const ObstacleSpec& o = scene.obstacle;
   const int d = scene.dimension;
-  if (!scene.contact.master.empty() || o.type == ObstacleType::Polyline) return;
+  if (!scene.contact.master.empty() || o.type == ObstacleType::Polyline || o.type == ObstacleType::Surface) return;
   const bool plane = o.type == ObstacleType::Plane;
   if (plane ? (o.point.size() == d && o.normal.size() == d) : o.centre.size() == d) return;
   throw InputError(std::string(plane ? "point and normal" : "centre") + " must have " + std::to_string(d) +
@@ -256,7 +257,7 @@ ContactInterface contactInterfaceOf(const Scene& scene, const Problem& p, const 
   if (!c.master.empty())
     return std::visit([&](const auto& mesh) { return buildContactPair(mesh, c.boundary, c.master, c.normal, c.to_segment, dofs, c.friction); },
                       p.body);
-  const Obstacle obstacle = makeObstacle(scene.obstacle);
+  const Obstacle obstacle = makeObstacle(scene.obstacle);  // a surface's file is read here
   return std::visit([&](const auto& mesh) { return buildContactInterface(mesh, c.boundary, obstacle, dofs, c.friction); },
                     p.body);
 }

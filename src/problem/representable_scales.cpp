@@ -85,6 +85,7 @@ void requireRepresentableScales(const Scene& scene, const Problem& problem) {
   requireGapScale(problem, pair                           ? "contact.master"
                            : type == ObstacleType::Plane    ? "obstacle.point"
                            : type == ObstacleType::Polyline ? "obstacle.points"
+                           : type == ObstacleType::Surface  ? "obstacle.file"
                                                             : "obstacle.centre");
 }
 

@@ -46,8 +46,8 @@ struct MaterialSpec {
 };
 
 /// Plane (2D and 3D); sphere (3D) and cylinder (2D: its cross-section, a circle): a ball; polyline
-/// (2D): a rigid profile given by its points.
-enum class ObstacleType { Plane, Sphere, Cylinder, Polyline };
+/// (2D): a rigid profile given by its points; surface (3D): a triangulated surface from a Gmsh file.
+enum class ObstacleType { Plane, Sphere, Cylinder, Polyline, Surface };
 
 /// One piecewise-linear history of a scalar: `times` strictly increasing, same length as `values`.
 struct History {
@@ -70,7 +70,9 @@ struct ObstacleSpec {
   Eigen::VectorXd normal = Eigen::VectorXd::Unit(2, 1);  ///< normalised on reading (must be nonzero)
   Eigen::VectorXd centre = Eigen::VectorXd::Zero(2);     ///< sphere, cylinder
   double radius = 0.0;                                    ///< sphere, cylinder: > 0
-  bool inside = false;  ///< sphere, cylinder: the body inside the sphere (side = "inside")
+  bool inside = false;  ///< sphere, cylinder: the body inside the ball; surface: on the side its
+                        ///< triangles' normals point away from (side = "inside")
+  std::filesystem::path file;  ///< surface: the Gmsh surface mesh, resolved against the scene's folder
   Eigen::Matrix2Xd points;  ///< polyline: its points (≥ 2, consecutive ones distinct), the body on the left
   /// Its rigid translation d(t), one history per component (none: fixed). The problem is solved in
   /// the obstacle's frame (src/problem/problem.hpp, Problem::frame_motion).

@@ -244,7 +244,7 @@ void readBall(const TableView& obstacle, int dimension, ObstacleSpec& spec) {
 void requireKeysOfType(const TableView& obstacle, const std::string& type, std::initializer_list<const char*> keys) {
   std::string list;
   for (const char* k : keys) list += (list.empty() ? "'" : ", '") + std::string(k) + "'";
-  for (const char* key : {"point", "normal", "centre", "radius", "side", "points"}) {
+  for (const char* key : {"point", "normal", "centre", "radius", "side", "points", "file"}) {
     const auto own = [&](const char* k) { return std::string(k) == key; };
     if (std::find_if(keys.begin(), keys.end(), own) == keys.end())
       refuseKey(obstacle, key, "does not apply to obstacle.type = \"" + type + "\" (its keys: " + list + ")");
@@ -269,13 +269,22 @@ void readPolyline(const TableView& obstacle, ObstacleSpec& spec) {
   spec.type = ObstacleType::Polyline;
 }
 
-ObstacleSpec readObstacle(const TableView& root, int dimension, const TimeSpec& time) {
+// A triangulated surface (3D): `file`, a Gmsh surface mesh resolved against the scene's folder (read
+// when the problem is built), and `side`.
+void readSurface(const TableView& obstacle, const std::filesystem::path& source, ObstacleSpec& spec) {
+  const std::filesystem::path file = requiredName(obstacle, "file");
+  spec.file = file.is_absolute() ? file : (source.parent_path() / file).lexically_normal();
+  if (obstacle.has("side")) spec.inside = readKeyword(obstacle, "side", {"outside", "inside"}) == "inside";
+  spec.type = ObstacleType::Surface;
+}
+
+ObstacleSpec readObstacle(const TableView& root, const std::filesystem::path& source, int dimension, const TimeSpec& time) {
   const TableView obstacle =
-      root.requiredTable("obstacle", {"type", "point", "normal", "centre", "radius", "side", "points", "motion"});
+      root.requiredTable("obstacle", {"type", "point", "normal", "centre", "radius", "side", "points", "file", "motion"});
   ObstacleSpec spec;
   spec.motion = readHistories<ObstacleMotionSpec>(obstacle, "motion", dimension, time);
   const std::string type =
-      obstacle.has("type") ? readKeyword(obstacle, "type", {"plane", "sphere", "cylinder", "polyline"}) : "plane";
+      obstacle.has("type") ? readKeyword(obstacle, "type", {"plane", "sphere", "cylinder", "polyline", "surface"}) : "plane";
   if (type == "plane") {
     requireKeysOfType(obstacle, type, {"point", "normal"});
     readPlane(obstacle, dimension, spec);
@@ -284,10 +293,18 @@ ObstacleSpec readObstacle(const TableView& root, int dimension, const TimeSpec& 
   if (type == "polyline") {
     if (dimension != 2)
       obstacle.errors().fail(obstacle.keyPath("type"), "key '" + obstacle.keyPath("type") +
-                                                           "' = \"polyline\" needs a 2D scene (a rigid surface mesh in 3D "
-                                                           "is not implemented)");
+                                                           "' = \"polyline\" needs a 2D scene (in 3D: \"surface\", a "
+                                                           "Gmsh surface mesh)");
     requireKeysOfType(obstacle, type, {"points"});
     readPolyline(obstacle, spec);
+    return spec;
+  }
+  if (type == "surface") {
+    if (dimension != 3)
+      obstacle.errors().fail(obstacle.keyPath("type"), "key '" + obstacle.keyPath("type") +
+                                                           "' = \"surface\" needs a 3D scene (in 2D: \"polyline\")");
+    requireKeysOfType(obstacle, type, {"file", "side"});
+    readSurface(obstacle, source, spec);
     return spec;
   }
   const bool sphere = type == "sphere";
@@ -559,7 +576,7 @@ Scene readTable(const toml::table& table, const std::filesystem::path& source,
   scene.material = readMaterial(root.requiredTable("material", {"young", "poisson"}));
   scene.contact = readContact(root, scene.dimension);
   scene.time = readTime(root);
-  if (scene.contact.master.empty()) scene.obstacle = readObstacle(root, scene.dimension, scene.time);
+  if (scene.contact.master.empty()) scene.obstacle = readObstacle(root, source, scene.dimension, scene.time);
   if (const auto master = root.optionalTable("master_material", {"young", "poisson"})) {
     if (scene.contact.master.empty())
       errors.fail("master_material", "table [master_material] applies to two bodies only (with 'contact.master')");

@@ -64,6 +64,19 @@ void checkSolid(const stc::TetMesh& mesh) {
       for (int id : t) require(id >= 0 && id < mesh.numNodes(), "group triangle node ids in range");
 }
 
+// A rigid surface: triangles over nodes in range, every node used, no triangle of zero area.
+void checkSurface(const stc::SurfaceTriangles& surface) {
+  require(surface.triangles.cols() > 0, "a surface has triangles");
+  std::vector<bool> used(static_cast<std::size_t>(surface.nodes.cols()), false);
+  for (Eigen::Index e = 0; e < surface.triangles.cols(); ++e)
+    for (int a = 0; a < 3; ++a) {
+      const int id = surface.triangles(a, e);
+      require(id >= 0 && id < surface.nodes.cols(), "surface triangle node ids in range");
+      used[static_cast<std::size_t>(id)] = true;
+    }
+  for (bool u : used) require(u, "every node is used by a triangle");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -77,6 +90,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     std::istringstream in(text);
     checkSolid(stc::parseGmsh3d(in, "fuzz.msh"));
+  } catch (const stc::InputError&) {
+  }
+  try {
+    std::istringstream in(text);
+    checkSurface(stc::parseGmshSurface(in, "fuzz.msh"));
   } catch (const stc::InputError&) {
   }
   return 0;

@@ -51,7 +51,9 @@ struct GmshData {
 /// Reads every section of an MSH 4.1 ASCII file for a reader of `dimension` (2 or 3): nodes (z must
 /// be 0 in 2D), the body's elements (triangles in 2D, tetrahedra in 3D) and the boundary elements
 /// (lines on curves in 2D, triangles on surfaces in 3D). Throws InputError naming file and line.
-GmshData readSections(std::istream& in, const std::string& source_name, int dimension);
+/// A file without the body's elements is an error unless `body_required` is false (a rigid surface
+/// in 3D: its triangles alone).
+GmshData readSections(std::istream& in, const std::string& source_name, int dimension, bool body_required = true);
 
 /// Finalises the groups of a built mesh (TriMesh or TetMesh) and validates it, prefixing any
 /// InputError with the file name.
