@@ -38,6 +38,19 @@ void requireMasterHeldOrFree(const Eigen::MatrixXd& positions, int master, const
                        "held at 0");
 }
 
+// A group node is left out of the interface when its motion along its normal n is known: every dof
+// prescribed, or a prescribed axis along n (|n · e_a| = 1).
+bool leftOut(int node, const Eigen::VectorXd& n, const DofStatus& dofs) {
+  const auto dim = static_cast<int>(n.size());
+  const auto prescribed = [&](int a) { return dofs.free_index[static_cast<size_t>(dim * node + a)] < 0; };
+  bool all = true, along_normal = false;
+  for (int a = 0; a < dim; ++a) {
+    all = all && prescribed(a);
+    along_normal = along_normal || (prescribed(a) && std::abs(n[a]) >= 1.0 - kAxisTolerance);
+  }
+  return all || along_normal;
+}
+
 // The group's contact nodes: the rule of buildContactInterface (header), with each node's geometry.
 template <class GeometryOf>
 std::vector<int> contactNodes(const Eigen::MatrixXd& positions, const std::vector<int>& group_nodes,
@@ -48,12 +61,7 @@ std::vector<int> contactNodes(const Eigen::MatrixXd& positions, const std::vecto
     const NodeGeometry g = geometry_of(node);
     const Eigen::VectorXd& n = g.normal;
     const auto prescribed = [&](int a) { return dofs.free_index[dim * node + a] < 0; };
-    bool left_out = true, normal_prescribed = false;
-    for (int a = 0; a < dim; ++a) {
-      left_out = left_out && prescribed(a);
-      normal_prescribed = normal_prescribed || (prescribed(a) && std::abs(n[a]) >= 1.0 - kAxisTolerance);
-    }
-    if (left_out || normal_prescribed) continue;  // its motion normal to the obstacle is known
+    if (leftOut(node, n, dofs)) continue;  // its motion normal to the obstacle is known
     for (int a = 0; a < dim; ++a)
       if (prescribed(a) && (std::abs(n[a]) > kAxisTolerance || !dofs.zero[dim * node + a]))
         throw InputError("contact boundary '" + boundary + "': " + describeNode(positions, node) +
@@ -185,14 +193,20 @@ auto facing(const Eigen::MatrixXd& positions, const Obstacle& obstacle) {
 
 // The geometry of each slave node paired with a master node or facet (contact/node_pairing.hpp),
 // looked up by mesh node id.
+// Node to segment pairs only the slave nodes the interface keeps (leftOut along the common normal:
+// a rim node held along it may have no master facet on its line).
 template <class Mesh>
 auto paired(const Mesh& mesh, const std::string& slave, const std::string& master, const Eigen::VectorXd& common_normal,
-            bool to_segment) {
-  const std::vector<int>& slave_nodes = mesh.group(slave).nodes;
+            bool to_segment, const DofStatus& dofs) {
+  std::vector<int> slave_nodes = mesh.group(slave).nodes;
+  if (to_segment)
+    slave_nodes.erase(std::remove_if(slave_nodes.begin(), slave_nodes.end(), [&](int s) { return leftOut(s, common_normal, dofs); }),
+                      slave_nodes.end());
   const std::vector<NodePair> pairs =
       to_segment ? pairNodesToFacets(mesh.nodes, slave_nodes, masterFacets(mesh, master), common_normal)
                  : pairNodes(mesh.nodes, slave_nodes, mesh.group(master).nodes, outwardNodeNormals(mesh, master), common_normal);
   std::vector<NodeGeometry> by_node(static_cast<size_t>(mesh.numNodes()));
+  for (int s : mesh.group(slave).nodes) by_node[static_cast<size_t>(s)].normal = common_normal;  // left out: no master
   for (size_t i = 0; i < pairs.size(); ++i)
     by_node[static_cast<size_t>(slave_nodes[i])] = {pairs[i].normal, pairs[i].gap, pairs[i].master, pairs[i].facet, pairs[i].weights};
   return [by_node = std::move(by_node)](int node) { return by_node[static_cast<size_t>(node)]; };
@@ -216,7 +230,7 @@ ContactInterface buildContactPair(const TriMesh& mesh, const std::string& slave,
                                   const Eigen::VectorXd& common_normal, bool to_segment, const DofStatus& dofs,
                                   double friction) {
   const BoundaryGroup& group = mesh.group(slave);
-  return build(mesh.nodes, group.nodes, group.edges, slave, paired(mesh, slave, master, common_normal, to_segment), dofs,
+  return build(mesh.nodes, group.nodes, group.edges, slave, paired(mesh, slave, master, common_normal, to_segment, dofs), dofs,
                friction);
 }
 
@@ -224,7 +238,7 @@ ContactInterface buildContactPair(const TetMesh& mesh, const std::string& slave,
                                   const Eigen::VectorXd& common_normal, bool to_segment, const DofStatus& dofs,
                                   double friction) {
   const SurfaceGroup& group = mesh.group(slave);
-  return build(mesh.nodes, group.nodes, group.triangles, slave, paired(mesh, slave, master, common_normal, to_segment),
+  return build(mesh.nodes, group.nodes, group.triangles, slave, paired(mesh, slave, master, common_normal, to_segment, dofs),
                dofs, friction);
 }
 

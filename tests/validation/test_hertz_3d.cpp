@@ -17,10 +17,15 @@
 #include <gsl/gsl_fit.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/mesh/half_ball.hpp"
+#include "validation/msh_writer.hpp"
 #include "validation/point_contact_3d.hpp"
 
 namespace stc::validation {
@@ -78,7 +83,75 @@ HertzComparison solveAndCompare(int divisions, bool pair = false) {
   return c;
 }
 
+// Two half-balls meshed apart (upper: the validation mesh at `upper` divisions; lower: at `lower`,
+// mirrored 2 g0 below it), written as one Gmsh file: their contact surfaces do not match, and the
+// pair is node to surface (contact.pairing = "segment") along z.
+Scene nonMatchingPair(int upper, int lower) {
+  PointContactSetup setup;
+  setup.divisions = upper;
+  setup.pair = true;
+  Scene scene = pointContactScene(setup);
+  HalfBallOptions options{scene.mesh.radius, upper, scene.mesh.grading, scene.mesh.core};
+  TetMesh mesh = makeHalfBall(options);
+  options.divisions = lower;
+  const TetMesh image = makeHalfBall(options);
+  const int offset = mesh.numNodes();
+  const double gap = *scene.mesh.mirror_gap;
+  mesh.nodes.conservativeResize(3, offset + image.numNodes());
+  mesh.nodes.rightCols(image.numNodes()) = image.nodes;
+  mesh.nodes.bottomRightCorner(1, image.numNodes()).array() = -2.0 * scene.mesh.radius - gap - image.nodes.row(2).array();
+  mesh.tets.conservativeResize(4, mesh.numElements() + image.numElements());
+  mesh.tets.rightCols(image.numElements()) = image.tets.array() + offset;
+  for (const auto& [name, group] : image.groups) {
+    SurfaceGroup& mirrored = mesh.groups["mirror_" + name];
+    for (const auto& t : group.triangles) mirrored.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  }
+  const auto file = std::filesystem::path(STC_BINARY_DIR) / ("two_balls_" + std::to_string(upper) + "_" + std::to_string(lower) + ".msh");
+  writeMsh(file, mesh);
+  scene.mesh.generator.clear();
+  scene.mesh.mirror_gap.reset();
+  scene.mesh.file = file;
+  scene.contact.to_segment = true;
+  return scene;
+}
+
 }  // namespace
+
+// Hertz for two half-balls meshed apart, node to surface: each pair's a and p0 (h the coarser core's
+// cell size).
+HertzComparison nonMatchingHertz(int upper, int lower) {
+  const Scene scene = nonMatchingPair(upper, lower);
+  const Problem problem = buildProblem(scene);
+  int between = 0;  // slave nodes compared with more than one master node
+  for (int i = 0; i < problem.contact.size(); ++i) between += problem.contact.master_weights(1, i) > 0.0 ? 1 : 0;
+  EXPECT_GT(between, problem.contact.size() / 2);
+  const SolveResult result = solveIncremental(problem);
+  EXPECT_TRUE(result.summary.converged()) << result.summary.message;
+  HertzComparison c = compareWithHertz(problem, result.interface.lambda);
+  c.h = scene.mesh.core * scene.mesh.radius / std::min(upper, lower);
+  std::printf("[ measured ] non-matching pair, divisions %d on %d: %d of %d slave nodes between master nodes, a/h %.2f, "
+              "error a %+.2f %%, error p0 %+.2f %%\n", upper, lower, between, problem.contact.size(), c.a / c.h,
+              100 * c.errorA(), 100 * c.errorP0());
+  return c;
+}
+
+// The slave coarser than the master (divisions 4 on 5; 66k dofs): Hertz within first-order bounds, a
+// as above (0.15 h/a) and p0 within 0.3 h/a: node to surface adds the ripple of a slave node's
+// pressure between master nodes (measured constants: 0.09 for a, 0.20 for p0; 5 on 4 gives 0.12 and
+// 0.24, the largest seen; 6 on 5, 0.10 and 0.18). Refined: DISABLED_TwoSpheresOnNonMatchingMeshes...
+TEST(Hertz3d, TwoSpheresOnNonMatchingMeshesWithinFirstOrderBounds) {
+  const HertzComparison c = nonMatchingHertz(4, 5);
+  EXPECT_LE(std::abs(c.errorA()), 0.15 * c.h / c.a);
+  EXPECT_LE(std::abs(c.errorP0()), 0.3 * c.h / c.a);
+}
+
+// Full size (docs/two_bodies.md, "Non-matching meshes"): the errors fall under refinement, 6 on 5
+// then 8 on 7.
+TEST(Hertz3d, DISABLED_TwoSpheresOnNonMatchingMeshesConvergeTowardHertz) {
+  const HertzComparison coarse = nonMatchingHertz(6, 5), fine = nonMatchingHertz(8, 7);
+  EXPECT_LT(std::abs(fine.errorA()), std::abs(coarse.errorA()));
+  EXPECT_LT(std::abs(fine.errorP0()), std::abs(coarse.errorP0()));
+}
 
 // Small settings (a/h = 3.1 and 4.1, 8k and 16k dofs): the errors fall under refinement and stay
 // within first-order bounds, |error a| <= 0.15 h/a and |error p0| <= 0.25 h/a (the largest measured
