@@ -146,7 +146,7 @@ TEST(Hertz3d, TwoSpheresOnNonMatchingMeshesWithinFirstOrderBounds) {
 }
 
 // Full size (docs/two_bodies.md, "Non-matching meshes"): the errors fall under refinement, 6 on 5
-// then 8 on 7.
+// then 8 on 7 (measured: a −1.98 %, −1.13 %; p0 +3.58 %, +2.04 %).
 TEST(Hertz3d, DISABLED_TwoSpheresOnNonMatchingMeshesConvergeTowardHertz) {
   const HertzComparison coarse = nonMatchingHertz(6, 5), fine = nonMatchingHertz(8, 7);
   EXPECT_LT(std::abs(fine.errorA()), std::abs(coarse.errorA()));
