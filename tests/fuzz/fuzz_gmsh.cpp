@@ -90,12 +90,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     std::istringstream in(text);
     checkSolid(stc::parseGmsh3d(in, "fuzz.msh"));
-  } catch (const stc::InputError&) {
-  }
-  try {
-    std::istringstream in(text);
-    checkSurface(stc::parseGmshSurface(in, "fuzz.msh"));
-  } catch (const stc::InputError&) {
+  } catch (const stc::InputError& e) {
+    // The surface reader reads the sections as the 3D one does and departs from it only where a file
+    // has no tetrahedra (any other input meets the same refusal, or the surface reader's "volume
+    // mesh"): only those inputs are parsed again, which keeps the target at two parses an input.
+    if (std::string(e.what()).find("no tetrahedra") != std::string::npos) {
+      try {
+        std::istringstream again(text);
+        checkSurface(stc::parseGmshSurface(again, "fuzz.msh"));
+      } catch (const stc::InputError&) {
+      }
+    }
   }
   return 0;
 }
