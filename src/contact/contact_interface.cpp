@@ -254,6 +254,10 @@ ContactInterface restrictToNodes(const ContactInterface& contact, const std::vec
   sub.initial_gap.resize(count);
   sub.tributary.resize(count);
   sub.search_direction.resize(has_directions ? d * count : 0);
+  if (contact.isPair()) {
+    sub.master_facets.resize(contact.master_facets.rows(), count);
+    sub.master_weights.resize(contact.master_weights.rows(), count);
+  }
   std::vector<int> new_row(static_cast<size_t>(contact.rows()), -1);
   std::vector<Eigen::Triplet<double>> select;  // (new row, old row)
   for (int j = 0; j < count; ++j) {
@@ -263,10 +267,6 @@ ContactInterface restrictToNodes(const ContactInterface& contact, const std::vec
     sub.nodes.push_back(contact.nodes[static_cast<size_t>(i)]);
     if (contact.isPair()) {
       sub.master_nodes.push_back(contact.master_nodes[static_cast<size_t>(i)]);
-      if (j == 0) {
-        sub.master_facets.resize(contact.master_facets.rows(), count);
-        sub.master_weights.resize(contact.master_weights.rows(), count);
-      }
       sub.master_facets.col(j) = contact.master_facets.col(i);
       sub.master_weights.col(j) = contact.master_weights.col(i);
     }

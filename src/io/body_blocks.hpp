@@ -17,8 +17,9 @@ struct BodyBlock {
   VtuGrid grid;               ///< the body alone, its nodes and elements renumbered in these orders
 };
 
-/// A block per connected part of the mesh (mesh/connected_parts.hpp), numbered as the parts.
-std::vector<BodyBlock> bodyBlocks(const BodyMesh& body, VtuPrecision precision);
+/// A block per connected part of the mesh, `part_of` each node's (mesh/connected_parts.hpp,
+/// partOfNodes), numbered as the parts.
+std::vector<BodyBlock> bodyBlocks(const BodyMesh& body, const std::vector<int>& part_of, VtuPrecision precision);
 
 /// The block's document of a frame: the columns of `points` at its nodes, of `cells` at its elements.
 void writeBlock(std::ostream& out, const BodyBlock& block, const std::vector<PointField>& points,

@@ -72,14 +72,32 @@ Eigen::MatrixXd inVtkOrder(const Eigen::Ref<const Eigen::MatrixXd>& stress, cons
   return tensor;
 }
 
-// The body of each node (1 × n: 0, 1, ...) when the mesh has more than one (two bodies in contact,
-// docs/two_bodies.md), for ParaView's Threshold; empty for one body, whose frames stay as they were.
-Eigen::MatrixXd bodyCodes(const Problem& problem) {
-  if (!problem.contact.isPair()) return {};
+VtuGrid gridOf(const Problem& problem, VtuPrecision precision) {
+  return std::visit([precision](const auto& mesh) { return VtuGrid(mesh, precision); }, problem.body);
+}
+
+// How a frame is written: one grid (one body: the frames as they always were), or, when the mesh
+// holds two bodies in contact (docs/two_bodies.md), one block per body (io/body_blocks.hpp) and the
+// body of each node (1 × n: 0, 1, ...) as a field.
+struct FrameLayout {
+  std::optional<VtuGrid> grid;
+  std::vector<BodyBlock> blocks;
+  Eigen::MatrixXd bodies;  ///< empty for one body
+
+  int parts() const { return grid ? 1 : static_cast<int>(blocks.size()); }
+  /// Part b of instant k in the collection: vtu/step_NNNNN.vtu, or vtu/step_NNNNN_body<b>.vtu named "body b".
+  PvdDataSet dataSet(const Problem& problem, int k, int b) const {
+    if (grid) return {problem.times[k], frameName(k), 0, ""};
+    return {problem.times[k], frameName(k, b), b, "body " + std::to_string(b)};
+  }
+};
+
+FrameLayout frameLayout(const Problem& problem, VtuPrecision precision) {
+  if (!problem.contact.isPair()) return {gridOf(problem, precision), {}, {}};
   const std::vector<int> part = partOfNodes(problem.body);
   Eigen::MatrixXd codes(1, static_cast<Eigen::Index>(part.size()));
   for (std::size_t i = 0; i < part.size(); ++i) codes(0, static_cast<Eigen::Index>(i)) = part[i];
-  return codes;
+  return {std::nullopt, bodyBlocks(problem.body, part, precision), std::move(codes)};
 }
 
 // The fields of a frame: displacement, contact force and state (and the body, when two) on the
@@ -126,10 +144,6 @@ FrameFields frameFields(const Problem& problem, const Eigen::VectorXd& u, const 
   return {std::move(nodal), cells};
 }
 
-VtuGrid gridOf(const Problem& problem, VtuPrecision precision) {
-  return std::visit([precision](const auto& mesh) { return VtuGrid(mesh, precision); }, problem.body);
-}
-
 }  // namespace
 
 std::string historyCsv(const SolveSummary& summary) {
@@ -174,10 +188,7 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
   ensureWritableDirectory(dir / "vtu");
   const SpdFactor factor(problem.stiffness_free, "K_ff");
   const ContactStateTable states(problem.contact, result.admissible());
-  // One grid, or one block per body (io/body_blocks.hpp); the one-body frames as they always were.
-  const std::vector<BodyBlock> blocks = problem.contact.isPair() ? bodyBlocks(problem.body, precision) : std::vector<BodyBlock>{};
-  const std::optional<VtuGrid> grid = blocks.empty() ? std::optional<VtuGrid>(gridOf(problem, precision)) : std::nullopt;
-  const Eigen::MatrixXd bodies = bodyCodes(problem);
+  const FrameLayout layout = frameLayout(problem, precision);
   const std::vector<int> steps = frameSteps(problem.numSteps(), stride);
   // The frames are independent: each thread solves with its own workspace and writes its own files.
   const int threads = threadCount();
@@ -189,18 +200,17 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
         problem.absoluteDisplacement(factor.solve(rhs, workspaces[static_cast<std::size_t>(thread)]), k);
     Eigen::MatrixXd force, state;
     contactFields(problem, result, states, k, force, state);
-    const FrameFields fields = frameFields(problem, u, force, state, bodies);
-    for (int b = 0; b < std::max<int>(1, static_cast<int>(blocks.size())); ++b) {
-      AtomicFile file(dir / frameName(k, grid ? -1 : b));
-      if (grid) grid->write(file.stream(), fields.nodal, fields.cells);
-      else writeBlock(file.stream(), blocks[static_cast<std::size_t>(b)], fields.nodal, fields.cells);
+    const FrameFields fields = frameFields(problem, u, force, state, layout.bodies);
+    for (int b = 0; b < layout.parts(); ++b) {
+      AtomicFile file(dir / layout.dataSet(problem, k, b).file);
+      if (layout.grid) layout.grid->write(file.stream(), fields.nodal, fields.cells);
+      else writeBlock(file.stream(), layout.blocks[static_cast<std::size_t>(b)], fields.nodal, fields.cells);
       file.commit();
     }
   });
   std::vector<PvdDataSet> frames;
   for (int k : steps)
-    for (int b = 0; b < std::max<int>(1, static_cast<int>(blocks.size())); ++b)
-      frames.push_back({problem.times[k], frameName(k, grid ? -1 : b), b, grid ? "" : "body " + std::to_string(b)});
+    for (int b = 0; b < layout.parts(); ++b) frames.push_back(layout.dataSet(problem, k, b));
   writeFileAtomically(dir / "solution.pvd", pvdDocument(frames));
 }
 

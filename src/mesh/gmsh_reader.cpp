@@ -382,12 +382,8 @@ using detail::RawEdge;
 
 /// Keeps the nodes that triangles use (renumbered in file order) and orients the triangles.
 void buildNodesAndTriangles(const GmshData& data, std::vector<int>& index, TriMesh& mesh) {
-  index.assign(data.coords.size(), -1);
-  for (const auto& tri : data.triangles)
-    for (int node : tri) index[node] = 0;
   int used = 0;
-  for (int& i : index)
-    if (i == 0) i = used++;
+  index = detail::usedNodeIndex(data.coords.size(), data.triangles, used);
   mesh.nodes.resize(2, used);
   for (std::size_t i = 0; i < index.size(); ++i)
     if (index[i] >= 0) mesh.nodes.col(index[i]) = data.coords[i].head<2>();

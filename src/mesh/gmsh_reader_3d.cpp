@@ -1,6 +1,6 @@
 // The 3D build of the Gmsh reader (src/mesh/gmsh_reader.hpp): tetrahedra and named boundary surfaces.
-#include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -8,6 +8,7 @@
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/mesh/detail/gmsh_sections.hpp"
+#include "stcontact/mesh/facet_measure.hpp"
 #include "stcontact/mesh/gmsh_reader.hpp"
 
 namespace stc {
@@ -20,12 +21,8 @@ std::string at(const std::string& source, int line) { return source + ": line " 
 
 // Keeps the nodes that tetrahedra use (renumbered in file order); `index` maps file order to them.
 void buildNodesAndTets(const GmshData& data, std::vector<int>& index, TetMesh& mesh) {
-  index.assign(data.coords.size(), -1);
-  for (const auto& tet : data.tets)
-    for (int node : tet) index[node] = 0;
   int used = 0;
-  for (int& i : index)
-    if (i == 0) i = used++;
+  index = detail::usedNodeIndex(data.coords.size(), data.tets, used);
   mesh.nodes.resize(3, used);
   for (std::size_t i = 0; i < index.size(); ++i)
     if (index[i] >= 0) mesh.nodes.col(index[i]) = data.coords[i];
@@ -116,32 +113,30 @@ void buildSurfaceGroups(const GmshData& data, const std::vector<int>& index, con
 
 // The triangles, renumbered over the nodes they use (in file order).
 SurfaceTriangles usedNodesAndTriangles(const GmshData& data, const std::vector<RawTriangle>& raw) {
-  std::vector<int> index(data.coords.size(), -1);
-  for (const RawTriangle& t : raw)
-    for (int node : t.nodes) index[static_cast<std::size_t>(node)] = 0;
+  std::vector<std::array<int, 3>> triangles;
+  for (const RawTriangle& t : raw) triangles.push_back(t.nodes);
   int used = 0;
-  for (int& i : index)
-    if (i == 0) i = used++;
+  const std::vector<int> index = detail::usedNodeIndex(data.coords.size(), triangles, used);
   SurfaceTriangles surface;
   surface.nodes.resize(3, used);
   for (std::size_t i = 0; i < index.size(); ++i)
     if (index[i] >= 0) surface.nodes.col(index[i]) = data.coords[i];
   surface.triangles.resize(3, static_cast<Eigen::Index>(raw.size()));
-  for (std::size_t e = 0; e < raw.size(); ++e)
-    for (int a = 0; a < 3; ++a) surface.triangles(a, static_cast<Eigen::Index>(e)) = index[static_cast<std::size_t>(raw[e].nodes[a])];
+  for (std::size_t e = 0; e < triangles.size(); ++e)
+    for (int a = 0; a < 3; ++a) surface.triangles(a, static_cast<Eigen::Index>(e)) = index[static_cast<std::size_t>(triangles[e][a])];
   return surface;
 }
 
 // A triangle of area ≤ 1e-12 of the mean is named by element tag and line.
 void requireNonDegenerate(const SurfaceTriangles& surface, const std::vector<RawTriangle>& raw, const std::string& source) {
-  const auto twiceArea = [&](Eigen::Index e) {
-    const Eigen::Vector3d x0 = surface.nodes.col(surface.triangles(0, e));
-    return (surface.nodes.col(surface.triangles(1, e)) - x0).cross(surface.nodes.col(surface.triangles(2, e)) - x0).norm();
+  const Eigen::MatrixXd x = surface.nodes;
+  const auto area = [&](Eigen::Index e) {
+    return facetMeasure(x, {surface.triangles(0, e), surface.triangles(1, e), surface.triangles(2, e)});
   };
   double mean = 0.0;
-  for (Eigen::Index e = 0; e < surface.triangles.cols(); ++e) mean += twiceArea(e) / static_cast<double>(raw.size());
+  for (Eigen::Index e = 0; e < surface.triangles.cols(); ++e) mean += area(e) / static_cast<double>(raw.size());
   for (Eigen::Index e = 0; e < surface.triangles.cols(); ++e)
-    if (!(twiceArea(e) > 1e-12 * mean))
+    if (!(area(e) > 1e-12 * mean))
       throw InputError(at(source, raw[static_cast<std::size_t>(e)].line) + "triangle " +
                        std::to_string(raw[static_cast<std::size_t>(e)].tag) + " is degenerate (zero area)");
 }

@@ -55,6 +55,20 @@ struct GmshData {
 /// in 3D: its triangles alone).
 GmshData readSections(std::istream& in, const std::string& source_name, int dimension, bool body_required = true);
 
+/// The index of each node read (file order) among the nodes `elements` use (each element a range of
+/// node positions in file order), renumbered in file order; −1 for a node no element uses. `used`
+/// is their count. The readers keep only those nodes (an unused one would add a zero row).
+template <class Elements>
+std::vector<int> usedNodeIndex(std::size_t num_nodes, const Elements& elements, int& used) {
+  std::vector<int> index(num_nodes, -1);
+  for (const auto& element : elements)
+    for (int node : element) index[static_cast<std::size_t>(node)] = 0;
+  used = 0;
+  for (int& i : index)
+    if (i == 0) i = used++;
+  return index;
+}
+
 /// Finalises the groups of a built mesh (TriMesh or TetMesh) and validates it, prefixing any
 /// InputError with the file name.
 template <class MeshT>
