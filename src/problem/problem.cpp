@@ -124,12 +124,14 @@ std::vector<char> elementsOfBodyOf(const BodyMesh& body, const std::string& mast
   }, body);
 }
 
-/// R, the body's size: the generator's radius, else the mesh's largest extent (the default of L).
+/// R, the body's size (the default of L): the generator's radius, else half the mesh's largest
+/// extent, which is the radius again for a half-disc or half-ball read from a file (its extent is
+/// 2R), so that the same body gets the same search direction however it was meshed.
 double bodySize(const Scene& scene, const Problem& p) {
   if (!scene.mesh.generator.empty()) return scene.mesh.radius;
   Eigen::MatrixXd x = p.nodePositions();
   if (scene.mesh.mirror_gap) x = x.leftCols(x.cols() / 2).eval();  // one body (mesh/mirror_image.hpp)
-  return (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).maxCoeff();
+  return 0.5 * (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).maxCoeff();
 }
 
 /// The search direction k = κ E ℓ_i / L scaled to the body, κ R / L, must lie in

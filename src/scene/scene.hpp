@@ -92,7 +92,7 @@ struct ContactSpec {
   bool to_segment = false;
   double friction = 0.0;                ///< mu >= 0
   std::optional<double> length_scale;  ///< L of the search direction k = kappa E l_i / L (> 0);
-                                        ///< default: the radius, or the mesh's largest extent
+                                        ///< default: the radius, or half the mesh's largest extent
 };
 
 /// [time]: uniform grid of `steps` instants on [0, end].

@@ -6,6 +6,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/strategies/registry.hpp"
 
 namespace {
@@ -40,7 +41,19 @@ TEST(Problem3d, CubeFromAGmshFileHasItsSizesAndInterface) {
   EXPECT_EQ(p.contact.size(), 4);
   EXPECT_NEAR(p.contact.tributary.sum(), 1.0, 1e-15);  // the bottom face's area
   EXPECT_NEAR(p.contact.initial_gap.minCoeff(), 0.01, 1e-15);
-  EXPECT_NEAR(p.length_scale, 1.0, 1e-15);  // a mesh file: the largest extent
+  EXPECT_NEAR(p.length_scale, 0.5, 1e-15);  // a mesh file: half its largest extent
+}
+
+// The same body gets the same search direction however it was meshed: the Gmsh half-ball of radius 1
+// (examples/meshes/half_ball_graded_small.msh, extent 2 along x and y) has the generator's L = R = 1.
+TEST(Problem3d, AHalfBallFromAFileHasTheGeneratorsLengthScale) {
+  const std::string scenes = std::string(STC_SOURCE_DIR) + "/examples/scenes/";
+  const stc::Problem from_file = stc::buildProblem(
+      stc::readScene(scenes + "half_ball_graded.toml", {"mesh.file=../meshes/half_ball_graded_small.msh"}));
+  const stc::Problem generated = stc::buildProblem(stc::readScene(scenes + "hemisphere.toml", {"mesh.divisions=4"}));
+  EXPECT_NEAR(generated.length_scale, 1.0, 1e-15);
+  EXPECT_NEAR(from_file.length_scale, generated.length_scale, 1e-12);
+  EXPECT_NEAR(from_file.contact.search_scale_per_length, generated.contact.search_scale_per_length, 1e-9);
 }
 
 // A total force on a face is shared by area: each triangle gives a third of its share to each node.
