@@ -153,11 +153,19 @@ ContactInterface build(const Eigen::MatrixXd& positions, const std::vector<int>&
   std::vector<int> local(positions.cols(), -1);
   for (int i = 0; i < nc; ++i) local[c.nodes[i]] = i;
   const double share = 1.0 / static_cast<double>(std::tuple_size_v<Facet>);
+  c.facet_size = Eigen::VectorXd::Zero(nc);
+  Eigen::VectorXd facets_at = Eigen::VectorXd::Zero(nc);
   for (const auto& facet : facets) {
     const double measure = facetMeasure(positions, facet);
+    const double size = dim == 3 ? std::sqrt(measure) : measure;
     for (int node : facet)
-      if (local[node] >= 0) c.tributary[local[node]] += share * measure;
+      if (local[node] >= 0) {
+        c.tributary[local[node]] += share * measure;
+        c.facet_size[local[node]] += size;
+        facets_at[local[node]] += 1.0;
+      }
   }
+  c.facet_size = c.facet_size.cwiseQuotient(facets_at.cwiseMax(1.0));
   std::vector<Eigen::Triplet<double>> triplets;
   std::vector<NodeGeometry> pairs;
   for (int i = 0; i < nc; ++i) {
@@ -253,6 +261,7 @@ ContactInterface restrictToNodes(const ContactInterface& contact, const std::vec
   sub.tangents.resize(contact.tangents.rows(), (d - 1) * count);
   sub.initial_gap.resize(count);
   sub.tributary.resize(count);
+  sub.facet_size.resize(count);
   sub.search_direction.resize(has_directions ? d * count : 0);
   if (contact.isPair()) {
     sub.master_facets.resize(contact.master_facets.rows(), count);
@@ -274,6 +283,7 @@ ContactInterface restrictToNodes(const ContactInterface& contact, const std::vec
     sub.tangents.middleCols((d - 1) * j, d - 1) = contact.tangents.middleCols((d - 1) * i, d - 1);
     sub.initial_gap[j] = contact.initial_gap[i];
     sub.tributary[j] = contact.tributary[i];
+    sub.facet_size[j] = contact.facet_size[i];
     if (has_directions) sub.search_direction.segment(d * j, d) = contact.search_direction.segment(d * i, d);
     for (int a = 0; a < d; ++a) {
       new_row[static_cast<size_t>(d * i + a)] = d * j + a;
@@ -306,12 +316,19 @@ std::vector<int> otherNodes(int n, const std::vector<int>& nodes) {
   return others;
 }
 
-void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale) {
+void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale,
+                        SearchLaw law) {
   contact.search_scale_per_length = kappa * young / length_scale;
   contact.search_direction.resize(contact.rows());
+  Eigen::VectorXd k = contact.search_scale_per_length * contact.tributary;
+  if (law == SearchLaw::Local) {  // k_i h̄ / h_i, h̄ = Σ ℓ_i / Σ (ℓ_i / h_i) (src/options/search_law.hpp)
+    Eigen::VectorXd per_size = Eigen::VectorXd::Zero(contact.size());  // ℓ_i / h_i (0 off every facet)
+    for (int i = 0; i < contact.size(); ++i)
+      if (contact.facet_size[i] > 0.0) per_size[i] = contact.tributary[i] / contact.facet_size[i];
+    if (per_size.sum() > 0.0) k = contact.search_scale_per_length * per_size * (contact.tributary.sum() / per_size.sum());
+  }
   for (int i = 0; i < contact.size(); ++i)
-    contact.search_direction.segment(contact.normalRow(i), contact.dimension)
-        .setConstant(contact.search_scale_per_length * contact.tributary[i]);
+    contact.search_direction.segment(contact.normalRow(i), contact.dimension).setConstant(k[i]);
 }
 
 }  // namespace stc

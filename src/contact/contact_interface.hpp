@@ -11,6 +11,7 @@
 #include "stcontact/contact/obstacle.hpp"
 #include "stcontact/mesh/tet_mesh.hpp"
 #include "stcontact/mesh/tri_mesh.hpp"
+#include "stcontact/options/search_law.hpp"
 
 namespace stc {
 
@@ -34,6 +35,8 @@ struct ContactInterface {
   Eigen::VectorXd initial_gap;     ///< g0_i = (x_i − x_obs)·n_i ≥ 0
   Eigen::VectorXd tributary;       ///< ℓ_i: half the contact-boundary edge lengths at node i (2D),
                                    ///< a third of the contact-boundary triangle areas (3D)
+  Eigen::VectorXd facet_size;      ///< h_i: the mean size of the contact facets at node i (edge
+                                   ///< length in 2D, √area in 3D)
   double friction = 0.0;           ///< Coulomb coefficient μ
   /// v = B u_free: row d i is the normal n_i·u_i, rows d i + a (a = 1..d−1) the tangential τ_{i,a}·u_i;
   /// d n_C × n_free.
@@ -43,9 +46,10 @@ struct ContactInterface {
   /// buildContactInterface); sorted.
   std::vector<int> held_rows;
   /// Search direction k (d n_C, diagonal): the same k_i = κ E ℓ_i / L on every row of node i
-  /// (docs/method.md §2; ℓ_i an area in 3D, so k_i is a stiffness in both).
+  /// (docs/method.md §2; ℓ_i an area in 3D, so k_i is a stiffness in both), or with the local law
+  /// κ E ℓ_i h̄ / (L h_i) (src/options/search_law.hpp).
   Eigen::VectorXd search_direction;
-  double search_scale_per_length = 0.0;  ///< κ E / L, so that k_i = search_scale_per_length · ℓ_i
+  double search_scale_per_length = 0.0;  ///< κ E / L: k_i = search_scale_per_length · ℓ_i (tributary law)
 
   int size() const { return static_cast<int>(nodes.size()); }
   bool isPair() const { return !master_nodes.empty(); }
@@ -98,7 +102,9 @@ std::vector<int> rowsOfNodes(int d, const std::vector<int>& nodes);
 /// The nodes 0 … n − 1 not in `nodes`, increasing.
 std::vector<int> otherNodes(int n, const std::vector<int>& nodes);
 
-/// Sets k = κ E ℓ_i / L on every row of every node.
-void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale);
+/// Sets k_i = κ E ℓ_i / L (tributary law) or κ E ℓ_i h̄ / (L h_i) (local law,
+/// src/options/search_law.hpp) on every row of every node.
+void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale,
+                        SearchLaw law = SearchLaw::Tributary);
 
 }  // namespace stc

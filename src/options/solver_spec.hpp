@@ -9,6 +9,7 @@
 #include "stcontact/options/latin_options.hpp"
 #include "stcontact/options/latin_pgd_options.hpp"
 #include "stcontact/options/option_fields.hpp"
+#include "stcontact/options/search_law.hpp"
 #include "stcontact/options/strategy.hpp"
 
 namespace stc {
@@ -18,6 +19,9 @@ struct SolverSpec {
   /// κ of the search direction k = κ E ℓ_i / L (docs/method.md §2), a property of the problem every
   /// LATIN-based strategy iterates on; 4 from docs/search_direction.md.
   double search_scale = 4.0;
+  /// How k is spread over the nodes (src/options/search_law.hpp): the tributary law, or the local one
+  /// for meshes graded along the contact boundary.
+  SearchLaw search_law = SearchLaw::Tributary;
   latin::LatinOptions latin;
   pgd::LatinPgdOptions latin_pgd;
   fas::FasAposterioriOptions fas_aposteriori;
@@ -27,6 +31,7 @@ struct SolverSpec {
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
     visit("search_scale", o.search_scale, positive());
+    visit("search_law", o.search_law, Keywords<SearchLaw>(kSearchLaws));
     latin::LatinOptions::fields(o.latin, visit);
     pgd::LatinPgdOptions::fields(o.latin_pgd, visit);
     fas::FasAposterioriOptions::fields(o.fas_aposteriori, visit);

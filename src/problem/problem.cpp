@@ -339,7 +339,7 @@ Problem buildProblem(const Scene& scene) {
   // scaled so that equal materials give E (docs/two_bodies.md).
   const double young = p.master_material ? 2.0 / (1.0 / p.material.young + 1.0 / p.master_material->young)
                                          : p.material.young;
-  setSearchDirection(p.contact, scene.solver.search_scale, young, p.length_scale);
+  setSearchDirection(p.contact, scene.solver.search_scale, young, p.length_scale, scene.solver.search_law);
   return p;
 }
 

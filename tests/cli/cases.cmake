@@ -116,6 +116,7 @@ set(stc_refusals
   "refuse_malformed_toml|malformed\\.toml:2:[0-9]+: TOML syntax error|${bad}/malformed.toml"
   "refuse_missing_scene|no_such_scene\\.toml: cannot open|${bad}/no_such_scene.toml"
   "refuse_bad_table_header|bad_table_header\\.toml:3:2: TOML syntax error: a table name cannot start with '\\.'|${bad}/bad_table_header.toml"
+  "refuse_unknown_search_law|key 'solver\\.search_law' = .foo. is not one of .tributary., .local.|${seed}|--set|solver.search_law=foo"
   "refuse_set_index_overflow|--set dirichlet\\[9+\\]\\.values=\\[1\\]: malformed key|${seed}|--set|dirichlet[99999999999999999999999].values=[1]"
   "refuse_unknown_key|unknown key 'contact\\.frction'|${seed}|${small_fields}|--set|contact.frction=0.3"
   "refuse_unknown_table|unknown key 'solvers'|${seed}|${small_fields}|--set|solvers.name=latin"

@@ -117,3 +117,36 @@ TEST(ContactInterface, RestrictedToNodesKeepsTheirDataAndRowsInTheGivenOrder) {
   EXPECT_EQ(stc::restrictToNodes(full, {}).rows(), 0);
   EXPECT_THROW(stc::restrictToNodes(full, {full.size()}), std::out_of_range);
 }
+
+// The local law (src/options/search_law.hpp) is the tributary one where every facet has one size:
+// on the seed's uniform arc each interior node's k is the same to round-off, the two end nodes (half a
+// patch) keep half of it, as with the tributary law.
+TEST(ContactInterface, LocalSearchLawIsTheTributaryOneOnAUniformArc) {
+  stc::Scene scene = stc::test::seedScene(31, 3);
+  const stc::Problem tributary = stc::buildProblem(scene);
+  scene.solver.search_law = stc::SearchLaw::Local;
+  const stc::Problem local = stc::buildProblem(scene);
+  const Eigen::VectorXd& k = local.contact.search_direction;
+  EXPECT_NEAR((k - tributary.contact.search_direction).norm(), 0.0, 1e-12 * k.norm());
+  EXPECT_NEAR(local.contact.facet_size.maxCoeff(), local.contact.facet_size.minCoeff(),
+              1e-9 * local.contact.facet_size.maxCoeff());
+}
+
+// On a 2D boundary of two edge sizes the local law gives an interior node the same k whatever the
+// size of its edges (a plane body's local stiffness does not grow with the patch), k_i ∝ ℓ_i / h_i,
+// and keeps the tributary law's total.
+TEST(ContactInterface, LocalSearchLawFollowsTributaryOverFacetSize) {
+  stc::ContactInterface c;
+  c.dimension = 2;
+  c.nodes = {0, 1, 2, 3};
+  c.tributary = Eigen::Vector4d(0.5, 1.0, 1.5, 1.0);   // edges of length 1, 1, 2 between the nodes
+  c.facet_size = Eigen::Vector4d(1.0, 1.0, 1.5, 2.0);  // the mean length of the edges at each node
+  stc::setSearchDirection(c, 4.0, 3000.0, 1.0, stc::SearchLaw::Local);
+  const double total = 4.0 * 3000.0 * c.tributary.sum();
+  const Eigen::Vector4d ratio = c.tributary.cwiseQuotient(c.facet_size);  // 0.5, 1, 1, 0.5
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(c.search_direction[2 * i], total * ratio[i] / ratio.sum(), 1e-12 * total) << i;
+    EXPECT_EQ(c.search_direction[2 * i + 1], c.search_direction[2 * i]) << i;
+  }
+  EXPECT_NEAR(c.search_direction[2], c.search_direction[4], 1e-12 * total);  // interior nodes alike
+}

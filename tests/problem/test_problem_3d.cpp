@@ -92,3 +92,25 @@ TEST(Problem3d, CubePressedOnThePlaneSolvesTheSameByIncrementalAndLatin) {
   EXPECT_GT(normal, 0.0);
   EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-6 * a.cwiseAbs().maxCoeff());
 }
+
+// The local search law on the graded Gmsh half-ball: k_i ∝ ℓ_i / h_i with h_i the mean √area of the
+// node's triangles, the tributary law's total kept, and the spread of k across the grading narrowed
+// (k grows as h, not as h²).
+TEST(Problem3d, LocalSearchLawOnAGradedHalfBallFollowsTheFacetSize) {
+  const std::string scene_file = std::string(STC_SOURCE_DIR) + "/examples/scenes/half_ball_graded.toml";
+  const std::vector<std::string> small = {"mesh.file=../meshes/half_ball_graded_small.msh"};
+  stc::Scene scene = stc::readScene(scene_file, small);
+  const stc::Problem tributary = stc::buildProblem(scene);
+  scene.solver.search_law = stc::SearchLaw::Local;
+  const stc::Problem local = stc::buildProblem(scene);
+  const stc::ContactInterface& c = local.contact;
+  const Eigen::VectorXd k = Eigen::Map<const Eigen::MatrixXd>(c.search_direction.data(), 3, c.size()).row(0);
+  const Eigen::VectorXd k_tributary =
+      Eigen::Map<const Eigen::MatrixXd>(tributary.contact.search_direction.data(), 3, c.size()).row(0);
+  EXPECT_NEAR(k.sum(), k_tributary.sum(), 1e-12 * k.sum());
+  const Eigen::VectorXd per_size = c.tributary.cwiseQuotient(c.facet_size);
+  for (int i = 0; i < c.size(); ++i) EXPECT_NEAR(k[i] / per_size[i], k[0] / per_size[0], 1e-12 * k[0] / per_size[0]);
+  const auto spread = [](const Eigen::VectorXd& v) { return v.maxCoeff() / v.minCoeff(); };
+  EXPECT_LT(spread(k), spread(k_tributary) / 3.0);  // the grading's factor in size, not in area
+  EXPECT_GT(spread(k), 1.5);
+}
