@@ -121,6 +121,10 @@ py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
   reactions["contact_xmax"] = movedToNumpy(std::move(table.contact_xmax));
   reactions["n_contact"] = movedToNumpy(std::move(table.n_contact));
   reactions["n_slip"] = movedToNumpy(std::move(table.n_slip));
+  const char* force_names[] = {"force_x", "force_y", "force_z"};
+  for (Eigen::Index a = 0; a < table.force.rows(); ++a) {
+    reactions[force_names[a]] = movedToNumpy(Eigen::VectorXd(table.force.row(a).transpose()));
+  }
   return reactions;
 }
 

@@ -21,6 +21,7 @@ ReactionTable reactionTable(const Problem& problem, const SolveResult& result) {
   const Eigen::MatrixXd x = problem.nodePositions();
   const int d = c.dimension;
   ReactionTable table;
+  table.force = Eigen::MatrixXd::Zero(d, problem.numSteps());
   for (int k = 0; k < problem.numSteps(); ++k) {
     double normal = 0.0, tangential = 0.0, tangential_2 = 0.0;
     double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin;
@@ -29,6 +30,8 @@ ReactionTable reactionTable(const Problem& problem, const SolveResult& result) {
       normal += lambda(d * i, k);
       tangential += lambda(d * i + 1, k);
       if (d == 3) tangential_2 += lambda(d * i + 2, k);
+      table.force.col(k) += lambda(d * i, k) * c.normals.col(i);
+      for (int a = 1; a < d; ++a) table.force.col(k) += lambda(d * i + a, k) * c.tangents.col((d - 1) * i + a - 1);
       const ContactState state = states.state(i, k);
       if (state == ContactState::Open) continue;
       ++closed;
@@ -54,13 +57,15 @@ void writeReactionsCsv(std::ostream& out, const Problem& problem, const SolveRes
   out.precision(kCsvDigits);
   const bool three_d = problem.dimension == 3;
   out << "step,t,normal_force,tangential_force," << (three_d ? "tangential_force_2," : "")
-      << "contact_xmin,contact_xmax,n_contact,n_slip\n";
+      << "contact_xmin,contact_xmax,n_contact,n_slip,force_x,force_y" << (three_d ? ",force_z" : "") << '\n';
   for (std::size_t k = 0; k < table.t.size(); ++k) {
     out << k << ',' << table.t[k] << ',' << table.normal_force[k] << ',' << table.tangential_force[k] << ',';
     if (three_d) out << table.tangential_force_2[k] << ',';
     if (table.n_contact[k] > 0) out << table.contact_xmin[k] << ',' << table.contact_xmax[k];
     else out << ',';
-    out << ',' << table.n_contact[k] << ',' << table.n_slip[k] << '\n';
+    out << ',' << table.n_contact[k] << ',' << table.n_slip[k];
+    for (Eigen::Index a = 0; a < table.force.rows(); ++a) out << ',' << table.force(a, static_cast<Eigen::Index>(k));
+    out << '\n';
   }
 }
 

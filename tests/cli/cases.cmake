@@ -62,7 +62,7 @@ stc_cli_test(check_hemisphere_model 0 "model +3D, P1 tetrahedra" check ${hemisph
 stc_cli_test(check_hemisphere_interface 0 "contact nodes +737 on boundary 'contact' \\(2211 interface unknowns" check ${hemisphere})
 stc_cli_test(solve_hemisphere_small 0 "fas-apriori: converged" solve ${hemisphere} ${small3d} --out ${out}/hemisphere)
 add_test(NAME cli.solve_hemisphere_writes_3d_tables
-         COMMAND bash -c "head -1 ${out}/hemisphere/reactions.csv | grep -qx 'step,t,normal_force,tangential_force,tangential_force_2,contact_xmin,contact_xmax,n_contact,n_slip' && head -1 ${out}/hemisphere/contact.csv | grep -qx 'step,node,x,y,z,normal_force,tangential_force,tangential_force_2,pressure,shear,shear_2,gap,slip,slip_2,state' && grep -aq 'Tensors=\"stress\"' ${out}/hemisphere/vtu/step_00010.vtu && grep -aq 'NumberOfComponents=\"6\" ComponentName0=\"XX\"' ${out}/hemisphere/vtu/step_00010.vtu")
+         COMMAND bash -c "head -1 ${out}/hemisphere/reactions.csv | grep -qx 'step,t,normal_force,tangential_force,tangential_force_2,contact_xmin,contact_xmax,n_contact,n_slip,force_x,force_y,force_z' && head -1 ${out}/hemisphere/contact.csv | grep -qx 'step,node,x,y,z,normal_force,tangential_force,tangential_force_2,pressure,shear,shear_2,gap,slip,slip_2,state' && grep -aq 'Tensors=\"stress\"' ${out}/hemisphere/vtu/step_00010.vtu && grep -aq 'NumberOfComponents=\"6\" ComponentName0=\"XX\"' ${out}/hemisphere/vtu/step_00010.vtu")
 set_tests_properties(cli.solve_hemisphere_writes_3d_tables PROPERTIES DEPENDS cli.solve_hemisphere_small LABELS cli)
 # The frames read back by readers that share no code with the writer (meshio, xml.etree, VTK's own
 # when python3-vtk9 is installed): array names, types, component names, the stress tensor in VTK's

@@ -29,7 +29,7 @@ def test_reactions_equal_the_programs(solved):
     out, result = solved
     rows = read_csv(out / "reactions.csv")
     assert len(rows) == len(result.reactions["t"]) == 201
-    for column in ["t", "normal_force", "tangential_force", "contact_xmin", "contact_xmax"]:
+    for column in ["t", "normal_force", "tangential_force", "contact_xmin", "contact_xmax", "force_x", "force_y"]:
         module = ["" if math.isnan(v) else printed(v) for v in result.reactions[column]]
         assert module == [row[column] for row in rows], column
     for column in ["step", "n_contact", "n_slip"]:

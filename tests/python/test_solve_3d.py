@@ -28,6 +28,10 @@ def test_solve_has_three_rows_per_contact_node():
     np.testing.assert_array_equal(result.tangential_forces_2, result.interface_forces[2::3])
     # The scene is symmetric about y = 0 and slides along x: no resultant along tau_2 = e_y.
     assert np.abs(result.reactions["tangential_force_2"]).max() < 1e-10 * result.reactions["normal_force"].max()
+    # On the plane z = const the global resultant is (tangential, tangential_2, normal).
+    for key, column in (("force_x", "tangential_force"), ("force_y", "tangential_force_2"), ("force_z", "normal_force")):
+        np.testing.assert_allclose(result.reactions[key], result.reactions[column], rtol=0,
+                                   atol=1e-12 * result.reactions["normal_force"].max())
 
 
 def test_mesh_gives_tetrahedra():

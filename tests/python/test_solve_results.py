@@ -38,7 +38,7 @@ def test_large_arrays_are_moved_not_copied(latin):
 def test_reactions_and_history_columns(latin):
     m = 41
     assert set(latin.reactions) == {"step", "t", "normal_force", "tangential_force", "contact_xmin", "contact_xmax",
-                                    "n_contact", "n_slip"}
+                                    "n_contact", "n_slip", "force_x", "force_y"}
     assert all(column.shape == (m,) for column in latin.reactions.values())
     # The reaction is the sum of the nodal contact forces.
     np.testing.assert_allclose(latin.reactions["normal_force"], latin.normal_forces.sum(axis=0), rtol=1e-12)
