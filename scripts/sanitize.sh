@@ -9,8 +9,8 @@
 #     address_space  runs the program under `ulimit -v`, which AddressSanitizer's shadow memory
 #                    cannot start in; the Release run covers it.
 #   UndefinedBehaviorSanitizer without its null and alignment checks: they instrument every pointer
-#   access, and with them the stage took 26 min (build 16.5, tests 9.5) against about 15 (a test
-#   file compiled in 18 to 21 s against 11). A null dereference still stops the test (AddressSanitizer
+#   access, and with them the stage took 26 min (build 16.5, tests 9.5) against 19 (build 13.5,
+#   tests 6) from a clean clone (a test file compiled in 18 to 21 s against 11). A null dereference still stops the test (AddressSanitizer
 #   reports the SEGV with its stack, exit code 86); x86-64 tolerates misaligned access.
 #   Eigen's own dense kernels (-DSTC_EIGEN_USE_BLAS=OFF): OpenBLAS is not instrumented, so ASan cannot
 #   check it, and its SSE2 symmetric matrix-vector kernel (dsymv_L_PRESCOTT, chosen at run time on
@@ -22,7 +22,7 @@
 #   Not built: the Python module (-DSTC_BUILD_PYTHON=OFF): a sanitized extension cannot be loaded
 #   into an interpreter that is not; the Release run tests it.
 # Sample run:
-#   bash scripts/sanitize.sh                 # the suite, about 15 min on 2 cores (build 10, tests 5)
+#   bash scripts/sanitize.sh                 # the suite, about 19 min on 2 cores (build 13.5, tests 6)
 #   bash scripts/sanitize.sh -R 'Scene|Gmsh'  # extra arguments go to ctest
 # Options (environment):
 #   STC_ASAN_DIR   build folder (default: build-asan/ in the repository)
