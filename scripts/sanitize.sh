@@ -10,8 +10,9 @@
 #                    cannot start in; the Release run covers it.
 #   UndefinedBehaviorSanitizer without its null and alignment checks: they instrument every pointer
 #   access, and with them the stage took 26 min (build 16.5, tests 9.5) against 19 (build 13.5,
-#   tests 6) from a clean clone (a test file compiled in 18 to 21 s against 11). A null dereference still stops the test (AddressSanitizer
-#   reports the SEGV with its stack, exit code 86); x86-64 tolerates misaligned access.
+#   tests 6) from a clean clone (a test file compiled in 18 to 21 s against 11). A null dereference
+#   still stops the test (AddressSanitizer reports the SEGV with its stack, exit code 86); x86-64
+#   tolerates misaligned access.
 #   Eigen's own dense kernels (-DSTC_EIGEN_USE_BLAS=OFF): OpenBLAS is not instrumented, so ASan cannot
 #   check it, and its SSE2 symmetric matrix-vector kernel (dsymv_L_PRESCOTT, chosen at run time on
 #   some virtual machines; Debian 12 ships OpenBLAS 0.3.21) reads past the end of an operand, the

@@ -316,6 +316,12 @@ std::vector<int> otherNodes(int n, const std::vector<int>& nodes) {
   return others;
 }
 
+Eigen::VectorXd inGlobalFrame(const ContactInterface& contact, int i, const Eigen::Ref<const Eigen::VectorXd>& local) {
+  const int d = contact.dimension;
+  return local[0] * contact.normals.col(i) +
+         contact.tangents.middleCols(static_cast<Eigen::Index>(d - 1) * i, d - 1) * local.tail(d - 1);
+}
+
 void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale,
                         SearchLaw law) {
   contact.search_scale_per_length = kappa * young / length_scale;

@@ -30,8 +30,7 @@ ReactionTable reactionTable(const Problem& problem, const SolveResult& result) {
       normal += lambda(d * i, k);
       tangential += lambda(d * i + 1, k);
       if (d == 3) tangential_2 += lambda(d * i + 2, k);
-      table.force.col(k) += lambda(d * i, k) * c.normals.col(i);
-      for (int a = 1; a < d; ++a) table.force.col(k) += lambda(d * i + a, k) * c.tangents.col((d - 1) * i + a - 1);
+      table.force.col(k) += inGlobalFrame(c, i, lambda.col(k).segment(c.normalRow(i), d));
       const ContactState state = states.state(i, k);
       if (state == ContactState::Open) continue;
       ++closed;

@@ -49,8 +49,7 @@ void contactFields(const Problem& problem, const SolveResult& result, const Cont
   state = Eigen::MatrixXd::Constant(1, problem.numNodes(), -1.0);
   for (int i = 0; i < c.size(); ++i) {
     const int node = c.nodes[i];
-    const Eigen::VectorXd l = result.interface.lambda.col(k).segment(c.normalRow(i), d);
-    force.col(node) = l[0] * c.normals.col(i) + c.tangents.middleCols(static_cast<Eigen::Index>(d - 1) * i, d - 1) * l.tail(d - 1);
+    force.col(node) = inGlobalFrame(c, i, result.interface.lambda.col(k).segment(c.normalRow(i), d));
     state(0, node) = static_cast<double>(states.state(i, k));
     if (!c.isPair()) continue;
     for (Eigen::Index j = 0; j < c.master_facets.rows() && c.master_facets(j, i) >= 0; ++j) {  // action and reaction
