@@ -2,6 +2,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/problem/problem.hpp"
@@ -16,6 +17,12 @@ std::string masterMaterial(const Problem& p) {
   std::ostringstream text;
   text << "; master body E = " << p.master_material->young << ", nu = " << p.master_material->poisson;
   return text.str();
+}
+
+// The search direction's law as `check` prints it (docs/method.md §2).
+std::string_view searchLawFormula(SearchLaw law) {
+  return law == SearchLaw::Local ? "k = kappa E l_i hbar / (L h_i) (law local, hbar = sum l / sum (l / h))"
+                                 : "k = kappa E l_i / L (law tributary)";
 }
 
 }  // namespace
@@ -43,7 +50,8 @@ int runCheck(const CheckArgs& args) {
                                                  " (solved in the obstacle's frame)\n"
                                            : std::string())
             << "initial gap      min " << c.initial_gap.minCoeff() << ", max " << c.initial_gap.maxCoeff() << "\n"
-            << "search direction k = kappa E l_i / L: kappa = " << scene.solver.search_scale << ", L = "
+            << "search direction " << searchLawFormula(scene.solver.search_law) << ": kappa = " << scene.solver.search_scale
+            << ", L = "
             << p.length_scale << ", kappa E / L = " << c.search_scale_per_length << ", k in ["
             << c.search_direction.minCoeff() << ", " << c.search_direction.maxCoeff() << "]\n"
             << "solver           " << scene.solver.name() << ", tolerance " << scene.solver.tolerance() << "\n";

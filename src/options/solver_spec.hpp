@@ -19,9 +19,10 @@ struct SolverSpec {
   /// κ of the search direction k = κ E ℓ_i / L (docs/method.md §2), a property of the problem every
   /// LATIN-based strategy iterates on; 4 from docs/search_direction.md.
   double search_scale = 4.0;
-  /// How k is spread over the nodes (src/options/search_law.hpp): the tributary law, or the local one
-  /// for meshes graded along the contact boundary.
-  SearchLaw search_law = SearchLaw::Tributary;
+  /// How k is spread over the nodes (src/options/search_law.hpp): the local law, which is the
+  /// tributary one where every contact facet has one size and follows the facet size on graded meshes
+  /// (docs/search_direction.md "The local law").
+  SearchLaw search_law = SearchLaw::Local;
   latin::LatinOptions latin;
   pgd::LatinPgdOptions latin_pgd;
   fas::FasAposterioriOptions fas_aposteriori;

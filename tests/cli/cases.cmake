@@ -18,6 +18,10 @@ stc_cli_test(no_command 1 "subcommand" )
 stc_cli_test(check_seed_sizes 0 "dofs +1142 \\(1088 free, 54 prescribed\\)" check ${seed})
 stc_cli_test(check_seed_contact_nodes 0 "contact nodes +101 on boundary 'arc'" check ${seed})
 stc_cli_test(check_punch 0 "contact nodes" check ${scenes}/punch.toml)
+# check names the search law it printed k for (docs/method.md §2): the local one by default.
+stc_cli_test(check_search_law_local 0 "search direction k = kappa E l_i hbar / \\(L h_i\\) \\(law local" check ${seed})
+stc_cli_test(check_search_law_tributary 0 "search direction k = kappa E l_i / L \\(law tributary\\)" check ${seed}
+             --set solver.search_law=tributary)
 # Two bodies (examples/scenes/two_cylinders.toml): node-to-node pairs, every body's contact forces.
 stc_cli_test(check_pair 0 "contact nodes +101 on boundary 'arc', node to node with 'mirror_arc' \\(two bodies\\)"
              check ${scenes}/two_cylinders.toml)

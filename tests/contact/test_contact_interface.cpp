@@ -63,6 +63,7 @@ TEST(ContactInterface, BRestrictsAndRotatesTheNodalDisplacement) {
 TEST(ContactInterface, SearchDirectionScalesWithTributaryLength) {
   stc::Scene scene = stc::test::seedScene(31, 3);
   scene.solver.search_scale = 2.5;
+  scene.solver.search_law = stc::SearchLaw::Tributary;
   const stc::Problem p = stc::buildProblem(scene);
   for (int i = 0; i < p.contact.size(); ++i) {
     const double expected = 2.5 * 3000.0 * p.contact.tributary[i] / 1.0;  // κ E ℓ_i / L, L = radius

@@ -73,8 +73,11 @@ TEST(ContactInterface3d, BTakesTheNormalAndTangentialComponentsAndKIsTheSameOnTh
   EXPECT_DOUBLE_EQ(v[3 * i + 1], 0.3);
   EXPECT_DOUBLE_EQ(v[3 * i + 2], -0.7);
   EXPECT_DOUBLE_EQ(v.cwiseAbs().sum(), 1.2);
-  for (int r = 0; r < 3; ++r)
-    EXPECT_DOUBLE_EQ(p.contact.search_direction[3 * i + r], 4.0 * 3000.0 * p.contact.tributary[i] / 1.0);
+  // The local law (the default): k_i = κ E ℓ_i h̄ / (L h_i), h̄ = Σ ℓ / Σ (ℓ / h), L = radius.
+  const Eigen::VectorXd& l = p.contact.tributary;
+  const double h_mean = l.sum() / l.cwiseQuotient(p.contact.facet_size).sum();
+  const double expected = 4.0 * 3000.0 * l[i] * h_mean / (1.0 * p.contact.facet_size[i]);
+  for (int r = 0; r < 3; ++r) EXPECT_NEAR(p.contact.search_direction[3 * i + r], expected, 1e-13 * expected);
 }
 
 // The slab (tests/fixtures/slab_scene.hpp): u_z = 0 on its faces. A contact node there keeps its

@@ -12,15 +12,15 @@
 
 namespace {
 
-// A random interface state of the size of the problem, with forces and displacements at the
-// scales of the seed scene (gap 0.01, k ~ 100: forces ~ 1).
-stc::InterfaceHistory randomState(const stc::Problem& problem, unsigned seed) {
+// A random interface state of the size of the problem, with displacements at the scale of the seed
+// scene's gap (0.01) and forces at `force_scale` (1 on the seed: k ~ 100, so k g0 ~ 1).
+stc::InterfaceHistory randomState(const stc::Problem& problem, unsigned seed, double force_scale = 1.0) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   auto s = stc::InterfaceHistory::zeros(problem.contact, problem.numSteps());
   for (Eigen::Index j = 0; j < s.v.size(); ++j) {
     s.v(j) = 0.01 * normal(rng);
-    s.lambda(j) = normal(rng);
+    s.lambda(j) = force_scale * normal(rng);
   }
   return s;
 }
@@ -92,13 +92,18 @@ TEST_F(LocalStageTest, SlipsWhenTrialLeavesConeAndSticksInside) {
 }
 
 // In 3D the local stage projects on the Coulomb disc: the same two properties on random states of
-// the half-ball's interface (three rows per node).
+// the half-ball's interface (three rows per node). Its gaps reach 0.78 and k ~ 600, so forces at
+// scale 100 close the nodes near the pole and leave the others open.
 TEST(LocalStage3d, OutputSatisfiesTheConeLawAndFollowsTheSearchDirection) {
   const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(3, 11));
   for (unsigned seed : {1u, 2u}) {
-    const stc::InterfaceHistory s = randomState(problem, seed);
+    const stc::InterfaceHistory s = randomState(problem, seed, 100.0);
     stc::InterfaceHistory hat;
     stc::latin::localStage(problem.contact, s, hat);
+    const Eigen::Map<const Eigen::MatrixXd> normal(hat.lambda.data(), 3, hat.lambda.size() / 3);
+    const Eigen::Index closed = (normal.row(0).array() > 0.0).count();
+    EXPECT_GT(closed, 0) << "seed " << seed;
+    EXPECT_LT(closed, normal.cols()) << "seed " << seed;
     EXPECT_LE(stc::checkContactLaw(problem, hat).max(), 1e-13) << "seed " << seed;
     const Eigen::MatrixXd residual =
         (hat.lambda - s.lambda) - problem.contact.search_direction.asDiagonal() * (hat.v - s.v);
