@@ -7,6 +7,9 @@
 //                                    factor; wrong_percent = solves whose result differs from the
 //                                    serial one (Debian's serial OpenBLAS is not safe for
 //                                    concurrent calls: the supernodal rows are not 0)
+//   Solve3d/<mode>/<divisions>/<chunk>  288 right-hand sides of the half-ball's K + BᵀkB (3D) in
+//                                    chunks of <chunk>, one thread: why SpdFactor keeps a 3D factor
+//                                    supernodal and solves it on one thread (src/linalg/spd_factor.cpp)
 //   cmake --build build --target bench_cholmod_modes && build/bench/bench_cholmod_modes
 #include <benchmark/benchmark.h>
 
@@ -37,7 +40,7 @@ struct Factor {
   }
 };
 
-// X = A⁻¹ B by chunks of 16 columns with the caller's cholmod_common and buffers.
+// X = A⁻¹ B by chunks of `chunk` columns with the caller's cholmod_common and buffers.
 struct Solver {
   cholmod_common common;
   cholmod_dense *X = nullptr, *Y = nullptr, *E = nullptr;
@@ -48,10 +51,10 @@ struct Solver {
     cholmod_free_dense(&E, &common);
     cholmod_finish(&common);
   }
-  Eigen::MatrixXd solve(cholmod_factor* L, const Eigen::MatrixXd& B) {
+  Eigen::MatrixXd solve(cholmod_factor* L, const Eigen::MatrixXd& B, Eigen::Index chunk = 16) {
     Eigen::MatrixXd out(B.rows(), B.cols());
-    for (Eigen::Index c = 0; c < B.cols(); c += 16) {
-      const Eigen::Index cols = std::min<Eigen::Index>(16, B.cols() - c);
+    for (Eigen::Index c = 0; c < B.cols(); c += chunk) {
+      const Eigen::Index cols = std::min<Eigen::Index>(chunk, B.cols() - c);
       cholmod_dense b{};
       b.nrow = B.rows();
       b.ncol = cols;
@@ -71,6 +74,23 @@ Eigen::SparseMatrix<double> globalOperator(int arc_nodes) {
   const stc::Problem problem = stc::buildProblem(stc::readScene(
       STC_SOURCE_DIR "/examples/scenes/hemicylinder.toml", {"solver.search_scale=3", "mesh.arc_nodes=" + std::to_string(arc_nodes)}));
   return stc::latin::searchDirectionOperator(problem);
+}
+
+Eigen::SparseMatrix<double> halfBallOperator(int divisions) {
+  const stc::Problem problem = stc::buildProblem(
+      stc::readScene(STC_SOURCE_DIR "/examples/scenes/hemisphere.toml", {"mesh.divisions=" + std::to_string(divisions)}));
+  return stc::latin::searchDirectionOperator(problem);
+}
+
+void Solve3d(benchmark::State& state) {
+  const Eigen::SparseMatrix<double> A = halfBallOperator(static_cast<int>(state.range(1)));
+  const Factor factor(A, state.range(0) == 0);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 288);
+  Solver solver;
+  for (auto _ : state) benchmark::DoNotOptimize(solver.solve(factor.L, B, state.range(2)));
+  state.SetLabel(state.range(0) == 0 ? "supernodal" : "simplicial");
+  state.counters["n"] = static_cast<double>(A.rows());
+  state.counters["per_column"] = benchmark::Counter(288, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void Solve(benchmark::State& state) {
@@ -105,6 +125,7 @@ void ConcurrentSolve(benchmark::State& state) {
 }
 
 BENCHMARK(Solve)->ArgsProduct({{0, 1}, {101, 201, 401}})->Unit(benchmark::kMillisecond);
+BENCHMARK(Solve3d)->ArgsProduct({{0, 1}, {8, 12}, {4, 16, 32}})->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(ConcurrentSolve)->ArgsProduct({{0, 1}, {101}})->Iterations(200)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -34,17 +34,29 @@ SpdFactor::Workspace::~Workspace() = default;
 SpdFactor::Workspace::Workspace(Workspace&&) noexcept = default;
 SpdFactor::Workspace& SpdFactor::Workspace::operator=(Workspace&&) noexcept = default;
 
-// Solves are simplicial LLᵀ (the settings of Eigen's CholmodSimplicialLLT). Not supernodal: the
-// supernodal solve calls the BLAS (dtrsm, dgemm), and Debian's serial OpenBLAS 0.3.21 returns wrong
-// columns when two threads call it at once (measured: ~2% of concurrent 16-column solves; none with
-// the reference BLAS); the simplicial solve is plain C, and on these 2D meshes it is not slower
-// (thread CPU time per 201 right-hand sides, chunks of 16: 2.3–2.6 vs 2.6–2.7 ms at n = 1088,
-// 7.1–8.2 vs 9–11 ms at n = 2560, 19–22 vs 18–23 ms at n = 5700; docs/threads.md).
 // The factorisation is left to CHOLMOD's own choice (CHOLMOD_AUTO: supernodal when the flop count
-// per factor entry reaches common.supernodal_switch = 40, which the 2D meshes do not and 3D meshes
-// do): a supernodal factor is converted to a simplicial one before any solve
-// (cholmod_change_factor), and supernodal factorisations, the only BLAS calls, run one at a time.
-// Measured on the half-ball (dimension = 3, divisions 16, 52272 free dofs): 24 s simplicial.
+// per factor entry fl / lnz reaches common.supernodal_switch = 40). How the factor is solved with
+// depends on the same ratio, with a higher switch (kSupernodalSolveSwitch):
+// - below it (every 2D mesh measured: fl / lnz from 25 at 1088 dofs to 67 at 52 058) the factor is
+//   made simplicial and solved in plain C, by chunks of kChunk, on any number of threads at once,
+//   each with its own workspace;
+// - from it on (the half-ball from divisions 4: 104, 282 at divisions 6, 698 at 12) it stays
+//   supernodal and is solved with the BLAS (dtrsm, dgemm) by chunks of kSupernodalChunk. Debian's
+//   serial OpenBLAS 0.3.21 returns wrong columns when two threads call it at once (measured: ~2% of
+//   concurrent 16-column solves; none with the reference BLAS; docs/threads.md), so every supernodal
+//   factorisation and solve holds one process-wide lock: one thread solves.
+// Why: on the half-ball at divisions 12 (22 500 dofs, 8.6 M entries in L, 288 right-hand sides, one
+// thread, bench/bench_cholmod_modes.cpp Solve3d) a simplicial solve costs 6.6 ms per column by
+// chunks of 4 to 32, the supernodal one 4.2 ms by 4, 2.3 by 16, 1.9 by 32, so one thread solving
+// supernodally beats two solving simplicially; on the 2D meshes the two cost about the same per
+// column and the two threads win (docs/threads.md, "A supernodal factor in 3D").
+namespace {
+std::mutex& blasLock() {
+  static std::mutex lock;
+  return lock;
+}
+}  // namespace
+
 struct SpdFactor::Impl {
   cholmod_common common;
   cholmod_factor* L = nullptr;
@@ -72,15 +84,16 @@ SpdFactor::SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& wh
   impl_->L = cholmod_analyze(&view, &impl_->common);
   double beta[2] = {0.0, 0.0};
   if (impl_->L && impl_->L->is_super) {
-    static std::mutex blas;  // see above: one BLAS caller at a time
-    const std::lock_guard<std::mutex> lock(blas);
+    const std::lock_guard<std::mutex> lock(blasLock());  // see above: one BLAS caller at a time
     cholmod_factorize_p(&view, beta, nullptr, 0, impl_->L, &impl_->common);
   } else if (impl_->L) {
     cholmod_factorize_p(&view, beta, nullptr, 0, impl_->L, &impl_->common);
   }
   if (!impl_->L || impl_->L->minor != impl_->L->n)
     throw InputError(what + " is not positive definite (do the Dirichlet conditions fix every rigid-body motion?)");
-  if (impl_->L->is_super && !cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, impl_->L, &impl_->common))
+  const bool keep_supernodal = impl_->common.fl >= kSupernodalSolveSwitch * impl_->common.lnz;
+  if (impl_->L->is_super && !keep_supernodal &&
+      !cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, impl_->L, &impl_->common))
     throw std::runtime_error("CHOLMOD could not convert the supernodal factor of " + what + " to a simplicial one");
 }
 
@@ -93,8 +106,12 @@ Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B, Workspace& workspace)
   if (B.rows() != n) throw std::invalid_argument("SpdFactor::solve: right-hand side has the wrong number of rows");
   Workspace::Impl& w = *workspace.impl_;
   Eigen::MatrixXd X(n, B.cols());
-  for (Eigen::Index c = 0; c < B.cols(); c += kChunk) {
-    const Eigen::Index cols = std::min<Eigen::Index>(kChunk, B.cols() - c);
+  const bool supernodal = isSupernodal();
+  const Eigen::Index chunk = supernodal ? kSupernodalChunk : kChunk;
+  std::unique_lock<std::mutex> lock(blasLock(), std::defer_lock);
+  if (supernodal) lock.lock();
+  for (Eigen::Index c = 0; c < B.cols(); c += chunk) {
+    const Eigen::Index cols = std::min<Eigen::Index>(chunk, B.cols() - c);
     cholmod_dense b{};  // a view of B's columns c … c + cols − 1 (column-major, leading dimension n)
     b.nrow = n;
     b.ncol = cols;
@@ -115,7 +132,7 @@ Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B, Workspace& workspace)
 Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B) const { return solve(B, impl_->own); }
 
 Eigen::MatrixXd SpdFactor::solveOnThreads(const Eigen::MatrixXd& B) const {
-  if (threadCount() == 1 || B.cols() <= kChunk) return solve(B);
+  if (isSupernodal() || threadCount() == 1 || B.cols() <= kChunk) return solve(B);
   std::vector<Workspace> workspaces;
   return solveInParts(B, kChunk, workspaces);
 }
@@ -123,6 +140,10 @@ Eigen::MatrixXd SpdFactor::solveOnThreads(const Eigen::MatrixXd& B) const {
 Eigen::MatrixXd SpdFactor::solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const {
   if (part < 1 || part > kChunk)
     throw std::invalid_argument("SpdFactor::solveInParts: part must be in [1, " + std::to_string(kChunk) + "]");
+  if (isSupernodal()) {  // one BLAS caller at a time (above): the whole block on this thread
+    if (workspaces.empty()) workspaces.emplace_back();
+    return solve(B, workspaces.front());
+  }
   const int parts = static_cast<int>((B.cols() + part - 1) / part);
   const int threads = std::max(1, std::min(threadCount(), parts));
   while (static_cast<int>(workspaces.size()) < threads) workspaces.emplace_back();
@@ -139,6 +160,7 @@ Eigen::VectorXd SpdFactor::solve(const Eigen::VectorXd& b) const {
   return solve(Eigen::MatrixXd(b), impl_->own).col(0);
 }
 int SpdFactor::size() const { return impl_->n; }
+bool SpdFactor::isSupernodal() const { return impl_->L->is_super != 0; }
 double SpdFactor::factorNonZeros() const { return impl_->common.lnz; }
 
 }  // namespace stc

@@ -1,9 +1,11 @@
 #pragma once
-// One sparse Cholesky factorisation (CHOLMOD, simplicial LLᵀ) reused for many solves: docs/method.md §2
-// "factorize once, then one multi-right-hand-side solve per iteration".
+// One sparse Cholesky factorisation (CHOLMOD LLᵀ, simplicial or supernodal as CHOLMOD chooses)
+// reused for many solves: docs/method.md §2 "factorize once, then one multi-right-hand-side solve per
+// iteration".
 // Threads: a solve only reads the factor; what it writes lives in a Workspace (its own
 // cholmod_common and the X, Y, E buffers of cholmod_solve2, CHOLMOD user guide §"cholmod_solve2").
-// Threads that each pass their own Workspace may solve at the same time.
+// Threads that each pass their own Workspace may call solve at the same time: simplicial solves
+// then run at once, supernodal ones (which call the BLAS) one after the other (spd_factor.cpp).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -35,23 +37,28 @@ class SpdFactor {
   SpdFactor(SpdFactor&&) noexcept;
   SpdFactor& operator=(SpdFactor&&) noexcept;
 
-  /// X = A⁻¹ B for all columns of B, by chunks of kChunk columns (the chunks fix the arithmetic:
-  /// the same B gives the same X whichever workspace or thread solves it).
+  /// X = A⁻¹ B for all columns of B, by chunks of kChunk columns (kSupernodalChunk for a supernodal
+  /// factor; the chunks fix the arithmetic: the same B gives the same X whichever workspace or
+  /// thread solves it).
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B, Workspace& workspace) const;
   /// The same with the factor's own workspace: one thread at a time.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
-  /// The same chunks handed out to threadCount() threads, each with a workspace of its own: bitwise
-  /// solve(B)'s result on any thread count. For the many-column solves of one caller (the Delassus
+  /// The same chunks handed out to threadCount() threads, each with a workspace of its own (a
+  /// supernodal factor: solve(B) on this thread): bitwise solve(B)'s result on any thread count. For the many-column solves of one caller (the Delassus
   /// operator of the incremental solver); not from inside a parallelFor body (src/core/threads.hpp).
   Eigen::MatrixXd solveOnThreads(const Eigen::MatrixXd& B) const;
   /// The columns of B in parts of `part` columns (1 ≤ part ≤ kChunk, one CHOLMOD call each), handed
   /// out in order to threadCount() threads, thread t solving with workspaces[t] (added as needed, kept
   /// for the next call). A part is solved the same way on any thread, so the result does not depend
   /// on the thread count; narrow parts spread few columns over the threads (the separated stage's
-  /// new directions, about 8 at a time: pgd/response_basis.cpp). Not from inside a parallelFor body.
+  /// new directions, about 8 at a time: pgd/response_basis.cpp). A supernodal factor solves the whole
+  /// of B on this thread with workspaces[0], as solve(B, workspaces[0]), on any thread count. Not from
+  /// inside a parallelFor body.
   Eigen::MatrixXd solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   int size() const;
+  /// Whether CHOLMOD chose a supernodal factor (3D meshes), solved through the BLAS one call at a time.
+  bool isSupernodal() const;
   /// Entries of the Cholesky factor L as CHOLMOD's analysis counts them (cholmod_common::lnz:
   /// without the explicit zeros of supernodal amalgamation): its memory is about 8 bytes each.
   double factorNonZeros() const;
@@ -59,6 +66,13 @@ class SpdFactor {
   /// Right-hand sides per CHOLMOD call: bounds the workspace (n × kChunk); the simplicial solve
   /// costs the same per column from 4 to 32 at once (measured, spd_factor.cpp).
   static constexpr int kChunk = 16;
+  /// Right-hand sides per call for a supernodal factor: its BLAS level-3 solve costs 2.3 ms per
+  /// column by 16 and 1.9 by 32 on the half-ball at divisions 12 (spd_factor.cpp).
+  static constexpr int kSupernodalChunk = 32;
+  /// Flops of the factorisation per entry of L from which a supernodal factor is kept supernodal
+  /// for its solves (else made simplicial): 2D meshes measured up to 67, the 3D half-ball from 104
+  /// (spd_factor.cpp).
+  static constexpr double kSupernodalSolveSwitch = 100.0;
 
  private:
   struct Impl;

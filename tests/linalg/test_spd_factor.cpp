@@ -7,6 +7,7 @@
 #include <thread>
 #include <vector>
 
+#include "fixtures/hemisphere_scene.hpp"
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/threads.hpp"
@@ -104,4 +105,37 @@ TEST(SpdFactor, SolvesInPartsBitwiseOnAnyThreadCount) {
   EXPECT_LE((A * serial - B).norm(), 1e-10 * B.norm());
   EXPECT_THROW(factor.solveInParts(B, 0, workspaces), std::invalid_argument);
   EXPECT_THROW(factor.solveInParts(B, stc::SpdFactor::kChunk + 1, workspaces), std::invalid_argument);
+}
+
+// The half-ball's stiffness (3D, divisions 6: fl / lnz = 282 ≥ kSupernodalSolveSwitch) keeps its
+// supernodal factor and solves through the BLAS one caller at a time; the seed's (2D) is simplicial.
+// The same properties hold: round-off solutions, bitwise the same on any thread count and when two
+// threads solve at once (they take turns: Debian's serial OpenBLAS is not safe for concurrent calls).
+TEST(SpdFactor, ASupernodalFactorIn3dSolvesToRoundOffAndBitwiseOnAnyThreadCount) {
+  EXPECT_FALSE(stc::SpdFactor(problem().stiffness_free, "K_ff").isSupernodal());
+  const stc::Problem ball = stc::buildProblem(stc::test::hemisphereScene(6, 3));
+  const auto& A = ball.stiffness_free;
+  const stc::SpdFactor factor(A, "K_ff");
+  ASSERT_TRUE(factor.isSupernodal());
+  std::srand(11);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 45);  // a chunk of 32 and a rest
+  const Eigen::MatrixXd X = factor.solve(B);
+  EXPECT_LE((A * X - B).norm(), 1e-10 * B.norm());
+  for (int threads : {1, 2, 3}) {
+    const stc::ThreadCountScope scope(threads);
+    std::vector<stc::SpdFactor::Workspace> workspaces;
+    EXPECT_EQ((factor.solveOnThreads(B) - X).cwiseAbs().maxCoeff(), 0.0) << threads << " threads";
+    EXPECT_EQ((factor.solveInParts(B, 4, workspaces) - X).cwiseAbs().maxCoeff(), 0.0) << threads << " threads";
+  }
+  stc::SpdFactor::Workspace w1, w2;
+  int wrong_left = 0, wrong_right = 0;
+  std::thread a([&] {
+    for (int r = 0; r < 10; ++r) wrong_left += !(factor.solve(B, w1) == X);
+  });
+  std::thread b([&] {
+    for (int r = 0; r < 10; ++r) wrong_right += !(factor.solve(B, w2) == X);
+  });
+  a.join();
+  b.join();
+  EXPECT_EQ(wrong_left + wrong_right, 0);
 }
