@@ -44,8 +44,9 @@ class SpdFactor {
   /// The same with the factor's own workspace: one thread at a time.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
   /// The same chunks handed out to threadCount() threads, each with a workspace of its own (a
-  /// supernodal factor: solve(B) on this thread): bitwise solve(B)'s result on any thread count. For the many-column solves of one caller (the Delassus
-  /// operator of the incremental solver); not from inside a parallelFor body (src/core/threads.hpp).
+  /// supernodal factor: solve(B) on this thread): bitwise solve(B)'s result on any thread count.
+  /// For the many-column solves of one caller (the Delassus operator of the incremental solver);
+  /// not from inside a parallelFor body (src/core/threads.hpp).
   Eigen::MatrixXd solveOnThreads(const Eigen::MatrixXd& B) const;
   /// The columns of B in parts of `part` columns (1 ≤ part ≤ kChunk, one CHOLMOD call each), handed
   /// out in order to threadCount() threads, thread t solving with workspaces[t] (added as needed, kept
@@ -57,7 +58,8 @@ class SpdFactor {
   Eigen::MatrixXd solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   int size() const;
-  /// Whether CHOLMOD chose a supernodal factor (3D meshes), solved through the BLAS one call at a time.
+  /// Whether the factor is kept supernodal (fl / lnz ≥ kSupernodalSolveSwitch: the 3D meshes), solved
+  /// through the BLAS by one thread at a time.
   bool isSupernodal() const;
   /// Entries of the Cholesky factor L as CHOLMOD's analysis counts them (cholmod_common::lnz:
   /// without the explicit zeros of supernodal amalgamation): its memory is about 8 bytes each.
