@@ -56,7 +56,7 @@ double ControlledGlobalStage::enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scal
     const int room = std::min(options_.block, basis_.maxSize() - basis_.size());
     const Eigen::MatrixXd found = leadingDirections(r_scaled, error, target, room, options_, passes_++);
     const int before = basis_.size();
-    if (found.cols() == 0 || basis_.append(sqrt_k.asDiagonal() * found) == 0) break;
+    if (found.cols() == 0 || basis_.appendDirections(sqrt_k.asDiagonal() * found) == 0) break;
     // New directions are k⁻¹-orthogonal to the old ones: their coordinates come from r alone.
     const int added = basis_.size() - before;
     const auto scaled_new = basis_.scaledDirections().rightCols(added);
@@ -66,6 +66,7 @@ double ControlledGlobalStage::enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scal
     r_scaled.noalias() -= scaled_new * c_new;
     error = r_scaled.norm();
   }
+  basis_.solvePending();
   return error;
 }
 

@@ -99,21 +99,32 @@ Eigen::MatrixXd ResponseBasis::solveColumns(const Eigen::MatrixXd& rhs) {
   return factor_.solveInParts(rhs, kPart, workspaces_);
 }
 
-int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {
-  // Work with scaled directions ẑ = k^{-1/2} z, orthonormal in the Euclidean product.
+int ResponseBasis::appendDirections(const Eigen::MatrixXd& candidates, double drop) {
   const Eigen::MatrixXd scaled = orthonormalised(candidates, drop);
   const Eigen::Index added = scaled.cols();
   if (added == 0) return 0;
-  const Eigen::MatrixXd kept = sqrt_k_.asDiagonal() * scaled;
-  const auto& B = problem_.contact.B;
-  const Eigen::MatrixXd X = solveColumns(B.transpose() * kept);
-  sparse_solves_ += added;
-  Z_.append(kept);
+  Z_.append(sqrt_k_.asDiagonal() * scaled);
   Zs_.append(scaled);
-  X_.append(X);
-  T_.append(B * X);
-  extendEnergyFactor(added);
+  pending_ += added;
   return static_cast<int>(added);
+}
+
+void ResponseBasis::solvePending() {
+  if (pending_ == 0) return;
+  const Eigen::Index added = pending_;
+  const Eigen::MatrixXd kept = Z_.view().rightCols(added);
+  const Eigen::MatrixXd X = solveColumns(problem_.contact.B.transpose() * kept);
+  sparse_solves_ += added;
+  X_.append(X);
+  T_.append(problem_.contact.B * X);
+  pending_ = 0;
+  extendEnergyFactor(added);
+}
+
+int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {
+  const int added = appendDirections(candidates, drop);
+  solvePending();
+  return added;
 }
 
 }  // namespace stc::pgd

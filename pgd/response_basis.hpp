@@ -48,6 +48,14 @@ class ResponseBasis {
   /// than `drop` of their norm, and solves for their responses (one multi-right-hand-side solve).
   /// Returns the number appended.
   int append(const Eigen::MatrixXd& candidates, double drop = 1e-8);
+  /// append's directions without their responses, which stay pending until solvePending(): the
+  /// enrichment passes of one separated stage append a few directions each and solve them in one
+  /// block, since a supernodal (3D) solve costs less per column the more columns it takes at once
+  /// (src/linalg/spd_factor.cpp). Until then responses(), traces() and energyFactor() lack them.
+  int appendDirections(const Eigen::MatrixXd& candidates, double drop = 1e-8);
+  /// Solves the pending directions' responses in one multi-right-hand-side solve, stores them and
+  /// their traces, and extends the energy factor.
+  void solvePending();
   /// The same basis on another time grid of the same problem (`grid`: stc::onInstants of it, or the
   /// problem itself again): the load histories G and the free response V_F G are taken on its
   /// instants, everything else (directions, responses, energy factor) is spatial and kept. Throws
@@ -72,6 +80,7 @@ class ResponseBasis {
   EnergyFactor energy_;
   std::vector<SpdFactor::Workspace> workspaces_;
   long sparse_solves_ = 0;
+  Eigen::Index pending_ = 0;
 };
 
 }  // namespace stc::pgd

@@ -13,6 +13,7 @@
 #include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/indicator.hpp"
 #include "stcontact/latin/local_stage.hpp"
+#include "stcontact/linalg/spd_factor.hpp"
 #include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/problem/time_subgrid.hpp"
 
@@ -72,6 +73,34 @@ TEST(ResponseBasis, StaysOrthonormalWhenCandidatesLieMostlyInItsSpan) {
   const Eigen::MatrixXd& all = stage.basis().directions();
   const Eigen::MatrixXd gram = all.transpose() * f.problem.contact.search_direction.cwiseInverse().asDiagonal() * all;
   EXPECT_LE((gram - Eigen::MatrixXd::Identity(all.cols(), all.cols())).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// Directions appended over several passes and solved in one block (what the stage's enrichment
+// does) are those of append pass by pass, with the same responses to round-off; until solved they
+// have no responses, traces or energy columns.
+TEST(ResponseBasis, DirectionsSolvedInOneBlockAreThoseSolvedPassByPass) {
+  const auto& f = fixture();
+  const stc::SpdFactor factor(stc::latin::searchDirectionOperator(f.problem), "K + B^T k B");
+  stc::pgd::ResponseBasis by_pass(f.problem, factor), in_block(f.problem, factor);
+  std::srand(7);
+  const Eigen::MatrixXd first = Eigen::MatrixXd::Random(f.problem.contact.rows(), 5);
+  const Eigen::MatrixXd second = Eigen::MatrixXd::Random(f.problem.contact.rows(), 6);
+  ASSERT_EQ(by_pass.append(first), 5);
+  ASSERT_EQ(by_pass.append(second), 6);
+  ASSERT_EQ(in_block.appendDirections(first), 5);
+  ASSERT_EQ(in_block.appendDirections(second), 6);
+  EXPECT_EQ(in_block.size(), 11);
+  EXPECT_EQ(in_block.responses().cols(), 0);
+  EXPECT_EQ(in_block.traces().cols(), 0);
+  const long loads = in_block.sparseSolves();
+  in_block.solvePending();
+  EXPECT_EQ(in_block.sparseSolves(), loads + 11);
+  EXPECT_EQ(in_block.sparseSolves(), by_pass.sparseSolves());
+  EXPECT_TRUE(Eigen::MatrixXd(in_block.directions()) == Eigen::MatrixXd(by_pass.directions()));
+  const Eigen::MatrixXd X = by_pass.responses();
+  EXPECT_LE((Eigen::MatrixXd(in_block.responses()) - X).norm(), 1e-12 * X.norm());
+  EXPECT_EQ(in_block.energyFactor().size(), by_pass.energyFactor().size());
+  EXPECT_EQ(in_block.energyFactor().rank(), by_pass.energyFactor().rank());
 }
 
 TEST(ControlledGlobalStage, DepartsFromTheExactStageByItsProjectionError) {
