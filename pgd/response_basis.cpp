@@ -112,8 +112,7 @@ int ResponseBasis::appendDirections(const Eigen::MatrixXd& candidates, double dr
 void ResponseBasis::solvePending() {
   if (pending_ == 0) return;
   const Eigen::Index added = pending_;
-  const Eigen::MatrixXd kept = Z_.view().rightCols(added);
-  const Eigen::MatrixXd X = solveColumns(problem_.contact.B.transpose() * kept);
+  const Eigen::MatrixXd X = solveColumns(problem_.contact.B.transpose() * Z_.view().rightCols(added));
   sparse_solves_ += added;
   X_.append(X);
   T_.append(problem_.contact.B * X);

@@ -316,7 +316,7 @@ std::vector<int> otherNodes(int n, const std::vector<int>& nodes) {
   return others;
 }
 
-Eigen::VectorXd inGlobalFrame(const ContactInterface& contact, int i, const Eigen::Ref<const Eigen::VectorXd>& local) {
+GlobalVector inGlobalFrame(const ContactInterface& contact, int i, const Eigen::Ref<const Eigen::VectorXd>& local) {
   const int d = contact.dimension;
   return local[0] * contact.normals.col(i) +
          contact.tangents.middleCols(static_cast<Eigen::Index>(d - 1) * i, d - 1) * local.tail(d - 1);

@@ -102,8 +102,11 @@ std::vector<int> rowsOfNodes(int d, const std::vector<int>& nodes);
 /// The nodes 0 … n − 1 not in `nodes`, increasing.
 std::vector<int> otherNodes(int n, const std::vector<int>& nodes);
 
+/// A vector of the global frame: d ≤ 3 entries on the stack (one per node and instant in the writers).
+using GlobalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+
 /// Node i's vector of components (normal, τ_1[, τ_2]) in the global frame: l_0 n_i + Σ_a l_a τ_{i,a}.
-Eigen::VectorXd inGlobalFrame(const ContactInterface& contact, int i, const Eigen::Ref<const Eigen::VectorXd>& local);
+GlobalVector inGlobalFrame(const ContactInterface& contact, int i, const Eigen::Ref<const Eigen::VectorXd>& local);
 
 /// Sets k_i = κ E ℓ_i / L (tributary law) or κ E ℓ_i h̄ / (L h_i) (local law,
 /// src/options/search_law.hpp) on every row of every node.

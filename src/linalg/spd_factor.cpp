@@ -51,9 +51,10 @@ SpdFactor::Workspace& SpdFactor::Workspace::operator=(Workspace&&) noexcept = de
 // supernodally beats two solving simplicially; on the 2D meshes the two cost about the same per
 // column and the two threads win (docs/threads.md, "A supernodal factor in 3D").
 namespace {
-std::mutex& blasLock() {
-  static std::mutex lock;
-  return lock;
+// The process-wide turn of a supernodal factor's BLAS calls (above); a simplicial one takes none.
+std::unique_lock<std::mutex> blasTurn(bool supernodal) {
+  static std::mutex blas;
+  return supernodal ? std::unique_lock<std::mutex>(blas) : std::unique_lock<std::mutex>();
 }
 }  // namespace
 
@@ -83,10 +84,8 @@ SpdFactor::SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& wh
   cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
   impl_->L = cholmod_analyze(&view, &impl_->common);
   double beta[2] = {0.0, 0.0};
-  if (impl_->L && impl_->L->is_super) {
-    const std::lock_guard<std::mutex> lock(blasLock());  // see above: one BLAS caller at a time
-    cholmod_factorize_p(&view, beta, nullptr, 0, impl_->L, &impl_->common);
-  } else if (impl_->L) {
+  if (impl_->L) {
+    const auto turn = blasTurn(impl_->L->is_super != 0);
     cholmod_factorize_p(&view, beta, nullptr, 0, impl_->L, &impl_->common);
   }
   if (!impl_->L || impl_->L->minor != impl_->L->n)
@@ -108,8 +107,7 @@ Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B, Workspace& workspace)
   Eigen::MatrixXd X(n, B.cols());
   const bool supernodal = isSupernodal();
   const Eigen::Index chunk = supernodal ? kSupernodalChunk : kChunk;
-  std::unique_lock<std::mutex> lock(blasLock(), std::defer_lock);
-  if (supernodal) lock.lock();
+  const auto turn = blasTurn(supernodal);
   for (Eigen::Index c = 0; c < B.cols(); c += chunk) {
     const Eigen::Index cols = std::min<Eigen::Index>(chunk, B.cols() - c);
     cholmod_dense b{};  // a view of B's columns c … c + cols − 1 (column-major, leading dimension n)
@@ -140,7 +138,7 @@ Eigen::MatrixXd SpdFactor::solveOnThreads(const Eigen::MatrixXd& B) const {
 Eigen::MatrixXd SpdFactor::solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const {
   if (part < 1 || part > kChunk)
     throw std::invalid_argument("SpdFactor::solveInParts: part must be in [1, " + std::to_string(kChunk) + "]");
-  if (isSupernodal()) {  // one BLAS caller at a time (above): the whole block on this thread
+  if (isSupernodal()) {  // one BLAS caller at a time (blasTurn): the whole block on this thread
     if (workspaces.empty()) workspaces.emplace_back();
     return solve(B, workspaces.front());
   }
