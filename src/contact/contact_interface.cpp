@@ -307,6 +307,17 @@ std::vector<int> rowsOfNodes(int d, const std::vector<int>& nodes) {
   return rows;
 }
 
+std::vector<int> dofsReadBy(const Eigen::SparseMatrix<double>& B) {
+  std::vector<char> read(static_cast<size_t>(B.cols()), 0);
+  for (Eigen::Index k = 0; k < B.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(B, k); it; ++it)
+      if (it.value() != 0.0) read[static_cast<size_t>(it.col())] = 1;
+  std::vector<int> dofs;
+  for (Eigen::Index j = 0; j < B.cols(); ++j)
+    if (read[static_cast<size_t>(j)]) dofs.push_back(static_cast<int>(j));
+  return dofs;
+}
+
 std::vector<int> otherNodes(int n, const std::vector<int>& nodes) {
   std::vector<char> in(static_cast<size_t>(n), 0);
   for (int i : nodes) in[static_cast<size_t>(i)] = 1;

@@ -102,6 +102,9 @@ std::vector<int> rowsOfNodes(int d, const std::vector<int>& nodes);
 /// The nodes 0 … n − 1 not in `nodes`, increasing.
 std::vector<int> otherNodes(int n, const std::vector<int>& nodes);
 
+/// The free dofs that B (rows × n_free) reads: its nonzero columns, increasing.
+std::vector<int> dofsReadBy(const Eigen::SparseMatrix<double>& B);
+
 /// A vector of the global frame: d ≤ 3 entries on the stack (one per node and instant in the writers).
 using GlobalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
 

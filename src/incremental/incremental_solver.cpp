@@ -239,28 +239,31 @@ std::string nodesText(std::size_t count, int n) {
   return std::to_string(count) + " of " + std::to_string(n) + " contact nodes";
 }
 
-// The plane law on the nodes within reach of the prescribed motion (reach_zone.hpp), lifted to every
-// node; on every node when there is no such zone, or when a node left out penetrates.
-SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
-                       Clock::time_point start, const SpdFactor& factor) {
-  const std::optional<std::vector<int>> zone = options.zone_within_reach ? reachZone(problem) : std::nullopt;
-  if (!zone) return solvePlaneOnEveryNode(problem, options, callback, start, factor);
-  ZoneCondensation c = ZoneCondensation::build(problem, factor, *zone);
-  Problem part = problem;
-  part.contact = restrictToNodes(problem.contact, c.zone);
-  SolveResult result = solvePlaneOn(part, c.on_zone, options, callback, start);
-  result.interface = c.lift(problem.contact, result.interface, result.summary.iterations);
+// `on_zone`, the solve of the zone's problem, lifted to every node (the lift's solves and time
+// counted in its last record) when no node left out penetrates; else `on_every_node()`, its record
+// counting the zone's solves too.
+template <class OnEveryNode>
+SolveResult liftedOrWhole(const Problem& problem, const SpdFactor& factor, const ZoneCondensation& c,
+                          SolveResult on_zone, Clock::time_point start, OnEveryNode&& on_every_node) {
+  SolveSummary& summary = on_zone.summary;
+  int lift_solves = 0;
+  on_zone.interface = c.lift(problem, factor, on_zone.interface, summary.iterations, lift_solves);
+  summary.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  if (!summary.history.empty()) {
+    summary.history.back().sparse_solves += lift_solves;
+    summary.history.back().wall_s = summary.wall_s;
+  }
   const int n = problem.contact.size();
   const std::string zone_text = nodesText(c.zone.size(), n);
-  const std::vector<int> wrong = penetratingNodes(problem.contact, result.interface, c.far, kFarPenetration);
+  const std::vector<int> wrong = penetratingNodes(problem.contact, on_zone.interface, c.far, kFarPenetration);
   if (wrong.empty()) {
-    result.summary.addStage({SolveStage::Kind::ContactZone,
-                             "solved on " + zone_text + " (the zone within reach of the prescribed motion)", 0, 0,
-                             0.0, static_cast<int>(c.zone.size()), 1});
-    return result;
+    summary.addStage({SolveStage::Kind::ContactZone,
+                      "solved on " + zone_text + " (the zone within reach of the prescribed motion)", 0, 0, 0.0,
+                      static_cast<int>(c.zone.size()), 1});
+    return on_zone;
   }
-  const int spent = result.summary.sparseSolves();
-  SolveResult whole = solvePlaneOnEveryNode(problem, options, callback, start, factor);
+  const int spent = summary.sparseSolves();
+  SolveResult whole = on_every_node();
   for (IterationRecord& record : whole.summary.history) record.sparse_solves += spent;
   whole.summary.addStage({SolveStage::Kind::ContactZone,
                           "solved on every node: " + std::to_string(wrong.size()) +
@@ -270,23 +273,43 @@ SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options
   return whole;
 }
 
-// The cone law of cone_newton.hpp with the Delassus columns computed on demand.
-SolveResult solveCone(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
-                      Clock::time_point start, const SpdFactor& factor) {
-  const Eigen::MatrixXd v0 = freeInterfaceResponse(problem, factor);
-  LazyDelassus delassus(problem, factor);
+// The plane law on the nodes within reach of the prescribed motion (reach_zone.hpp), lifted to every
+// node; on every node when there is no such zone, or when a node left out penetrates.
+SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
+                       Clock::time_point start, const SpdFactor& factor, const std::optional<std::vector<int>>& zone) {
+  if (!zone) return solvePlaneOnEveryNode(problem, options, callback, start, factor);
+  ZoneCondensation c = ZoneCondensation::build(problem, factor, *zone);
+  Problem part = problem;
+  part.contact = restrictToNodes(problem.contact, c.zone);
+  SolveResult on_zone = solvePlaneOn(part, c.on_zone, options, callback, start);
+  return liftedOrWhole(problem, factor, c, std::move(on_zone), start,
+                       [&] { return solvePlaneOnEveryNode(problem, options, callback, start, factor); });
+}
+
+// The cone law on `problem`'s nodes with `delassus`, from the free response v0; the columns and
+// scaling of `prepared`'s nodes are learnt before the march (ConeLaw::prepare).
+SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
+                          Clock::time_point start, const Eigen::MatrixXd& v0, LazyDelassus& delassus,
+                          int load_solves, const std::vector<int>& prepared) {
   ConeLaw law(problem, delassus);
-  // The columns of the nodes within reach of the prescribed translation, in blocks on every thread,
-  // before the march (reach_zone.hpp): most of those the march would ask for a few at a time.
-  if (options.zone_within_reach)
-    if (const std::optional<std::vector<int>> zone = reachZone(problem)) law.prepare(*zone);
+  law.prepare(prepared);
   const auto solve_at = [&](int k, const Eigen::VectorXd& lambda, const Eigen::VectorXd& v_previous) {
     law.setInstant(v0.col(k), v_previous);
     return solveInstantByNewton(law, lambda, options.tolerance, options.max_newton_iterations);
   };
-  const int load_solves = static_cast<int>(problem.loads.size());
-  SolveResult result =
-      march(problem, callback, start, solve_at, [&] { return load_solves + delassus.sparseSolves(); });
+  return march(problem, callback, start, solve_at, [&] { return load_solves + delassus.sparseSolves(); });
+}
+
+// The cone law of cone_newton.hpp on every node, with the Delassus columns computed on demand; those
+// of `zone`'s nodes first, in blocks on every thread (most of those the march would ask for a few at
+// a time).
+SolveResult solveConeOnEveryNode(const Problem& problem, const IncrementalOptions& options,
+                                 const IterationCallback& callback, Clock::time_point start, const SpdFactor& factor,
+                                 const std::optional<std::vector<int>>& zone) {
+  const Eigen::MatrixXd v0 = freeInterfaceResponse(problem, factor);
+  LazyDelassus delassus(problem, factor);
+  SolveResult result = solveConeWith(problem, options, callback, start, v0, delassus,
+                                     static_cast<int>(problem.loads.size()), zone.value_or(std::vector<int>()));
   std::ostringstream note;
   note << "Delassus columns of " << delassus.nodesComputed() << " of " << problem.contact.size()
        << " contact nodes (" << delassus.bytes() / 1e6 << " MB)";
@@ -295,15 +318,42 @@ SolveResult solveCone(const Problem& problem, const IncrementalOptions& options,
   return result;
 }
 
+// The cone law on the zone, with its Delassus operator from the factor's trailing block (no solve),
+// lifted to every node; on every node, lazily, when the factor does not condense the zone or a node
+// left out penetrates.
+SolveResult solveCone(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
+                      Clock::time_point start, const SpdFactor& factor, const std::optional<std::vector<int>>& zone) {
+  const auto on_every_node = [&] { return solveConeOnEveryNode(problem, options, callback, start, factor, zone); };
+  if (!zone || !factor.condenses(restrictToNodes(problem.contact, *zone).B)) return on_every_node();
+  ZoneCondensation c = ZoneCondensation::build(problem, factor, *zone);
+  Problem part = problem;
+  part.contact = restrictToNodes(problem.contact, c.zone);
+  LazyDelassus delassus(part, std::move(c.on_zone.delassus));
+  std::vector<int> every(c.zone.size());
+  for (std::size_t i = 0; i < every.size(); ++i) every[i] = static_cast<int>(i);
+  SolveResult on_zone = solveConeWith(part, options, callback, start, c.on_zone.free_response, delassus,
+                                      c.on_zone.sparse_solves, every);
+  std::ostringstream note;
+  note << "Delassus operator of the " << c.zone.size() << " zone nodes from the factorisation ("
+       << delassus.bytes() / 1e6 << " MB)";
+  on_zone.summary.remarks.push_back(note.str());
+  on_zone.summary.composeMessage();
+  return liftedOrWhole(problem, factor, c, std::move(on_zone), start, on_every_node);
+}
+
 }  // namespace
 
 SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& options, const SolveInputs& inputs) {
   const IterationCallback& callback = inputs.callback;
   options.validate();
   const auto start = Clock::now();
-  const SpdFactor factor(problem.stiffness_free, "the free-dof stiffness K_ff");
-  if (problem.contact.dimension == 3 || options.cone_law) return solveCone(problem, options, callback, start, factor);
-  return solvePlane(problem, options, callback, start, factor);
+  // The zone's dofs ordered last: its Delassus operator from the factorisation (reach_zone.hpp).
+  const std::optional<std::vector<int>> zone = options.zone_within_reach ? reachZone(problem) : std::nullopt;
+  const std::vector<int> zone_dofs = zone ? dofsReadBy(restrictToNodes(problem.contact, *zone).B) : std::vector<int>();
+  const SpdFactor factor(problem.stiffness_free, "the free-dof stiffness K_ff", zone_dofs);
+  if (problem.contact.dimension == 3 || options.cone_law)
+    return solveCone(problem, options, callback, start, factor, zone);
+  return solvePlane(problem, options, callback, start, factor, zone);
 }
 
 }  // namespace stc

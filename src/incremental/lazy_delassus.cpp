@@ -1,17 +1,35 @@
 #include "stcontact/incremental/lazy_delassus.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+
+#include "stcontact/incremental/condensed_interface.hpp"
 
 namespace stc {
 
 LazyDelassus::LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free, double chunk_bytes)
     : B_(problem.contact.B),
       Bt_(problem.contact.B.transpose()),
-      factor_(stiffness_free),
+      factor_(&stiffness_free),
       d_(problem.contact.dimension),
       chunk_bytes_(chunk_bytes),
       held_rows_(problem.contact.held_rows),
       slot_(problem.contact.size(), -1) {}
+
+LazyDelassus::LazyDelassus(const Problem& problem, Eigen::MatrixXd W)
+    : B_(problem.contact.B),
+      factor_(nullptr),
+      d_(problem.contact.dimension),
+      chunk_bytes_(kChunkBytes),
+      held_rows_(problem.contact.held_rows),
+      slot_(problem.contact.size()),
+      columns_(std::move(W)),
+      count_(problem.contact.size()) {
+  if (columns_.rows() != B_.rows() || columns_.cols() != B_.rows())
+    throw std::invalid_argument("LazyDelassus: W must be d n_C × d n_C");
+  for (int j = 0; j < count_; ++j) slot_[static_cast<std::size_t>(j)] = j;
+  giveHeldRowsCompliance(problem.contact, columns_);
+}
 
 void LazyDelassus::ensure(const std::vector<int>& nodes) {
   std::vector<int> missing;
@@ -45,7 +63,8 @@ void LazyDelassus::solveColumns(const std::vector<int>& nodes) {
   Eigen::MatrixXd rhs(Bt_.rows(), d_ * static_cast<Eigen::Index>(nodes.size()));
   for (std::size_t p = 0; p < nodes.size(); ++p)
     for (int a = 0; a < d_; ++a) rhs.col(static_cast<Eigen::Index>(p) * d_ + a) = Bt_.col(d_ * nodes[p] + a);
-  const Eigen::MatrixXd w = B_ * factor_.solveOnThreads(rhs);
+  const Eigen::MatrixXd w = B_ * factor_->solveOnThreads(rhs);
+  solves_ += static_cast<int>(rhs.cols());
   for (std::size_t p = 0; p < nodes.size(); ++p) {
     slot_[nodes[p]] = count_;
     columns_.middleCols(static_cast<Eigen::Index>(count_) * d_, d_) = w.middleCols(static_cast<Eigen::Index>(p) * d_, d_);

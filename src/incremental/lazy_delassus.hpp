@@ -22,6 +22,10 @@ class LazyDelassus {
   static constexpr double kChunkBytes = 128.0 * 1024 * 1024;
 
   LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free, double chunk_bytes = kChunkBytes);
+  /// Every node's columns given: W (d n_C × d n_C) of `problem`'s interface, e.g. from the trailing
+  /// block of the factor (SpdFactor::condensed); held rows get their compliance here. ensure() then
+  /// never solves.
+  LazyDelassus(const Problem& problem, Eigen::MatrixXd W);
 
   /// Computes the columns of the nodes of `nodes` that do not have them yet (one multi-right-hand-
   /// side solve per chunk of them, chunkNodes()); a held row gets the compliance of
@@ -33,7 +37,7 @@ class LazyDelassus {
   /// W(r, d node + a).
   double entry(int r, int node, int a) const { return columns_(r, static_cast<Eigen::Index>(slot_[node]) * d_ + a); }
   int nodesComputed() const { return count_; }
-  int sparseSolves() const { return count_ * d_; }
+  int sparseSolves() const { return solves_; }  ///< none for columns given whole
   /// Bytes held by the columns.
   double bytes() const { return 8.0 * static_cast<double>(columns_.rows()) * d_ * count_; }
 
@@ -44,13 +48,14 @@ class LazyDelassus {
 
   const Eigen::SparseMatrix<double>& B_;
   const Eigen::SparseMatrix<double> Bt_;  // Bᵀ, its columns the right-hand sides of a node
-  const SpdFactor& factor_;
+  const SpdFactor* factor_;  // null when every column was given
   int d_;
   double chunk_bytes_;
   std::vector<int> held_rows_;  // ContactInterface::held_rows, given a compliance when their node's columns come
   std::vector<int> slot_;    // per contact node: its block among the columns, −1 if not computed
   Eigen::MatrixXd columns_;  // d n_C × d capacity
   int count_ = 0;
+  int solves_ = 0;
 };
 
 /// v_0 = B K⁻¹ f(t_k) for every instant (d n_C × m), one sparse solve per load term.

@@ -33,6 +33,13 @@ class SpdFactor {
   /// Factorises A (symmetric positive definite, lower triangle used). Throws InputError naming
   /// `what` if A is not positive definite (e.g. Dirichlet conditions that leave a rigid motion free).
   SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& what);
+  /// The same factor with the dofs `trailing` (distinct) ordered after every other, in the order
+  /// given, the rest in CHOLMOD's fill-reducing order, when |trailing| · lnz ≥ `min_work` (the
+  /// |trailing| solves that condensed() saves would cost about that many flops / 4); else the plain
+  /// factor. The trailing block of L is then the Cholesky factor of the Schur complement of A on
+  /// those dofs (linalg/cholmod_trailing.hpp), kept dense, and condensed() uses it.
+  SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& what, const std::vector<int>& trailing,
+            double min_work = kTrailingWork);
   ~SpdFactor();
   SpdFactor(SpdFactor&&) noexcept;
   SpdFactor& operator=(SpdFactor&&) noexcept;
@@ -57,6 +64,13 @@ class SpdFactor {
   /// inside a parallelFor body.
   Eigen::MatrixXd solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// Whether every nonzero column of C (r × n) is a trailing dof of this factor, so that condensed(C)
+  /// needs no solve.
+  bool condenses(const Eigen::SparseMatrix<double>& C) const;
+  /// C A⁻¹ Cᵀ (r × r, symmetric) for a C that condenses(): with (A⁻¹)_JJ = (L_JJ L_JJᵀ)⁻¹ on the
+  /// trailing dofs J, C A⁻¹ Cᵀ = Yᵀ Y, Y = L_JJ⁻¹ C_Jᵀ (a dense triangular solve on |J| rows). Throws
+  /// std::invalid_argument for another C.
+  Eigen::MatrixXd condensed(const Eigen::SparseMatrix<double>& C) const;
   int size() const;
   /// Whether the factor is kept supernodal (fl / lnz ≥ kSupernodalSolveSwitch: the 3D meshes), solved
   /// through the BLAS by one thread at a time.
@@ -75,10 +89,17 @@ class SpdFactor {
   /// for its solves (else made simplicial): 2D meshes measured up to 67, the 3D half-ball from 104
   /// (spd_factor.cpp).
   static constexpr double kSupernodalSolveSwitch = 100.0;
+  /// |trailing| · lnz from which the trailing dofs are ordered last: the incremental solver's zone
+  /// measured faster so from 4.3e8 on (the hemisphere, 1601 arc nodes, the graded half-ball), level
+  /// at 1.8e8 (801 arc nodes), slower at 3.8e7 (401 arc nodes × 2001 instants) (spd_factor.cpp).
+  static constexpr double kTrailingWork = 3e8;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  void factorise(const Eigen::SparseMatrix<double>& A, const std::string& what, const std::vector<int>& trailing,
+                 double min_work);
+  void keepTrailing(const std::vector<int>& trailing);
 };
 
 }  // namespace stc

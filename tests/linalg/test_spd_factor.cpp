@@ -139,3 +139,60 @@ TEST(SpdFactor, ASupernodalFactorIn3dSolvesToRoundOffAndBitwiseOnAnyThreadCount)
   b.join();
   EXPECT_EQ(wrong_left + wrong_right, 0);
 }
+
+namespace {
+
+// C A⁻¹ Cᵀ by solves, as the Delassus operator was formed before the trailing block.
+Eigen::MatrixXd bySolves(const stc::SpdFactor& factor, const Eigen::SparseMatrix<double>& C) {
+  return C * factor.solve(Eigen::MatrixXd(C.transpose()));
+}
+
+// The zone's B and its free dofs, for the seed (2D) and the half-ball (3D).
+struct ZoneRows {
+  Eigen::SparseMatrix<double> B;
+  std::vector<int> dofs;
+};
+ZoneRows zoneRows(const stc::Problem& p, const std::vector<int>& zone) {
+  ZoneRows z{stc::restrictToNodes(p.contact, zone).B, {}};
+  z.dofs = stc::dofsReadBy(z.B);
+  return z;
+}
+
+}  // namespace
+
+// The trailing block of L is the Cholesky factor of the Schur complement on the trailing dofs, so
+// condensed(C) = C A⁻¹ Cᵀ without a solve: the operator the solves give, to round-off, symmetric
+// bitwise; the factor still solves A to round-off; a C reading other dofs is refused.
+TEST(SpdFactor, TheTrailingBlockGivesTheCondensedOperatorOfTheSolves) {
+  const stc::Problem seed = stc::buildProblem(stc::test::seedScene(101, 11));
+  const stc::Problem ball = stc::buildProblem(stc::test::hemisphereScene(6, 11));
+  for (const stc::Problem* p : {&seed, &ball}) {
+    std::vector<int> zone;
+    for (int i = 0; i < p->contact.size(); i += 3) zone.push_back(i);
+    const ZoneRows z = zoneRows(*p, zone);
+    const stc::SpdFactor plain(p->stiffness_free, "K_ff");
+    const stc::SpdFactor last(p->stiffness_free, "K_ff", z.dofs, 0.0);
+    ASSERT_TRUE(last.condenses(z.B));
+    EXPECT_FALSE(plain.condenses(z.B));
+    EXPECT_FALSE(last.condenses(p->contact.B));  // the nodes left out read other dofs
+    const Eigen::MatrixXd W = last.condensed(z.B), reference = bySolves(plain, z.B);
+    EXPECT_LE((W - reference).norm(), 1e-12 * reference.norm());
+    EXPECT_TRUE(W == W.transpose());
+    EXPECT_THROW(last.condensed(p->contact.B), std::invalid_argument);
+    EXPECT_THROW(plain.condensed(z.B), std::invalid_argument);
+    const Eigen::MatrixXd rhs = Eigen::MatrixXd::Ones(p->stiffness_free.rows(), 3);
+    EXPECT_LE((p->stiffness_free * last.solve(rhs) - rhs).norm(), 1e-10 * rhs.norm());
+  }
+}
+
+// Below the work bound the dofs are not moved: the plain factor, nothing condensed. Forced, on this
+// small mesh CHOLMOD factorises simplicially: the block read from that form is the solves' too.
+TEST(SpdFactor, AFewTrailingDofsOnASmallFactorKeepThePlainOrdering) {
+  const ZoneRows z = zoneRows(problem(), {0, 1, 2});
+  EXPECT_FALSE(stc::SpdFactor(problem().stiffness_free, "K_ff", z.dofs).condenses(z.B));
+  const stc::SpdFactor forced(problem().stiffness_free, "K_ff", z.dofs, 0.0);
+  ASSERT_TRUE(forced.condenses(z.B));
+  const Eigen::MatrixXd reference = bySolves(forced, z.B);
+  EXPECT_LE((forced.condensed(z.B) - reference).norm(), 1e-12 * reference.norm());
+  EXPECT_THROW(stc::SpdFactor(problem().stiffness_free, "K_ff", {0, 0}, 0.0), std::invalid_argument);
+}
