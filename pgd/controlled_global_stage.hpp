@@ -22,8 +22,9 @@ namespace stc::pgd {
 
 class ControlledGlobalStage : public latin::LinearStage {
  public:
-  /// Factorises A = K_ff + Bᵀ k B (k = problem.contact.search_direction) and computes the load
-  /// responses.
+  /// Factorises A = K_ff + Bᵀ k B (k = problem.contact.search_direction), the interface's dofs
+  /// ordered last where that pays (SpdFactor: then no solve per direction, response_basis.hpp), and
+  /// computes the load responses.
   ControlledGlobalStage(const Problem& problem, ControlledStageOptions options);
 
   void solve(const InterfaceHistory& hat, InterfaceHistory& s) override;

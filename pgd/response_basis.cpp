@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "stcontact/linalg/low_rank_solve.hpp"
 #include "stcontact/pgd/separated_loads.hpp"
 
 namespace stc::pgd {
@@ -16,8 +17,9 @@ ResponseBasis::ResponseBasis(const Problem& problem, const SpdFactor& factor)
       factor_(factor),
       Z_(problem.contact.rows()),
       Zs_(problem.contact.rows()),
-      X_(problem.numFreeDofs()),
-      T_(problem.contact.rows()) {
+      T_(problem.contact.rows()),
+      X_(problem.numFreeDofs()) {
+  if (factor.condenses(problem.contact.B)) condensed_ = factor.condensed(problem.contact.B);
   const Eigen::VectorXd& k = problem.contact.search_direction;
   sqrt_k_ = k.cwiseSqrt();
   inv_sqrt_k_ = sqrt_k_.cwiseInverse();
@@ -92,7 +94,7 @@ void ResponseBasis::extendEnergyFactor(Eigen::Index added) {
   }
 }
 
-Eigen::MatrixXd ResponseBasis::solveColumns(const Eigen::MatrixXd& rhs) {
+Eigen::MatrixXd ResponseBasis::solveColumns(const Eigen::MatrixXd& rhs) const {
   // Parts of a fixed width, whatever the thread count: CHOLMOD's solve runs kernels of 1 to 4
   // columns whose rounding differs, so a column must land in the same group on any thread count.
   constexpr int kPart = 4;
@@ -112,12 +114,35 @@ int ResponseBasis::appendDirections(const Eigen::MatrixXd& candidates, double dr
 void ResponseBasis::solvePending() {
   if (pending_ == 0) return;
   const Eigen::Index added = pending_;
-  const Eigen::MatrixXd X = solveColumns(problem_.contact.B.transpose() * Z_.view().rightCols(added));
-  sparse_solves_ += added;
-  X_.append(X);
-  T_.append(problem_.contact.B * X);
+  if (condensesInterface()) {
+    T_.append(condensed_ * Z_.view().rightCols(added));  // T = B A⁻¹ Bᵀ Z = D Z
+  } else {
+    const Eigen::MatrixXd X = solveColumns(problem_.contact.B.transpose() * Z_.view().rightCols(added));
+    sparse_solves_ += added;
+    X_.append(X);
+    T_.append(problem_.contact.B * X);
+  }
   pending_ = 0;
   extendEnergyFactor(added);
+}
+
+ResponseBasis::View ResponseBasis::responses() const {
+  const Eigen::Index solved = X_.cols(), known = Z_.cols() - pending_;
+  if (solved < known) {
+    X_.append(solveColumns(problem_.contact.B.transpose() * Z_.view().middleCols(solved, known - solved)));
+    sparse_solves_ += known - solved;
+  }
+  return X_.view();
+}
+
+Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& c) const {
+  Eigen::MatrixXd v = (B_rows * UF_) * G_;
+  if (c.rows() == 0) return v;
+  if (X_.cols() >= c.rows())
+    v.noalias() += (B_rows * X_.view().leftCols(c.rows())) * c;
+  else
+    v += linalg::solveThroughRank(factor_, B_rows, problem_.contact.B, Z_.view().leftCols(c.rows()) * c, sparse_solves_);
+  return v;
 }
 
 int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {

@@ -10,6 +10,11 @@
 //   U_Fᵀ A U_F = U_Fᵀ F,   U_Fᵀ A X = U_Fᵀ Bᵀ Z = V_Fᵀ Z,   Xᵀ A X = Xᵀ Bᵀ Z = Tᵀ Z.
 // Nothing here is n_free × m: memory O((q + p) n_free + (q + p + m) n_C). Columns are appended to
 // storage with spare capacity (pgd/column_store.hpp): the accessors are views.
+// When the factor ordered the interface's dofs last (SpdFactor::condenses B), the operator
+// D = B A⁻¹ Bᵀ comes from its trailing block with no solve, and a new direction's trace is T = D Z:
+// the iteration then makes no sparse solve, and the responses X are solved only when asked for
+// (responses(): the spatial modes of a verification), the displacements of other rows through the
+// rank of the history instead (displacementOn).
 #include <Eigen/Core>
 #include <vector>
 
@@ -30,7 +35,8 @@ class ResponseBasis {
   int maxSize() const { return static_cast<int>(Z_.rows()); }    ///< d n_C: Z then spans every w
   View directions() const { return Z_.view(); }                  ///< Z, d n_C × p
   View scaledDirections() const { return Zs_.view(); }           ///< k^{-1/2} Z: orthonormal columns
-  View responses() const { return X_.view(); }                   ///< X = A⁻¹ Bᵀ Z, n_free × p
+  /// X = A⁻¹ Bᵀ Z, n_free × p (solved now for the directions whose responses were not).
+  View responses() const;
   View traces() const { return T_.view(); }                      ///< T = B X, d n_C × p
   const Eigen::MatrixXd& loadResponses() const { return UF_; }   ///< U_F = A⁻¹ F, n_free × q
   const Eigen::MatrixXd& loadTraces() const { return VF_; }      ///< V_F = B U_F, d n_C × q
@@ -63,6 +69,12 @@ class ResponseBasis {
   void retime(const Problem& grid);
   /// Right-hand sides solved so far (loads included).
   long sparseSolves() const { return sparse_solves_; }
+  /// Whether the traces come from D = B A⁻¹ Bᵀ of the factor's trailing block (no solve per direction).
+  bool condensesInterface() const { return condensed_.size() > 0; }
+  /// B_rows (U_F G + X c), the displacements on other rows (e.g. of contact nodes left out) of the
+  /// history with coordinates c (p' × m, p' ≤ p): with X when every response is known, else
+  /// B_rows U_F G + B_rows A⁻¹ Bᵀ (Z c) with rank(Z c) solves (linalg/low_rank_solve.hpp).
+  Eigen::MatrixXd displacementOn(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& c) const;
 
  private:
   /// k^{-1/2}-scaled candidates made orthonormal to Zs and each other; dependent ones dropped.
@@ -70,16 +82,18 @@ class ResponseBasis {
   void extendEnergyFactor(Eigen::Index added);  ///< the energy factor's columns for the new directions
   /// A⁻¹ rhs, its columns solved in parts of 4 spread over threadCount() threads (the parts do not
   /// depend on the thread count, so neither does the result).
-  Eigen::MatrixXd solveColumns(const Eigen::MatrixXd& rhs);
+  Eigen::MatrixXd solveColumns(const Eigen::MatrixXd& rhs) const;
 
   const Problem& problem_;
   const SpdFactor& factor_;
   Eigen::VectorXd sqrt_k_, inv_sqrt_k_;
-  ColumnStore Z_, Zs_, X_, T_;
+  Eigen::MatrixXd condensed_;  ///< D = B A⁻¹ Bᵀ from the factor's trailing block, or empty
+  ColumnStore Z_, Zs_, T_;
+  mutable ColumnStore X_;      ///< behind Z_ when D gives the traces: solved by responses()
   Eigen::MatrixXd UF_, VF_, G_, v0_;
   EnergyFactor energy_;
-  std::vector<SpdFactor::Workspace> workspaces_;
-  long sparse_solves_ = 0;
+  mutable std::vector<SpdFactor::Workspace> workspaces_;
+  mutable long sparse_solves_ = 0;
   Eigen::Index pending_ = 0;
 };
 

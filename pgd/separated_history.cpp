@@ -85,13 +85,6 @@ Eigen::MatrixXd modeTraces(const ResponseBasis& basis, const Eigen::MatrixXd& co
   return BY;
 }
 
-Eigen::MatrixXd displacementTraces(const ResponseBasis& basis, const Eigen::MatrixXd& c,
-                                   const Eigen::SparseMatrix<double>& B_rows) {
-  Eigen::MatrixXd v = (B_rows * basis.loadResponses()) * basis.loadHistories();
-  if (c.rows() > 0) v.noalias() += (B_rows * basis.responses().leftCols(c.rows())) * c;
-  return v;
-}
-
 Eigen::MatrixXd energyModes(const ResponseBasis& basis, const Eigen::MatrixXd& c) {
   const int all = static_cast<int>(basis.loadResponses().cols()) + basis.size();
   return spatialModes(basis, energySvd(basis, c, all).combination);

@@ -42,11 +42,6 @@ Eigen::MatrixXd spatialModes(const ResponseBasis& basis, const Eigen::MatrixXd& 
 /// Their traces B Y = [V_F T] · combination (d n_C × r).
 Eigen::MatrixXd modeTraces(const ResponseBasis& basis, const Eigen::MatrixXd& combination);
 
-/// B_rows u for the history with coordinates `c` (p × m, p ≤ basis.size()): B_rows (U_F G + X c), for
-/// rows of B that are not the basis's own interface (rows × n_free), e.g. nodes left out of it.
-Eigen::MatrixXd displacementTraces(const ResponseBasis& basis, const Eigen::MatrixXd& c,
-                                   const Eigen::SparseMatrix<double>& B_rows);
-
 /// Every mode of the energy SVD of the history (n_free × r): SolveResult::spatial_modes.
 Eigen::MatrixXd energyModes(const ResponseBasis& basis, const Eigen::MatrixXd& c);
 

@@ -1,10 +1,9 @@
 #include "stcontact/incremental/reach_zone.hpp"
 
 #include <algorithm>
-#include <limits>
 
 #include "stcontact/incremental/lazy_delassus.hpp"
-#include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/low_rank_solve.hpp"
 #include "stcontact/problem/prescribed_reach.hpp"
 
 namespace stc {
@@ -43,25 +42,15 @@ ZoneCondensation ZoneCondensation::build(const Problem& problem, const SpdFactor
 
 namespace {
 
-// W_FZ λ_Z = B_F K⁻¹ B_Zᵀ λ_Z (λ_Z: d |Z| × solved) with as many solves as λ_Z has rank: with its
-// SVD λ_Z = U Σ Vᵀ, kept to its numerical rank r (σ_i > max(d |Z|, solved) ε σ_1, what round-off
-// cannot tell from zero), W_FZ λ_Z = (B_F K⁻¹ B_Zᵀ U_r) Σ_r V_rᵀ: r ≤ min(d |Z|, solved) solves (134
-// for the 201 instants of 801 arc nodes, 82 for the 2001 of 401 × 2001).
+// W_FZ λ_Z = B_F K⁻¹ B_Zᵀ λ_Z (λ_Z: d |Z| × solved) with rank(λ_Z) solves (linalg/low_rank_solve.hpp).
 Eigen::MatrixXd farResponse(const Problem& problem, const SpdFactor& stiffness_free, const ZoneCondensation& c,
                             const Eigen::MatrixXd& lambda_zone, int& sparse_solves) {
-  const Eigen::SparseMatrix<double> B_zone = restrictToNodes(problem.contact, c.zone).B;
-  const Eigen::SparseMatrix<double> B_far = restrictToNodes(problem.contact, c.far).B;
-  const linalg::Svd svd = linalg::singularValueDecomposition(lambda_zone, linalg::SvdMethod::divide_and_conquer,
-                                                             linalg::kThinU | linalg::kThinV);
-  const double floor = static_cast<double>(std::max(lambda_zone.rows(), lambda_zone.cols())) *
-                       std::numeric_limits<double>::epsilon() * (svd.values.size() > 0 ? svd.values[0] : 0.0);
-  Eigen::Index rank = 0;
-  while (rank < svd.values.size() && svd.values[rank] > floor) ++rank;
-  sparse_solves += static_cast<int>(rank);
-  if (rank == 0) return Eigen::MatrixXd::Zero(B_far.rows(), lambda_zone.cols());
-  const Eigen::MatrixXd forces = B_zone.transpose() * svd.U.leftCols(rank);
-  const Eigen::MatrixXd far = B_far * stiffness_free.solveOnThreads(forces);
-  return far * (svd.values.head(rank).asDiagonal() * svd.V.leftCols(rank).transpose());
+  long solves = 0;
+  const Eigen::MatrixXd far =
+      linalg::solveThroughRank(stiffness_free, restrictToNodes(problem.contact, c.far).B,
+                               restrictToNodes(problem.contact, c.zone).B, lambda_zone, solves);
+  sparse_solves += static_cast<int>(solves);
+  return far;
 }
 
 }  // namespace

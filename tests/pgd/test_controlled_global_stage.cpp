@@ -103,6 +103,38 @@ TEST(ResponseBasis, DirectionsSolvedInOneBlockAreThoseSolvedPassByPass) {
   EXPECT_EQ(in_block.energyFactor().rank(), by_pass.energyFactor().rank());
 }
 
+// With the interface's dofs ordered last, the factor's trailing block gives D = B A⁻¹ Bᵀ and the
+// traces T = D Z with no solve: the same traces and energy factor as the solves' to round-off; the
+// responses are solved when asked for, and the displacements of other rows through the rank of the
+// history (at most its m instants), both as the solved basis gives them.
+TEST(ResponseBasis, TracesFromTheFactorsTrailingBlockAreThoseOfTheSolves) {
+  const auto& f = fixture();
+  const Eigen::SparseMatrix<double> A = stc::latin::searchDirectionOperator(f.problem);
+  const stc::SpdFactor plain(A, "K + B^T k B"), last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
+  stc::pgd::ResponseBasis solved(f.problem, plain), condensed(f.problem, last);
+  EXPECT_FALSE(solved.condensesInterface());
+  ASSERT_TRUE(condensed.condensesInterface());
+  const long loads = condensed.sparseSolves();
+  std::srand(11);
+  const Eigen::MatrixXd candidates = Eigen::MatrixXd::Random(f.problem.contact.rows(), 11);
+  ASSERT_EQ(solved.append(candidates), 11);
+  ASSERT_EQ(condensed.append(candidates), 11);
+  EXPECT_EQ(condensed.sparseSolves(), loads);
+  EXPECT_EQ(solved.sparseSolves(), loads + 11);
+  const Eigen::MatrixXd T = solved.traces();
+  EXPECT_LE((Eigen::MatrixXd(condensed.traces()) - T).norm(), 1e-12 * T.norm());
+  EXPECT_EQ(condensed.energyFactor().rank(), solved.energyFactor().rank());
+  // Other rows: the first nodes' B rows; a history of rank 3 over the 41 instants.
+  const Eigen::SparseMatrix<double> B_rows = stc::restrictToNodes(f.problem.contact, {0, 1, 2, 3}).B;
+  const Eigen::MatrixXd c = Eigen::MatrixXd::Random(11, 3) * Eigen::MatrixXd::Random(3, f.problem.numSteps());
+  const Eigen::MatrixXd v = solved.displacementOn(B_rows, c);
+  EXPECT_LE((condensed.displacementOn(B_rows, c) - v).norm(), 1e-10 * v.norm());
+  EXPECT_EQ(condensed.sparseSolves(), loads + 3);
+  const Eigen::MatrixXd X = solved.responses();
+  EXPECT_LE((Eigen::MatrixXd(condensed.responses()) - X).norm(), 1e-12 * X.norm());
+  EXPECT_EQ(condensed.sparseSolves(), loads + 3 + 11);
+}
+
 TEST(ControlledGlobalStage, DepartsFromTheExactStageByItsProjectionError) {
   const auto& f = fixture();
   stc::latin::GlobalStage exact(f.problem);

@@ -40,7 +40,7 @@ std::vector<int> unloadedNodes(const stc::ContactInterface& contact, const Eigen
 
 // The lifted result must be an equilibrated iterate of the whole problem: v = B u with
 // K_ff u = f + Bᵀ λ at every instant, on the zone's rows and on the rows left out alike (these come
-// from the separated displacement history, pgd::displacementTraces).
+// from the separated displacement history, pgd::ResponseBasis::displacementOn).
 double equilibriumMismatch(const stc::Problem& problem, const stc::SpdFactor& K, const stc::InterfaceHistory& s) {
   const auto& B = problem.contact.B;
   double worst = 0.0;

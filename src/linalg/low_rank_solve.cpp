@@ -1,0 +1,24 @@
+#include "stcontact/linalg/low_rank_solve.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "stcontact/linalg/dense_decompositions.hpp"
+
+namespace stc::linalg {
+
+Eigen::MatrixXd solveThroughRank(const SpdFactor& factor, const Eigen::SparseMatrix<double>& C,
+                                 const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& M, long& solves) {
+  if (M.size() == 0) return Eigen::MatrixXd::Zero(C.rows(), M.cols());
+  const Svd svd = singularValueDecomposition(M, SvdMethod::divide_and_conquer, kThinU | kThinV);
+  const double floor = static_cast<double>(std::max(M.rows(), M.cols())) * std::numeric_limits<double>::epsilon() *
+                       svd.values[0];
+  Eigen::Index rank = 0;
+  while (rank < svd.values.size() && svd.values[rank] > floor) ++rank;
+  solves += rank;
+  if (rank == 0) return Eigen::MatrixXd::Zero(C.rows(), M.cols());
+  const Eigen::MatrixXd responses = factor.solveOnThreads(R.transpose() * svd.U.leftCols(rank));
+  return (C * responses) * (svd.values.head(rank).asDiagonal() * svd.V.leftCols(rank).transpose());
+}
+
+}  // namespace stc::linalg
