@@ -107,8 +107,10 @@ void SpdFactor::factorise(const Eigen::SparseMatrix<double>& A, const std::strin
   f.n = static_cast<int>(A.rows());
   cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
   f.L = cholmod_analyze(&view, &f.common);
-  const int count = static_cast<int>(trailing.size());
-  const bool ordered_last = f.L && count > 0 && static_cast<double>(count) * f.common.lnz >= min_work;
+  const double count = static_cast<double>(trailing.size());
+  const bool ordered_last = f.L && count > 0 && count * f.common.lnz >= min_work &&
+                            count * count * count / 3.0 <= kTrailingFlopShare * f.common.fl &&
+                            8.0 * count * count <= kTrailingBytes;
   if (ordered_last) {
     std::vector<int> order = linalg::orderingWithTrailing(*f.L, trailing);
     cholmod_free_factor(&f.L, &f.common);

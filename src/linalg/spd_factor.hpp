@@ -33,11 +33,13 @@ class SpdFactor {
   /// Factorises A (symmetric positive definite, lower triangle used). Throws InputError naming
   /// `what` if A is not positive definite (e.g. Dirichlet conditions that leave a rigid motion free).
   SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& what);
-  /// The same factor with the dofs `trailing` (distinct) ordered after every other, in the order
-  /// given, the rest in CHOLMOD's fill-reducing order, when |trailing| · lnz ≥ `min_work` (the
-  /// |trailing| solves that condensed() saves would cost about that many flops / 4); else the plain
-  /// factor. The trailing block of L is then the Cholesky factor of the Schur complement of A on
-  /// those dofs (linalg/cholmod_trailing.hpp), kept dense, and condensed() uses it.
+  /// The same factor with the dofs J = `trailing` (distinct) ordered after every other, in the
+  /// order given, the rest in CHOLMOD's fill-reducing order, when that pays: |J| · lnz ≥ `min_work`
+  /// (the |J| solves that condensed() saves cost about 4 |J| lnz flops), the dense trailing block
+  /// costs at most kTrailingFlopShare times the plain factorisation (|J|³ / 3 ≤ share · fl) and
+  /// holds at most kTrailingBytes; else the plain factor. The trailing block of L is the Cholesky
+  /// factor of the Schur complement of A on J (linalg/cholmod_trailing.hpp), kept dense, and
+  /// condensed() uses it.
   SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& what, const std::vector<int>& trailing,
             double min_work = kTrailingWork);
   ~SpdFactor();
@@ -93,6 +95,11 @@ class SpdFactor {
   /// measured faster so from 4.3e8 on (the hemisphere, 1601 arc nodes, the graded half-ball), level
   /// at 1.8e8 (801 arc nodes), slower at 3.8e7 (401 arc nodes × 2001 instants) (spd_factor.cpp).
   static constexpr double kTrailingWork = 3e8;
+  /// Bounds on the dense trailing block: its flops against the plain factorisation's (1601 arc
+  /// nodes' zone: 4.8 times, and faster; their whole interface: 205 times), and its memory (the
+  /// half-ball's whole interface at divisions 12, 5043 dofs, would hold 203 MB).
+  static constexpr double kTrailingFlopShare = 10.0;
+  static constexpr double kTrailingBytes = 128.0 * 1024 * 1024;
 
  private:
   struct Impl;
