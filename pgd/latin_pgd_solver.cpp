@@ -12,7 +12,11 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
   SolveResult result = latin::solveLatinWith(problem, stage, options.latin, inputs, "latin-pgd");
   result.interface_directions = stage.basis().directions();
+  // The spatial modes need the responses, which a condensed interface has not solved yet
+  // (response_basis.hpp): the last record counts those solves.
+  const long before = stage.sparseSolves();
   if (inputs.spatial_modes) result.spatial_modes = energyModes(stage.basis(), stage.coordinates());
+  if (!result.summary.history.empty()) result.summary.history.back().sparse_solves += stage.sparseSolves() - before;
   return result;
 }
 

@@ -134,8 +134,10 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
   SolveResult result = solveFasNestedInTime(problem, stage, options, inputs, coarse_basis);
   result.interface_directions = stage.basis().directions();
-  if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
+  // What follows the iteration may solve: the responses of the spatial modes, the far nodes' lift
+  // (response_basis.hpp); the last record counts those solves.
   const long before = stage.sparseSolves();
+  if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
   far_v = stage.basis().displacementOn(B_far, stage.coordinates());
   if (!result.summary.history.empty()) result.summary.history.back().sparse_solves += stage.sparseSolves() - before;
   return result;
