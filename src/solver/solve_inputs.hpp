@@ -31,7 +31,8 @@ struct SolveInputs {
   const Eigen::MatrixXd* converged_lambda = nullptr;
   /// Whether `fas-apriori` and `latin-pgd` return SolveResult::spatial_modes. Rebuilding them is a
   /// product of the n_free × p responses with every mode, after the last iteration (at 1601 contact
-  /// nodes, 0.15 s of a 1.07 s solve): programs that do not read them turn this off.
+  /// nodes, 0.15 s of a 1.07 s solve), and, where the traces came from the factor's trailing block,
+  /// the p responses' solves (pgd/response_basis.hpp): programs that do not read them turn this off.
   bool spatial_modes = true;
 };
 
