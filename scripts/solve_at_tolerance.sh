@@ -55,7 +55,9 @@ for s in "${solvers[@]}"; do
     printf '| %s | %s | · | · | (the reference) | %.3g |\n' "$s" "$(field "$summary" termination)" "$median"
     continue
   fi
-  printf '| %s | %s | %s | %.2g | %.2g | %.3g |\n' "$s" "$(field "$summary" termination)" \
-    "$(field "$summary" relaxations)" "$(field "$summary" error_estimate)" \
-    "$(field "$summary" error)" "$median"
+  # A scene too large for the command line's reference has no true error: say so, never print 0.
+  error=$(field "$summary" error)
+  [[ -n $error ]] && error=$(printf '%.2g' "$error") || error="not measured"
+  printf '| %s | %s | %s | %.2g | %s | %.3g |\n' "$s" "$(field "$summary" termination)" \
+    "$(field "$summary" relaxations)" "$(field "$summary" error_estimate)" "$error" "$median"
 done
