@@ -17,7 +17,8 @@ Eigen::MatrixXd solveThroughRank(const SpdFactor& factor, const Eigen::SparseMat
   while (rank < svd.values.size() && svd.values[rank] > floor) ++rank;
   solves += rank;
   if (rank == 0) return Eigen::MatrixXd::Zero(C.rows(), M.cols());
-  const Eigen::MatrixXd responses = factor.solveOnThreads(R.transpose() * svd.U.leftCols(rank));
+  const Eigen::MatrixXd responses = factor.condenses(R) ? factor.solveFromTrailing(R, svd.U.leftCols(rank))
+                                                        : factor.solveOnThreads(R.transpose() * svd.U.leftCols(rank));
   return (C * responses) * (svd.values.head(rank).asDiagonal() * svd.V.leftCols(rank).transpose());
 }
 

@@ -2,7 +2,8 @@
 // C A⁻¹ Rᵀ M (C: r × n and R: k × n sparse, M: k × m dense) with as many solves as M has rank:
 // with the SVD M = U Σ Vᵀ kept to its numerical rank ρ (σ_i > max(k, m) ε σ_1, what round-off
 // cannot tell from zero),
-//   C A⁻¹ Rᵀ M = (C A⁻¹ Rᵀ U_ρ) Σ_ρ V_ρᵀ,   ρ ≤ min(k, m) solves.
+//   C A⁻¹ Rᵀ M = (C A⁻¹ Rᵀ U_ρ) Σ_ρ V_ρᵀ,   ρ ≤ min(k, m) solves,
+// half-solves when R reads the factor's trailing dofs alone (SpdFactor::solveFromTrailing).
 // What lifts a solution known on the contact zone to the nodes left out (the far nodes'
 // displacements from the zone's force history, src/incremental/reach_zone.hpp and
 // pgd/response_basis.hpp) when the zone's operator came from the factor's trailing block with no

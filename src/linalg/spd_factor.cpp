@@ -223,6 +223,44 @@ Eigen::MatrixXd SpdFactor::condensed(const Eigen::SparseMatrix<double>& C) const
   return W.selfadjointView<Eigen::Lower>();
 }
 
+Eigen::MatrixXd SpdFactor::solveFromTrailing(const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& U) const {
+  if (!condenses(R) || U.rows() != R.rows())
+    throw std::invalid_argument("SpdFactor::solveFromTrailing: R must read trailing dofs only, U have its rows");
+  const Impl& f = *impl_;
+  const Eigen::Index n = f.n, count = f.trailing_factor.rows();
+  Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(count, U.cols());  // (P Rᵀ U) on the trailing block, then L_JJ⁻¹ of it
+  for (Eigen::Index k = 0; k < R.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(R, k); it; ++it)
+      if (it.value() != 0.0) Y.row(f.trailing_position[static_cast<std::size_t>(it.col())]) += it.value() * U.row(it.row());
+  f.trailing_factor.triangularView<Eigen::Lower>().solveInPlace(Y);
+  Workspace::Impl& w = *f.own.impl_;
+  const auto* perm = static_cast<const int*>(f.L->Perm);
+  Eigen::MatrixXd X(n, U.cols());
+  const bool supernodal = isSupernodal();
+  const Eigen::Index chunk = supernodal ? kSupernodalChunk : kChunk;
+  const auto turn = blasTurn(supernodal);
+  for (Eigen::Index c = 0; c < U.cols(); c += chunk) {
+    const Eigen::Index cols = std::min<Eigen::Index>(chunk, U.cols() - c);
+    Eigen::MatrixXd y = Eigen::MatrixXd::Zero(n, cols);  // L⁻¹ P Rᵀ U: zero above the trailing block
+    y.bottomRows(count) = Y.middleCols(c, cols);
+    cholmod_dense b{};
+    b.nrow = n;
+    b.ncol = cols;
+    b.nzmax = n * cols;
+    b.d = n;
+    b.x = y.data();
+    b.xtype = CHOLMOD_REAL;
+    b.dtype = CHOLMOD_DOUBLE;
+    if (!cholmod_solve2(CHOLMOD_Lt, f.L, &b, nullptr, &w.X, nullptr, &w.Y, &w.E, &w.common))
+      throw std::runtime_error("CHOLMOD solve failed (status " + std::to_string(w.common.status) + ")");
+    const auto* x = static_cast<const double*>(w.X->x);
+    const Eigen::Index ld = static_cast<Eigen::Index>(w.X->d);
+    for (Eigen::Index j = 0; j < cols; ++j)
+      for (Eigen::Index k = 0; k < n; ++k) X(perm[k], c + j) = x[j * ld + k];  // x = Pᵀ (Lᵀ)⁻¹ y
+  }
+  return X;
+}
+
 int SpdFactor::size() const { return impl_->n; }
 bool SpdFactor::isSupernodal() const { return impl_->L->is_super != 0; }
 double SpdFactor::factorNonZeros() const { return impl_->common.lnz; }

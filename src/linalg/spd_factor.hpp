@@ -73,6 +73,11 @@ class SpdFactor {
   /// trailing dofs J, C A⁻¹ Cᵀ = Yᵀ Y, Y = L_JJ⁻¹ C_Jᵀ (a dense triangular solve on |J| rows). Throws
   /// std::invalid_argument for another C.
   Eigen::MatrixXd condensed(const Eigen::SparseMatrix<double>& C) const;
+  /// A⁻¹ Rᵀ U for an R that condenses() (r × n, U: r × k): with P A Pᵀ = L Lᵀ and Rᵀ U nonzero on
+  /// the trailing dofs alone, the forward solve is L_JJ⁻¹ on the trailing block (dense), and only the
+  /// backward solve with Lᵀ is sparse: about half a solve per column. On this thread, by chunks as
+  /// solve(B). Throws std::invalid_argument for another R.
+  Eigen::MatrixXd solveFromTrailing(const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& U) const;
   int size() const;
   /// Whether the factor is kept supernodal (fl / lnz ≥ kSupernodalSolveSwitch: the 3D meshes), solved
   /// through the BLAS by one thread at a time.

@@ -162,7 +162,8 @@ ZoneRows zoneRows(const stc::Problem& p, const std::vector<int>& zone) {
 
 // The trailing block of L is the Cholesky factor of the Schur complement on the trailing dofs, so
 // condensed(C) = C A⁻¹ Cᵀ without a solve: the operator the solves give, to round-off, symmetric
-// bitwise; the factor still solves A to round-off; a C reading other dofs is refused.
+// bitwise; the factor still solves A to round-off, and forces on the trailing dofs by a backward
+// solve alone; a C reading other dofs is refused.
 TEST(SpdFactor, TheTrailingBlockGivesTheCondensedOperatorOfTheSolves) {
   const stc::Problem seed = stc::buildProblem(stc::test::seedScene(101, 11));
   const stc::Problem ball = stc::buildProblem(stc::test::hemisphereScene(6, 11));
@@ -182,6 +183,13 @@ TEST(SpdFactor, TheTrailingBlockGivesTheCondensedOperatorOfTheSolves) {
     EXPECT_THROW(plain.condensed(z.B), std::invalid_argument);
     const Eigen::MatrixXd rhs = Eigen::MatrixXd::Ones(p->stiffness_free.rows(), 3);
     EXPECT_LE((p->stiffness_free * last.solve(rhs) - rhs).norm(), 1e-10 * rhs.norm());
+    // Forces on the trailing dofs: the forward solve on the dense block, the backward one sparse.
+    std::srand(3);
+    const Eigen::MatrixXd U = Eigen::MatrixXd::Random(z.B.rows(), 40);  // two supernodal chunks and more
+    const Eigen::MatrixXd X = plain.solve(Eigen::MatrixXd(z.B.transpose() * U));
+    EXPECT_LE((last.solveFromTrailing(z.B, U) - X).norm(), 1e-11 * X.norm());
+    EXPECT_THROW(last.solveFromTrailing(p->contact.B, Eigen::MatrixXd::Ones(p->contact.B.rows(), 1)),
+                 std::invalid_argument);
   }
 }
 
