@@ -52,10 +52,32 @@ SpdFactor::Workspace& SpdFactor::Workspace::operator=(Workspace&&) noexcept = de
 // supernodally beats two solving simplicially; on the 2D meshes the two cost about the same per
 // column and the two threads win (docs/threads.md, "A supernodal factor in 3D").
 namespace {
+// A CHOLMOD view of `cols` column-major columns of `rows` entries at `x` (leading dimension `rows`).
+cholmod_dense denseView(const double* x, Eigen::Index rows, Eigen::Index cols) {
+  cholmod_dense b{};
+  b.nrow = static_cast<std::size_t>(rows);
+  b.ncol = static_cast<std::size_t>(cols);
+  b.nzmax = b.nrow * b.ncol;
+  b.d = b.nrow;
+  b.x = const_cast<double*>(x);
+  b.xtype = CHOLMOD_REAL;
+  b.dtype = CHOLMOD_DOUBLE;
+  return b;
+}
+
 // The process-wide turn of a supernodal factor's BLAS calls (above); a simplicial one takes none.
 std::unique_lock<std::mutex> blasTurn(bool supernodal) {
   static std::mutex blas;
   return supernodal ? std::unique_lock<std::mutex>(blas) : std::unique_lock<std::mutex>();
+}
+
+// body(c, cols) for the chunks of `columns` columns a solve takes per CHOLMOD call (kSupernodalChunk
+// for a supernodal factor, which holds its BLAS turn throughout; kChunk else).
+template <class Body>
+void inChunks(bool supernodal, Eigen::Index columns, Body&& body) {
+  const Eigen::Index chunk = supernodal ? SpdFactor::kSupernodalChunk : SpdFactor::kChunk;
+  const auto turn = blasTurn(supernodal);
+  for (Eigen::Index c = 0; c < columns; c += chunk) body(c, std::min<Eigen::Index>(chunk, columns - c));
 }
 }  // namespace
 
@@ -150,25 +172,14 @@ Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B, Workspace& workspace)
   if (B.rows() != n) throw std::invalid_argument("SpdFactor::solve: right-hand side has the wrong number of rows");
   Workspace::Impl& w = *workspace.impl_;
   Eigen::MatrixXd X(n, B.cols());
-  const bool supernodal = isSupernodal();
-  const Eigen::Index chunk = supernodal ? kSupernodalChunk : kChunk;
-  const auto turn = blasTurn(supernodal);
-  for (Eigen::Index c = 0; c < B.cols(); c += chunk) {
-    const Eigen::Index cols = std::min<Eigen::Index>(chunk, B.cols() - c);
-    cholmod_dense b{};  // a view of B's columns c … c + cols − 1 (column-major, leading dimension n)
-    b.nrow = n;
-    b.ncol = cols;
-    b.nzmax = n * cols;
-    b.d = n;
-    b.x = const_cast<double*>(B.data() + c * n);
-    b.xtype = CHOLMOD_REAL;
-    b.dtype = CHOLMOD_DOUBLE;
+  inChunks(isSupernodal(), B.cols(), [&](Eigen::Index c, Eigen::Index cols) {
+    cholmod_dense b = denseView(B.data() + c * n, n, cols);  // B's columns c … c + cols − 1
     if (!cholmod_solve2(CHOLMOD_A, impl_->L, &b, nullptr, &w.X, nullptr, &w.Y, &w.E, &w.common))
       throw std::runtime_error("CHOLMOD solve failed (status " + std::to_string(w.common.status) + ")");
     const auto* x = static_cast<const double*>(w.X->x);
     for (Eigen::Index j = 0; j < cols; ++j)
       std::memcpy(X.col(c + j).data(), x + j * static_cast<Eigen::Index>(w.X->d), sizeof(double) * n);
-  }
+  });
   return X;
 }
 
@@ -236,28 +247,17 @@ Eigen::MatrixXd SpdFactor::solveFromTrailing(const Eigen::SparseMatrix<double>& 
   Workspace::Impl& w = *f.own.impl_;
   const auto* perm = static_cast<const int*>(f.L->Perm);
   Eigen::MatrixXd X(n, U.cols());
-  const bool supernodal = isSupernodal();
-  const Eigen::Index chunk = supernodal ? kSupernodalChunk : kChunk;
-  const auto turn = blasTurn(supernodal);
-  for (Eigen::Index c = 0; c < U.cols(); c += chunk) {
-    const Eigen::Index cols = std::min<Eigen::Index>(chunk, U.cols() - c);
+  inChunks(isSupernodal(), U.cols(), [&](Eigen::Index c, Eigen::Index cols) {
     Eigen::MatrixXd y = Eigen::MatrixXd::Zero(n, cols);  // L⁻¹ P Rᵀ U: zero above the trailing block
     y.bottomRows(count) = Y.middleCols(c, cols);
-    cholmod_dense b{};
-    b.nrow = n;
-    b.ncol = cols;
-    b.nzmax = n * cols;
-    b.d = n;
-    b.x = y.data();
-    b.xtype = CHOLMOD_REAL;
-    b.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense b = denseView(y.data(), n, cols);
     if (!cholmod_solve2(CHOLMOD_Lt, f.L, &b, nullptr, &w.X, nullptr, &w.Y, &w.E, &w.common))
       throw std::runtime_error("CHOLMOD solve failed (status " + std::to_string(w.common.status) + ")");
     const auto* x = static_cast<const double*>(w.X->x);
     const Eigen::Index ld = static_cast<Eigen::Index>(w.X->d);
     for (Eigen::Index j = 0; j < cols; ++j)
       for (Eigen::Index k = 0; k < n; ++k) X(perm[k], c + j) = x[j * ld + k];  // x = Pᵀ (Lᵀ)⁻¹ y
-  }
+  });
   return X;
 }
 
