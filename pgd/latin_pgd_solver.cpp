@@ -16,7 +16,7 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
   // (response_basis.hpp): the last record counts those solves.
   const long before = stage.sparseSolves();
   if (inputs.spatial_modes) result.spatial_modes = energyModes(stage.basis(), stage.coordinates());
-  if (!result.summary.history.empty()) result.summary.history.back().sparse_solves += stage.sparseSolves() - before;
+  result.summary.addSolvesAfterIteration(stage.sparseSolves() - before);
   return result;
 }
 

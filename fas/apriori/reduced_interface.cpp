@@ -139,7 +139,7 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   const long before = stage.sparseSolves();
   if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
   far_v = stage.basis().displacementOn(B_far, stage.coordinates());
-  if (!result.summary.history.empty()) result.summary.history.back().sparse_solves += stage.sparseSolves() - before;
+  result.summary.addSolvesAfterIteration(stage.sparseSolves() - before);
   return result;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -246,13 +247,11 @@ template <class OnEveryNode>
 SolveResult liftedOrWhole(const Problem& problem, const SpdFactor& factor, const ZoneCondensation& c,
                           SolveResult on_zone, Clock::time_point start, OnEveryNode&& on_every_node) {
   SolveSummary& summary = on_zone.summary;
-  int lift_solves = 0;
-  on_zone.interface = c.lift(problem, factor, on_zone.interface, summary.iterations, lift_solves);
+  long lift_solves = 0;
+  on_zone.interface = c.lift(problem.contact, factor, on_zone.interface, summary.iterations, lift_solves);
   summary.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
-  if (!summary.history.empty()) {
-    summary.history.back().sparse_solves += lift_solves;
-    summary.history.back().wall_s = summary.wall_s;
-  }
+  summary.addSolvesAfterIteration(lift_solves);
+  if (!summary.history.empty()) summary.history.back().wall_s = summary.wall_s;
   const int n = problem.contact.size();
   const std::string zone_text = nodesText(c.zone.size(), n);
   const std::vector<int> wrong = penetratingNodes(problem.contact, on_zone.interface, c.far, kFarPenetration);
@@ -329,8 +328,8 @@ SolveResult solveCone(const Problem& problem, const IncrementalOptions& options,
   Problem part = problem;
   part.contact = restrictToNodes(problem.contact, c.zone);
   LazyDelassus delassus(part, std::move(c.on_zone.delassus));
-  std::vector<int> every(c.zone.size());
-  for (std::size_t i = 0; i < every.size(); ++i) every[i] = static_cast<int>(i);
+  std::vector<int> every(c.zone.size());  // the part's nodes 0 … |Z| − 1
+  std::iota(every.begin(), every.end(), 0);
   SolveResult on_zone = solveConeWith(part, options, callback, start, c.on_zone.free_response, delassus,
                                       c.on_zone.sparse_solves, every);
   std::ostringstream note;

@@ -24,14 +24,15 @@ ZoneCondensation ZoneCondensation::build(const Problem& problem, const SpdFactor
   c.far = otherNodes(contact.size(), zone);
   c.zone = std::move(zone);
   const std::vector<int> rows = rowsOfNodes(d, c.zone), far_rows = rowsOfNodes(d, c.far);
-  const Eigen::SparseMatrix<double> B_zone = restrictToNodes(contact, c.zone).B;
+  c.B_zone = restrictToNodes(contact, c.zone).B;
+  c.B_far = restrictToNodes(contact, c.far).B;
   c.on_zone.sparse_solves = static_cast<int>(problem.loads.size());
-  if (stiffness_free.condenses(B_zone)) {
-    c.on_zone.delassus = stiffness_free.condensed(B_zone);
+  if (stiffness_free.condenses(c.B_zone)) {
+    c.on_zone.delassus = stiffness_free.condensed(c.B_zone);
   } else {
-    const Eigen::MatrixXd responses = stiffness_free.solveOnThreads(Eigen::MatrixXd(B_zone.transpose()));  // K⁻¹ B_Zᵀ
-    c.on_zone.delassus = symmetricDelassus(B_zone, responses);
-    c.far_delassus = restrictToNodes(contact, c.far).B * responses;
+    const Eigen::MatrixXd responses = stiffness_free.solveOnThreads(Eigen::MatrixXd(c.B_zone.transpose()));  // K⁻¹ B_Zᵀ
+    c.on_zone.delassus = symmetricDelassus(c.B_zone, responses);
+    c.far_delassus = c.B_far * responses;
     c.on_zone.sparse_solves += static_cast<int>(rows.size());
   }
   const Eigen::MatrixXd free = freeInterfaceResponse(problem, stiffness_free);
@@ -40,24 +41,8 @@ ZoneCondensation ZoneCondensation::build(const Problem& problem, const SpdFactor
   return c;
 }
 
-namespace {
-
-// W_FZ λ_Z = B_F K⁻¹ B_Zᵀ λ_Z (λ_Z: d |Z| × solved) with rank(λ_Z) solves (linalg/low_rank_solve.hpp).
-Eigen::MatrixXd farResponse(const Problem& problem, const SpdFactor& stiffness_free, const ZoneCondensation& c,
-                            const Eigen::MatrixXd& lambda_zone, int& sparse_solves) {
-  long solves = 0;
-  const Eigen::MatrixXd far =
-      linalg::solveThroughRank(stiffness_free, restrictToNodes(problem.contact, c.far).B,
-                               restrictToNodes(problem.contact, c.zone).B, lambda_zone, solves);
-  sparse_solves += static_cast<int>(solves);
-  return far;
-}
-
-}  // namespace
-
-InterfaceHistory ZoneCondensation::lift(const Problem& problem, const SpdFactor& stiffness_free,
-                                        const InterfaceHistory& on_zone, int solved, int& sparse_solves) const {
-  const ContactInterface& contact = problem.contact;
+InterfaceHistory ZoneCondensation::lift(const ContactInterface& contact, const SpdFactor& stiffness_free,
+                                        const InterfaceHistory& on_zone, int solved, long& sparse_solves) const {
   const int d = contact.dimension;
   InterfaceHistory h = InterfaceHistory::zeros(contact, on_zone.numSteps());
   const std::vector<int> rows = rowsOfNodes(d, zone), far_rows = rowsOfNodes(d, far);
@@ -68,8 +53,8 @@ InterfaceHistory ZoneCondensation::lift(const Problem& problem, const SpdFactor&
   Eigen::MatrixXd v_far = far_free.leftCols(solved);
   if (far_delassus.size() > 0)
     v_far.noalias() += far_delassus * lambda_zone;
-  else
-    v_far += farResponse(problem, stiffness_free, *this, lambda_zone, sparse_solves);
+  else  // W_FZ λ_Z = B_F K⁻¹ B_Zᵀ λ_Z with rank(λ_Z) half-solves (linalg/low_rank_solve.hpp)
+    v_far += linalg::solveThroughRank(stiffness_free, B_far, B_zone, lambda_zone, sparse_solves);
   h.v(far_rows, Eigen::seqN(0, solved)) = v_far;
   return h;
 }

@@ -36,14 +36,15 @@ struct ZoneCondensation {
   CondensedInterface on_zone;     ///< W_ZZ, v_0,Z; sparse_solves: load terms (+ d |Z| by solves)
   Eigen::MatrixXd far_delassus;   ///< W_FZ (d |F| × d |Z|) when W_ZZ came from solves, else empty
   Eigen::MatrixXd far_free;       ///< v_0,F (d |F| × m)
+  Eigen::SparseMatrix<double> B_zone, B_far;  ///< B's rows of the zone and of the nodes left out
 
   static ZoneCondensation build(const Problem& problem, const SpdFactor& stiffness_free, std::vector<int> zone);
 
   /// The whole interface's history from the zone's on its first `solved` instants (λ_F = 0,
   /// v_F = v_0,F + W_FZ λ_Z); the later instants stay zero, as a stopped march leaves them. Adds the
   /// sparse solves it makes (none when W_FZ is known) to `sparse_solves`.
-  InterfaceHistory lift(const Problem& problem, const SpdFactor& stiffness_free, const InterfaceHistory& on_zone,
-                        int solved, int& sparse_solves) const;
+  InterfaceHistory lift(const ContactInterface& contact, const SpdFactor& stiffness_free,
+                        const InterfaceHistory& on_zone, int solved, long& sparse_solves) const;
 };
 
 /// Nodes of `far` whose gap g0_i + v_n,i falls below −tolerance · max(‖v(:, k)‖∞, max_j |g0_j|)

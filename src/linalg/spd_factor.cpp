@@ -221,28 +221,33 @@ bool SpdFactor::condenses(const Eigen::SparseMatrix<double>& C) const {
   return true;
 }
 
-Eigen::MatrixXd SpdFactor::condensed(const Eigen::SparseMatrix<double>& C) const {
-  if (!condenses(C)) throw std::invalid_argument("SpdFactor::condensed: C has columns outside the trailing dofs");
-  const Eigen::MatrixXd& L = impl_->trailing_factor;
-  Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(L.rows(), C.rows());  // C_Jᵀ, then L_JJ⁻¹ C_Jᵀ
+Eigen::SparseMatrix<double> SpdFactor::trailingPart(const Eigen::SparseMatrix<double>& C, const char* caller) const {
+  if (!condenses(C)) throw std::invalid_argument(std::string(caller) + ": C reads dofs outside the trailing ones");
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(C.nonZeros()));
   for (Eigen::Index k = 0; k < C.outerSize(); ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(C, k); it; ++it)
-      if (it.value() != 0.0) Y(impl_->trailing_position[static_cast<std::size_t>(it.col())], it.row()) += it.value();
-  L.triangularView<Eigen::Lower>().solveInPlace(Y);
+      if (it.value() != 0.0)
+        entries.emplace_back(impl_->trailing_position[static_cast<std::size_t>(it.col())], it.row(), it.value());
+  Eigen::SparseMatrix<double> part(impl_->trailing_factor.rows(), C.rows());
+  part.setFromTriplets(entries.begin(), entries.end());
+  return part;
+}
+
+Eigen::MatrixXd SpdFactor::condensed(const Eigen::SparseMatrix<double>& C) const {
+  Eigen::MatrixXd Y = trailingPart(C, "SpdFactor::condensed");  // C_Jᵀ, then L_JJ⁻¹ C_Jᵀ
+  impl_->trailing_factor.triangularView<Eigen::Lower>().solveInPlace(Y);
   Eigen::MatrixXd W = Eigen::MatrixXd::Zero(C.rows(), C.rows());
   W.selfadjointView<Eigen::Lower>().rankUpdate(Y.transpose());
   return W.selfadjointView<Eigen::Lower>();
 }
 
 Eigen::MatrixXd SpdFactor::solveFromTrailing(const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& U) const {
-  if (!condenses(R) || U.rows() != R.rows())
-    throw std::invalid_argument("SpdFactor::solveFromTrailing: R must read trailing dofs only, U have its rows");
+  if (U.rows() != R.rows()) throw std::invalid_argument("SpdFactor::solveFromTrailing: U must have R's rows");
   const Impl& f = *impl_;
   const Eigen::Index n = f.n, count = f.trailing_factor.rows();
-  Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(count, U.cols());  // (P Rᵀ U) on the trailing block, then L_JJ⁻¹ of it
-  for (Eigen::Index k = 0; k < R.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(R, k); it; ++it)
-      if (it.value() != 0.0) Y.row(f.trailing_position[static_cast<std::size_t>(it.col())]) += it.value() * U.row(it.row());
+  // (P Rᵀ U) on the trailing block, then L_JJ⁻¹ of it.
+  Eigen::MatrixXd Y = trailingPart(R, "SpdFactor::solveFromTrailing") * U;
   f.trailing_factor.triangularView<Eigen::Lower>().solveInPlace(Y);
   Workspace::Impl& w = *f.own.impl_;
   const auto* perm = static_cast<const int*>(f.L->Perm);

@@ -112,6 +112,9 @@ class SpdFactor {
   void factorise(const Eigen::SparseMatrix<double>& A, const std::string& what, const std::vector<int>& trailing,
                  double min_work);
   void keepTrailing(const std::vector<int>& trailing);
+  /// C_Jᵀ (|J| × r): C's columns on the trailing dofs, in their order; throws std::invalid_argument
+  /// naming `caller` when C reads another dof.
+  Eigen::SparseMatrix<double> trailingPart(const Eigen::SparseMatrix<double>& C, const char* caller) const;
 };
 
 }  // namespace stc

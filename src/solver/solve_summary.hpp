@@ -61,6 +61,11 @@ struct SolveSummary {
   /// last record's count, 0 without records. The a posteriori basis's incremental solve and SVD,
   /// made before fas-aposteriori's iteration, are not in it.
   int sparseSolves() const { return history.empty() ? 0 : history.back().sparse_solves; }
+  /// Counts `solves` made after the last iteration (a lift to nodes left out, spatial modes'
+  /// responses) in the last record, so that sparseSolves() has them.
+  void addSolvesAfterIteration(long solves) {
+    if (!history.empty()) history.back().sparse_solves += static_cast<int>(solves);
+  }
   /// Sets `message` from the reason, the remarks and the stages.
   void composeMessage();
   /// Appends `stage` and its clause to the message.

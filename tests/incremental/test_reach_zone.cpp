@@ -112,8 +112,8 @@ TEST(ZoneCondensation, LiftsToEveryNodeAndFindsTheNodesATooSmallZoneLeavesPenetr
       const Eigen::SparseMatrix<double>& B_zone = part.contact.B;
       const Eigen::MatrixXd W_solves = stc::symmetricDelassus(B_zone, factor.solve(Eigen::MatrixXd(B_zone.transpose())));
       EXPECT_LE(largestDifference(c.on_zone.delassus, W_solves), 1e-12 * W_solves.cwiseAbs().maxCoeff());
-      int lift_solves = 0;
-      const stc::InterfaceHistory lifted = c.lift(problem, *f, on_zone.interface, problem.numSteps(), lift_solves);
+      long lift_solves = 0;
+      const stc::InterfaceHistory lifted = c.lift(problem.contact, *f, on_zone.interface, problem.numSteps(), lift_solves);
       const int by_columns = 2 * static_cast<int>(zone.size());
       int loaded_instants = 0;  // the rank of λ_Z is at most the number of its nonzero columns
       for (int k = 0; k < problem.numSteps(); ++k) loaded_instants += on_zone.interface.lambda.col(k).any();
