@@ -41,6 +41,7 @@ struct SolveOptions {
   bool reference = true;
   std::optional<int> threads;
   std::optional<std::filesystem::path> out;
+  bool spatial_modes = true;  ///< SolveInputs::spatial_modes
 };
 
 /// A warm start as the caller passed it: a previous result's arrays (any may be None).
@@ -176,6 +177,7 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   if (options.out) folder.emplace(*options.out);
   std::optional<InterfaceHistory> start;
   SolveInputs inputs;
+  inputs.spatial_modes = options.spatial_modes;
   applyWarmStart(warm, *problem, start, inputs);
 
   CallbackBridge bridge(std::move(callback));
@@ -275,14 +277,16 @@ void bindSolve(py::module_& module) {
       [](const SceneHandle& scene, std::optional<std::string> solver, std::optional<double> tol,
          std::optional<int> max_iterations, std::vector<std::string> sets, bool reference,
          std::optional<int> threads, std::optional<std::filesystem::path> out, WarmStart::Matrix forces,
-         WarmStart::Matrix displacements, WarmStart::Matrix basis_seed, py::object callback) {
-        SolveOptions options{std::move(solver), tol, max_iterations, std::move(sets), reference, threads, std::move(out)};
+         WarmStart::Matrix displacements, WarmStart::Matrix basis_seed, py::object callback, bool spatial_modes) {
+        SolveOptions options{std::move(solver), tol, max_iterations, std::move(sets), reference,
+                             threads, std::move(out), spatial_modes};
         return solve(scene, options, {std::move(forces), std::move(displacements), std::move(basis_seed)},
                      std::move(callback));
       },
       py::arg("scene"), py::arg("solver"), py::arg("tol"), py::arg("max_iterations"), py::arg("sets"),
       py::arg("reference"), py::arg("threads"), py::arg("out"), py::arg("start_forces"),
-      py::arg("start_displacements"), py::arg("basis_seed"), py::arg("callback"));
+      py::arg("start_displacements"), py::arg("basis_seed"), py::arg("callback"),
+      py::arg("spatial_modes"));
 }
 
 }  // namespace stc::python

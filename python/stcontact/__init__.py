@@ -161,7 +161,7 @@ def check(scene: _SceneLike, sets: _Sets = None) -> dict[str, Any]:
 def solve(scene: _SceneLike, solver: str | None = None, *, tol: float | None = None, max_iterations: int | None = None,
           sets: _Sets = None, reference: bool = True, threads: int | None = None, start: SolveResult | None = None,
           seed_basis: bool = True, callback: Callable[[IterationRecord], Any] | None = None,
-          out: _PathLike | None = None) -> SolveResult:
+          out: _PathLike | None = None, spatial_modes: bool = True) -> SolveResult:
     """Solves the scene, as `stcontact solve` does, and returns a SolveResult.
 
     solver           latin | latin-pgd | fas-aposteriori | fas-apriori | incremental (default: the
@@ -175,6 +175,8 @@ def solve(scene: _SceneLike, solver: str | None = None, *, tol: float | None = N
     start            warm start: a previous SolveResult of the same sizes (its interface histories
                      and, with seed_basis, its interface directions seed fas-apriori's and
                      latin-pgd's separated global stage)
+    spatial_modes    False: fas-apriori and latin-pgd return no spatial_modes (an empty array), and
+                     spend no sparse solves on them after the last iteration (as the command line)
     callback         callback(record: IterationRecord) -> bool, after every iteration; False stops
                      the solve (termination "stopped_by_callback"); an exception it raises stops the
                      solve and is raised again here.
@@ -186,7 +188,8 @@ def solve(scene: _SceneLike, solver: str | None = None, *, tol: float | None = N
         if seed_basis:
             seed = start.interface_directions
     data = _core.solve(load_scene(scene)._handle, solver, tol, max_iterations, _overrides(sets), reference,
-                       threads, None if out is None else os.fspath(out), forces, displacements, seed, callback)
+                       threads, None if out is None else os.fspath(out), forces, displacements, seed, callback,
+                       spatial_modes)
     return SolveResult(data)
 
 

@@ -93,6 +93,7 @@ def solve(
     start_displacements: Optional[ArrayLike],
     basis_seed: Optional[ArrayLike],
     callback: Optional[Callable[[IterationRecord], Any]],
+    spatial_modes: bool,
 ) -> dict[str, Any]: ...
 def svd(scene: Scene, modes: int, sets: Sequence[str], threads: Optional[int]) -> dict[str, Any]: ...
 def compare(

@@ -133,6 +133,16 @@ def test_warm_start_from_a_neighbour_takes_fewer_relaxations(small_scene):
     assert first.interface_directions.shape[1] > 0
 
 
+def test_spatial_modes_can_be_turned_off_without_changing_the_solution(small_scene):
+    with_modes = stcontact.solve(small_scene, "fas-apriori", reference=False)
+    without = stcontact.solve(small_scene, "fas-apriori", reference=False, spatial_modes=False)
+    assert with_modes.spatial_modes.shape[1] > 0 and without.spatial_modes.shape[1] == 0
+    # The modes are formed after the last iteration: the iterates are the same to the bit.
+    np.testing.assert_array_equal(without.interface_forces, with_modes.interface_forces)
+    assert without.summary["relaxations"] == with_modes.summary["relaxations"]
+    assert without.summary["sparse_solves"] <= with_modes.summary["sparse_solves"]
+
+
 def test_a_warm_start_of_other_sizes_is_refused(small_scene, latin):
     other = small_scene.with_sets("mesh.arc_nodes=21")
     with pytest.raises(ValueError, match="start history is 62"):
