@@ -6,6 +6,14 @@
 #include "stcontact/incremental/newton_instant.hpp"
 
 namespace stc {
+namespace {
+
+// The tangential parts of a node (d − 1 = 1 or 2 entries), on the stack: nodeLaw runs for every
+// node at every evaluation of the march.
+using Tangent = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2, 1>;
+using TangentMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 2, 2>;
+
+}  // namespace
 
 ConeLaw::ConeLaw(const Problem& problem, LazyDelassus& delassus)
     : contact_(problem.contact),
@@ -55,9 +63,9 @@ void ConeLaw::nodeLaw(int i, const Eigen::VectorXd& lambda, Evaluation& e) const
     return;
   }
   e.closed[i] = true;
-  const Eigen::VectorXd s = e.v.segment(t, dt) - v_previous_.segment(t, dt);
-  const Eigen::VectorXd lt = lambda.segment(t, dt);
-  const Eigen::VectorXd xi = lt - rho_t_[i] * s;
+  const Tangent s = e.v.segment(t, dt) - v_previous_.segment(t, dt);
+  const Tangent lt = lambda.segment(t, dt);
+  const Tangent xi = lt - rho_t_[i] * s;
   const double radius = contact_.friction * hat_n, norm = xi.norm();
   e.F[n] = rho_n_[i] * g;
   C(0, 0) = rho_n_[i];
@@ -66,11 +74,11 @@ void ConeLaw::nodeLaw(int i, const Eigen::VectorXd& lambda, Evaluation& e) const
     C.bottomRightCorner(dt, dt).diagonal().setConstant(rho_t_[i]);
     return;
   }
-  const Eigen::VectorXd unit = xi / norm;
+  const Tangent unit = xi / norm;
   const double q = radius / norm;
-  const Eigen::MatrixXd P = Eigen::MatrixXd::Identity(dt, dt) - unit * unit.transpose();
+  const TangentMatrix P = TangentMatrix::Identity(dt, dt) - unit * unit.transpose();
   e.F.segment(t, dt) = lt - radius * unit;
-  A.bottomRightCorner(dt, dt) = Eigen::MatrixXd::Identity(dt, dt) - q * P;
+  A.bottomRightCorner(dt, dt) = TangentMatrix::Identity(dt, dt) - q * P;
   A.bottomLeftCorner(dt, 1) = -contact_.friction * unit;
   C.bottomLeftCorner(dt, 1) = contact_.friction * rho_n_[i] * unit;
   C.bottomRightCorner(dt, dt) = q * rho_t_[i] * P;
@@ -88,30 +96,44 @@ ConeLaw::Evaluation ConeLaw::evaluate(const Eigen::VectorXd& lambda) {
   return e;
 }
 
+namespace {
+
+// The rows d i … d i + d − 1 of every node i of `nodes`, in that order.
+std::vector<int> nodeRows(const std::vector<int>& nodes, int d) {
+  std::vector<int> rows;
+  rows.reserve(nodes.size() * static_cast<std::size_t>(d));
+  for (int i : nodes)
+    for (int a = 0; a < d; ++a) rows.push_back(d * i + a);
+  return rows;
+}
+
+}  // namespace
+
 bool ConeLaw::newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eigen::VectorXd& step) {
   std::vector<int> closed, forced_open;
   for (int i = 0; i < contact_.size(); ++i) {
     if (e.closed[i]) closed.push_back(i);
     else if (lambda.segment(d_ * i, d_).squaredNorm() > 0.0) forced_open.push_back(i);
   }
-  const int nA = static_cast<int>(closed.size()) * d_;
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(nA, nA);
+  const std::vector<int> rows = nodeRows(closed, d_);
+  const auto nA = static_cast<Eigen::Index>(rows.size());
+  // W_CC gathered from the closed nodes' columns, and W_CO λ_O, the open nodes' forces that
+  // Δλ_O = −λ_O removes (−C W_CO Δλ_O moves to the right-hand side).
+  Eigen::MatrixXd W_CC(nA, nA);
+  for (Eigen::Index q = 0; q < nA; ++q) W_CC.col(q) = W_.column(closed[q / d_], static_cast<int>(q % d_))(rows);
+  Eigen::VectorXd open_response = Eigen::VectorXd::Zero(nA);
+  for (int j : forced_open)
+    for (int b = 0; b < d_; ++b) open_response += W_.column(j, b)(rows) * lambda[d_ * j + b];
+  // (A_CC + C_CC W_CC) Δλ_C = −F_C + C_CC W_CO λ_O, one block row of d per closed node.
+  Eigen::MatrixXd M(nA, nA);
   Eigen::VectorXd rhs(nA);
-  for (int p = 0; p < static_cast<int>(closed.size()); ++p) {
-    const int i = closed[p], n = d_ * i;
+  for (Eigen::Index p = 0; p < static_cast<Eigen::Index>(closed.size()); ++p) {
+    const int n = d_ * closed[p];
     const auto A = e.A.middleCols(n, d_), C = e.C.middleCols(n, d_);
-    rhs.segment(d_ * p, d_) = -e.F.segment(n, d_);
-    for (int q = 0; q < static_cast<int>(closed.size()); ++q) {
-      Eigen::MatrixXd Wij(d_, d_);
-      for (int b = 0; b < d_; ++b) Wij.col(b) = W_.column(closed[q], b).segment(n, d_);
-      M.block(d_ * p, d_ * q, d_, d_) = C * Wij;
-    }
+    M.middleRows(d_ * p, d_).noalias() = C * W_CC.middleRows(d_ * p, d_);
     M.block(d_ * p, d_ * p, d_, d_) += A;
-    for (int j : forced_open) {  // Δλ_j = −λ_j on an open node: −C W_ij Δλ_j moves to the right
-      Eigen::VectorXd w = Eigen::VectorXd::Zero(d_);
-      for (int b = 0; b < d_; ++b) w += W_.column(j, b).segment(n, d_) * lambda[d_ * j + b];
-      rhs.segment(d_ * p, d_) += C * w;
-    }
+    rhs.segment(d_ * p, d_).noalias() = C * open_response.segment(d_ * p, d_);
+    rhs.segment(d_ * p, d_) -= e.F.segment(n, d_);
   }
   step = -lambda;
   if (nA > 0) {
