@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 
+#include "stcontact/contact/contact_interface.hpp"
 #include "stcontact/incremental/newton_instant.hpp"
 
 namespace stc {
@@ -96,26 +97,13 @@ ConeLaw::Evaluation ConeLaw::evaluate(const Eigen::VectorXd& lambda) {
   return e;
 }
 
-namespace {
-
-// The rows d i … d i + d − 1 of every node i of `nodes`, in that order.
-std::vector<int> nodeRows(const std::vector<int>& nodes, int d) {
-  std::vector<int> rows;
-  rows.reserve(nodes.size() * static_cast<std::size_t>(d));
-  for (int i : nodes)
-    for (int a = 0; a < d; ++a) rows.push_back(d * i + a);
-  return rows;
-}
-
-}  // namespace
-
 bool ConeLaw::newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eigen::VectorXd& step) {
   std::vector<int> closed, forced_open;
   for (int i = 0; i < contact_.size(); ++i) {
     if (e.closed[i]) closed.push_back(i);
     else if (lambda.segment(d_ * i, d_).squaredNorm() > 0.0) forced_open.push_back(i);
   }
-  const std::vector<int> rows = nodeRows(closed, d_);
+  const std::vector<int> rows = rowsOfNodes(d_, closed);
   const auto nA = static_cast<Eigen::Index>(rows.size());
   // W_CC gathered from the closed nodes' columns, and W_CO λ_O, the open nodes' forces that
   // Δλ_O = −λ_O removes (−C W_CO Δλ_O moves to the right-hand side).
