@@ -49,6 +49,7 @@ function(stc_add_library name)
   target_link_libraries(${target} PUBLIC ${ARG_DEPS})
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic
                          $<$<BOOL:${STC_WARNINGS_AS_ERRORS}>:-Werror>)
+  stc_precompile_headers(${target})
   # Headers below include/stcontact/<module>/: src/<module>/ for the core, <module>/ for the others.
   file(RELATIVE_PATH folder "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
   string(REGEX REPLACE "^src/?" "" module_path "${folder}")

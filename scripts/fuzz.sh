@@ -20,6 +20,11 @@
 #   STC_FUZZ_DIR      build folder (default: build-fuzz/ in the repository); its corpus/ keeps
 #                     what earlier local runs found, so they start from there
 #   STC_FUZZ_CXX      compiler (default clang++-14)
+#   STC_FUZZ_CORE_TESTS=1  first builds the core floor's test programs (those that link
+#                     stcontact::core alone, tests/CMakeLists.txt) in the same instrumented build
+#                     and runs them under its sanitizers: a failure or sanitizer report fails the
+#                     run before any fuzzing. The test command uses it (README, "Tests"): one build
+#                     checks the library the fuzz targets drive both ways.
 #   STC_JOBS          parallel compile jobs (default: nproc)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -39,10 +44,25 @@ for target in "${targets[@]}"; do
 done
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)"; exit 1; }
 
+core_tests=${STC_FUZZ_CORE_TESTS:-0}
+# Eigen's own dense kernels (-DSTC_EIGEN_USE_BLAS=OFF), as in scripts/sanitize.sh, which says why.
 cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Debug \
   -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DCMAKE_CXX_FLAGS="-D_GLIBCXX_ASSERTIONS" \
-  -DSTC_BUILD_FUZZERS=ON -DSTC_BUILD_TESTS=OFF -DSTC_BUILD_PYTHON=OFF >/dev/null
-cmake --build "$build" -j "${STC_JOBS:-$(nproc)}" --target "${targets[@]/#/fuzz_}"
+  -DSTC_BUILD_FUZZERS=ON -DSTC_BUILD_TESTS="$([ "$core_tests" = 1 ] && echo ON || echo OFF)" \
+  -DSTC_BUILD_PYTHON=OFF -DSTC_EIGEN_USE_BLAS=OFF >/dev/null
+extra_targets=()
+[ "$core_tests" = 1 ] && extra_targets=(core_floor_tests)
+cmake --build "$build" -j "${STC_JOBS:-$(nproc)}" --target "${targets[@]/#/fuzz_}" "${extra_targets[@]}"
+
+# The core floor's test programs (tests/CMakeLists.txt lists their folders, which are their ctest
+# labels, in core_floor_tests.txt) under the sanitizers of this build.
+if [ "$core_tests" = 1 ]; then
+  read -r -a folders <"$build/core_floor_tests.txt"
+  echo "core floor's tests under ASan + UBSan: ${folders[*]}"
+  labels=$(IFS='|'; echo "${folders[*]}")
+  (source "$root/scripts/sanitizer_env.sh" && cd "$build" &&
+     ctest --output-on-failure -j "${STC_JOBS:-$(nproc)}" --timeout 1800 -L "^($labels)\$")
+fi
 
 # seeds TARGET: the shipped inputs of the target's kind, copied afresh into one folder, each named
 # after its folder too (examples/scenes/fretting.toml and examples/scenes/hard/fretting.toml are two).

@@ -1,0 +1,50 @@
+# Precompiled headers (option STC_PRECOMPILED_HEADERS): the third-party and standard headers that
+# most translation units parse, Eigen's dense and sparse cores above all, compiled once per target
+# instead of once per file. The code compiled is the same; a clean Release build takes 15 % less
+# wall time on 2 cores (docs/changelog.md, 0.3.x). The project's own headers stay out, so that
+# editing one recompiles only the files that include it.
+#
+# GCC 12 loses the system-header status of what comes from a precompiled header, and then reports
+# its known false positives in libstdc++'s string code (-Warray-bounds, -Wstringop-overflow, which
+# a plain build keeps quiet as coming from a system header); with precompiled headers these two are
+# off. The warnings-as-errors build, which is where warnings are checked, compiles without them.
+if(STC_WARNINGS_AS_ERRORS)
+  set(stc_pch_default OFF)
+else()
+  set(stc_pch_default ON)
+endif()
+option(STC_PRECOMPILED_HEADERS "Precompile Eigen's and the standard library's common headers"
+       ${stc_pch_default})
+
+set(STC_PCH_HEADERS <Eigen/Core> <Eigen/SparseCore> <algorithm> <cmath> <limits> <map> <memory>
+                    <optional> <sstream> <stdexcept> <string> <utility> <vector>)
+
+# stc_pch_warning_options(TARGET): the two warnings above off for GCC.
+function(stc_pch_warning_options target)
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    target_compile_options(${target} PRIVATE -Wno-array-bounds -Wno-stringop-overflow)
+  endif()
+endfunction()
+
+# stc_precompile_headers(TARGET): TARGET's files start from STC_PCH_HEADERS, precompiled for it.
+function(stc_precompile_headers target)
+  if(STC_PRECOMPILED_HEADERS)
+    target_precompile_headers(${target} PRIVATE ${STC_PCH_HEADERS})
+    stc_pch_warning_options(${target})
+  endif()
+endfunction()
+
+# stc_precompile_test_headers(TARGET [REUSE_FROM OTHER]): the same with GoogleTest added, for the
+# test programs; they share one compile line, so the first one's header serves the others.
+function(stc_precompile_test_headers target)
+  cmake_parse_arguments(ARG "" "REUSE_FROM" "" ${ARGN})
+  if(NOT STC_PRECOMPILED_HEADERS)
+    return()
+  endif()
+  if(ARG_REUSE_FROM)
+    target_precompile_headers(${target} REUSE_FROM ${ARG_REUSE_FROM})
+  else()
+    target_precompile_headers(${target} PRIVATE ${STC_PCH_HEADERS} <gtest/gtest.h>)
+  endif()
+  stc_pch_warning_options(${target})
+endfunction()
