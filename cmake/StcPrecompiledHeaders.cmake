@@ -1,7 +1,7 @@
 # Precompiled headers (option STC_PRECOMPILED_HEADERS): the third-party and standard headers that
 # most translation units parse, Eigen's dense and sparse cores above all, compiled once per target
 # instead of once per file. The code compiled is the same; a clean Release build takes 15 % less
-# wall time on 2 cores (docs/changelog.md, 0.3.x). The project's own headers stay out, so that
+# wall time on 2 cores (docs/changelog.md, "Unreleased"). The project's own headers stay out, so that
 # editing one recompiles only the files that include it.
 #
 # GCC 12 loses the system-header status of what comes from a precompiled header, and then reports
