@@ -36,17 +36,17 @@ function(stc_precompile_headers target)
   endif()
 endfunction()
 
-# stc_precompile_test_headers(TARGET [REUSE_FROM OTHER]): the same with GoogleTest added, for the
-# test programs; they share one compile line, so the first one's header serves the others.
-function(stc_precompile_test_headers target)
-  cmake_parse_arguments(ARG "" "REUSE_FROM" "" ${ARGN})
+# stc_precompile_test_headers(TARGET...): the same with GoogleTest added, for the test programs;
+# they share one compile line, so the first one's header serves the others.
+function(stc_precompile_test_headers first)
   if(NOT STC_PRECOMPILED_HEADERS)
     return()
   endif()
-  if(ARG_REUSE_FROM)
-    target_precompile_headers(${target} REUSE_FROM ${ARG_REUSE_FROM})
-  else()
-    target_precompile_headers(${target} PRIVATE ${STC_PCH_HEADERS} <gtest/gtest.h>)
-  endif()
-  stc_pch_warning_options(${target})
+  target_precompile_headers(${first} PRIVATE ${STC_PCH_HEADERS} <gtest/gtest.h>)
+  foreach(target IN LISTS first ARGN)
+    if(NOT target STREQUAL first)
+      target_precompile_headers(${target} REUSE_FROM ${first})
+    endif()
+    stc_pch_warning_options(${target})
+  endforeach()
 endfunction()
