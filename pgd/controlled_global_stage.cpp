@@ -34,7 +34,7 @@ ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledS
     : problem_(problem),
       options_(options),
       matrix_(latin::searchDirectionOperator(problem)),
-      factor_(matrix_, "K + B^T k B", dofsReadBy(problem.contact.B)),
+      factor_(matrix_, "K + B^T k B", dofsReadBy(problem.contact.B), kTrailingWork),
       basis_(problem, factor_) {
   options_.validate();
 }
