@@ -17,28 +17,27 @@ CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& hat) {
   const pgd::ResponseBasis& basis = stage_.basis();
   const pgd::EnergyFactor& factor = basis.energyFactor();
   // In whitened coordinates the A-product is the Euclidean one: modes are unit vectors there.
-  const Eigen::Index q = basis.loadHistories().rows();
   if (factor.rank() <= options_.modes + options_.increment_modes) {
     // The whole expansion fits: its span is the coarse space (early cycles, and expansions of low
     // rank such as a problem without contact, whose few energy modes alone starve the coarse step).
-    previous_ = c;
+    previous_ = factor.whiten(pgd::historyFactor(basis, c));
     const Eigen::MatrixXd all = Eigen::MatrixXd::Identity(factor.rank(), factor.rank());
     return CoarseSpace::fromTraces(pgd::modeTraces(basis, factor.combination(all)));
   }
-  Eigen::MatrixXd theta = pgd::historyFactor(basis, c);
-  Eigen::MatrixXd U = pgd::leadingSingularVectors(factor.whiten(theta), options_.modes);
+  const Eigen::MatrixXd whitened = factor.whiten(pgd::historyFactor(basis, c));
+  Eigen::MatrixXd U = pgd::leadingSingularVectors(whitened, options_.modes);
   if (options_.increment_modes > 0 && previous_.size() > 0) {
-    // ũ − ũ_previous: the loads' part cancels, the coordinates of directions added since are new.
-    theta.topRows(q).setZero();
-    theta.middleRows(q, previous_.rows()) -= previous_;
-    Eigen::MatrixXd d = factor.whiten(theta);
+    // ũ − ũ_previous in Φ̂: R only gains columns, and rows that start at them, so R [G; c_prev; 0] is
+    // the previous whitened history with zero rows below (energy_factor.hpp).
+    Eigen::MatrixXd d = whitened;
+    d.topRows(previous_.rows()) -= previous_;
     d -= U * (U.transpose() * d);
     const Eigen::MatrixXd V = pgd::leadingSingularVectors(d, options_.increment_modes, 1e-10);
     Eigen::MatrixXd all(U.rows(), U.cols() + V.cols());
     all << U, V;
     U = linalg::orthonormalColumns(all);
   }
-  previous_ = c;
+  previous_ = whitened;
   return CoarseSpace::fromTraces(pgd::modeTraces(basis, factor.combination(U)));
 }
 

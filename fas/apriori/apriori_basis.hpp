@@ -35,7 +35,7 @@ class AprioriBasisProvider : public BasisProvider {
  private:
   pgd::ControlledGlobalStage& stage_;
   AprioriBasisOptions options_;
-  Eigen::MatrixXd previous_;  ///< coordinates c of ũ at the previous coarse step
+  Eigen::MatrixXd previous_;  ///< whitened coordinates Θ̂ = R [G; c] of ũ at the previous coarse step
 };
 
 /// Where the coarse spaces of `fas-apriori`'s pipeline (its separated stage, reduced interface and
