@@ -159,6 +159,22 @@ std::string historyCsv(const SolveSummary& summary) {
   return out.str();
 }
 
+namespace {
+
+// The solve on a sub-grid of instants that nested iteration started from (docs/method.md §5), its
+// counts and time included in the solve's; null when there was none.
+std::optional<JsonObject> subGridJson(const SolveSummary& summary) {
+  for (const SolveStage& stage : summary.stages)
+    if (stage.kind == SolveStage::Kind::SubGrid)
+      return JsonObject()
+          .add("relaxations", stage.relaxations)
+          .add("sparse_solves", stage.sparse_solves)
+          .add("wall_s", stage.wall_s);
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::string summaryJson(const Problem& problem, const SolveSummary& summary, const RunInfo& info) {
   JsonObject json;
   json.add("solver", summary.solver)
@@ -172,6 +188,7 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
       .add("error_estimate", std::isfinite(summary.error_estimate) ? std::optional<double>(summary.error_estimate)
                                                                    : std::nullopt)
       .add("wall_s", summary.wall_s)
+      .add("sub_grid", subGridJson(summary))
       .add("threads", threadCount())
       .add("blas_kernels", linalg::blasKernels())
       .add("n_dofs", problem.numDofs())

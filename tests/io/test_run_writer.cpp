@@ -107,6 +107,26 @@ TEST(RunWriter, HistoryAndSummaryCarryTheSparseSolvesSpent) {
   const std::string json = stc::summaryJson(problem, result.summary, {"{}", "test"});
   EXPECT_NE(json.find("\"relaxations\": 0,\n  \"sparse_solves\": " + std::to_string(spent) + ","), std::string::npos)
       << json;
+  EXPECT_NE(json.find("\"sub_grid\": null,"), std::string::npos) << json;
+}
+
+// A solve nested in time says what its sub-grid solve spent, beside the whole solve's counts that
+// include it (docs/interface.md, summary.json).
+TEST(RunWriter, SummaryCarriesTheSubGridSolve) {
+  const stc::Problem problem = stc::buildProblem(stc::test::seedScene(21, 11));
+  stc::SolveSummary summary;
+  summary.solver = "fas-apriori";
+  stc::SolveStage zone;
+  zone.kind = stc::SolveStage::Kind::ContactZone;
+  stc::SolveStage sub_grid;
+  sub_grid.relaxations = 19;
+  sub_grid.sparse_solves = 185;
+  sub_grid.wall_s = 0.25;
+  summary.stages = {sub_grid, zone};
+  const std::string json = stc::summaryJson(problem, summary, {"{}", "test"});
+  EXPECT_NE(json.find("\"sub_grid\": {\n    \"relaxations\": 19,\n    \"sparse_solves\": 185,\n    \"wall_s\": 0.25\n  },"),
+            std::string::npos)
+      << json;
 }
 
 }  // namespace
