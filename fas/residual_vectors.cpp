@@ -19,7 +19,7 @@ Eigen::MatrixXd rangeOf(const Eigen::MatrixXd& R, int count) {
   // Randomized range finder (Halko, Martinsson, Tropp 2011, alg. 4.1) with 5 extra samples.
   const int samples = std::min<int>(count + 5, static_cast<int>(R.cols()));
   const Eigen::MatrixXd Q = linalg::randomizedRange(R, samples, 0, 20130513u);
-  const linalg::Svd svd = linalg::singularValueDecomposition(Q.transpose() * R, linalg::SvdMethod::jacobi, linalg::kThinU);
+  const linalg::Svd svd = linalg::singularValueDecomposition(Q.transpose() * R, linalg::SvdMethod::qr_iteration, linalg::kThinU);
   const Eigen::VectorXd& sigma = svd.values;
   int keep = 0;
   while (keep < std::min<int>(count, static_cast<int>(sigma.size())) && sigma[keep] > 1e-12 * sigma[0]) ++keep;

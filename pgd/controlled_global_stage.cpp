@@ -16,7 +16,7 @@ Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double norm, double 
                                   const ControlledStageOptions& o, unsigned seed) {
   const int samples = std::min<int>({count + o.oversampling, static_cast<int>(R.cols()), static_cast<int>(R.rows())});
   const Eigen::MatrixXd Q = linalg::randomizedRange(R, samples, o.power_iterations, 20131001u + seed);
-  const linalg::Svd svd = linalg::singularValueDecomposition(Q.transpose() * R, linalg::SvdMethod::jacobi, linalg::kThinU);
+  const linalg::Svd svd = linalg::singularValueDecomposition(Q.transpose() * R, linalg::SvdMethod::qr_iteration, linalg::kThinU);
   const Eigen::VectorXd& sigma = svd.values;
   double rest = norm * norm;
   int keep = 0;

@@ -4,6 +4,7 @@
 #include <Eigen/QR>
 #include <Eigen/SVD>
 #include <algorithm>
+#include <optional>
 #include <random>
 
 #ifdef EIGEN_USE_BLAS
@@ -13,6 +14,8 @@ void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau,
              int* info);
 void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
              const int* lwork, int* info);
+void dgesvd_(const char* jobu, const char* jobvt, const int* m, const int* n, double* a, const int* lda, double* s,
+             double* u, const int* ldu, double* vt, const int* ldvt, double* work, const int* lwork, int* info);
 }
 #endif
 
@@ -45,6 +48,42 @@ bool lapackThinQ(Eigen::MatrixXd& A) {
   if (info != 0) return false;
   dorgqr_(&m, &n, &n, A.data(), &lda, tau.data(), work.data(), &lwork, &info);
   return info == 0;
+}
+
+// A = U Σ Vᵀ for a tall A (rows ≥ cols) by dgesvd: its QR first, then the bidiagonal SVD of R by
+// implicit QR iteration (LAPACK Users' Guide, "Singular Value Decomposition"); U and V thin, filled
+// when asked for. False when the iteration did not converge.
+bool lapackTallSvd(Eigen::MatrixXd A, bool want_u, bool want_v, Svd& svd) {
+  const int m = static_cast<int>(A.rows()), n = static_cast<int>(A.cols()), lda = std::max(m, 1);
+  svd.values.resize(n);
+  if (want_u) svd.U.resize(m, n);
+  Eigen::MatrixXd vt(want_v ? n : 1, want_v ? n : 1);
+  const char jobu = want_u ? 'S' : 'N', jobvt = want_v ? 'S' : 'N';
+  const int ldu = want_u ? m : 1, ldvt = static_cast<int>(vt.rows());
+  double* u = want_u ? svd.U.data() : vt.data();  // not referenced for 'N'
+  int info = 0, lwork = -1;
+  double size = 0.0;
+  dgesvd_(&jobu, &jobvt, &m, &n, A.data(), &lda, svd.values.data(), u, &ldu, vt.data(), &ldvt, &size, &lwork, &info);
+  lwork = static_cast<int>(std::max(size, 1.0));
+  Eigen::VectorXd work(lwork);
+  dgesvd_(&jobu, &jobvt, &m, &n, A.data(), &lda, svd.values.data(), u, &ldu, vt.data(), &ldvt, work.data(), &lwork,
+          &info);
+  if (want_v) svd.V = vt.transpose();
+  return info == 0;
+}
+
+// M's SVD from that of the taller of M and Mᵀ (Mᵀ = V Σ Uᵀ): dgesvd on a wide matrix bidiagonalises
+// all of it, on its transpose a square R of the short side.
+std::optional<Svd> lapackSvd(const Eigen::MatrixXd& M, unsigned vectors) {
+  const bool want_u = vectors & kThinU, want_v = vectors & kThinV;
+  Svd svd;
+  if (M.rows() >= M.cols()) {
+    if (!lapackTallSvd(M, want_u, want_v, svd)) return std::nullopt;
+    return svd;
+  }
+  if (!lapackTallSvd(M.transpose(), want_v, want_u, svd)) return std::nullopt;
+  svd.U.swap(svd.V);
+  return svd;
 }
 #endif
 
@@ -89,7 +128,12 @@ Svd singularValueDecomposition(const Eigen::MatrixXd& M, SvdMethod method, unsig
   unsigned options = 0;
   if (vectors & kThinU) options |= Eigen::ComputeThinU;
   if (vectors & kThinV) options |= Eigen::ComputeThinV;
-  if (method == SvdMethod::jacobi) return fromDecomposition(Eigen::JacobiSVD<Eigen::MatrixXd>(M, options), vectors);
+#ifdef EIGEN_USE_BLAS
+  if (method == SvdMethod::qr_iteration && M.size() > 0)
+    if (std::optional<Svd> svd = lapackSvd(M, vectors)) return *std::move(svd);
+#endif
+  if (method != SvdMethod::divide_and_conquer)
+    return fromDecomposition(Eigen::JacobiSVD<Eigen::MatrixXd>(M, options), vectors);
   return fromDecomposition(Eigen::BDCSVD<Eigen::MatrixXd>(M, options), vectors);
 }
 

@@ -30,6 +30,11 @@ Eigen::MatrixXd orthonormalIn(const Eigen::MatrixXd& V, const Eigen::SparseMatri
 enum class SvdMethod {
   jacobi,              ///< two-sided Jacobi (Eigen::JacobiSVD): accurate, O(n³) with a large constant
   divide_and_conquer,  ///< Eigen::BDCSVD: bidiagonalisation then divide and conquer (Jacobi below 16 columns)
+  /// LAPACK's dgesvd (QR, bidiagonalisation, implicit QR iteration) from OpenBLAS on the taller of M
+  /// and Mᵀ when Eigen's products use OpenBLAS, Jacobi otherwise: singular values to ε σ_1, like
+  /// divide and conquer. On the range finder's projected histories (25 to 64 rows, 201 to 2001
+  /// columns) 0.3 to 0.9 of Jacobi's time.
+  qr_iteration,
 };
 enum SvdVectors : unsigned { kValuesOnly = 0, kThinU = 1, kThinV = 2 };
 

@@ -3,7 +3,9 @@
 // of exact low rank, and the Gaussian sketch is repeatable.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "stcontact/linalg/dense_decompositions.hpp"
 
@@ -92,6 +94,34 @@ TEST(DenseDecompositions, BothSvdMethodsReconstructAndAgree) {
   EXPECT_EQ(values_only.U.size(), 0);
   EXPECT_EQ(values_only.V.size(), 0);
   EXPECT_LT((values_only.values - jacobi.values).cwiseAbs().maxCoeff(), 1e-12 * jacobi.values[0]);
+}
+
+// QR iteration runs on the taller of M and Mᵀ: a tall and a wide matrix, each factor asked for alone
+// and both, reconstruct M and agree with Jacobi's singular values.
+TEST(DenseDecompositions, QrIterationSvdOfTallAndWideMatricesAgreesWithJacobi) {
+  for (const auto& [rows, cols] : {std::pair{60, 25}, std::pair{25, 201}}) {
+    const Eigen::MatrixXd M = gaussianSketch(rows, cols, 8);
+    const Svd jacobi = singularValueDecomposition(M, SvdMethod::jacobi, kValuesOnly);
+    const Svd both = singularValueDecomposition(M, SvdMethod::qr_iteration, kThinU | kThinV);
+    const Eigen::Index k = std::min(rows, cols);
+    ASSERT_EQ(both.values.size(), k);
+    ASSERT_EQ(both.U.rows(), rows);
+    ASSERT_EQ(both.U.cols(), k);
+    ASSERT_EQ(both.V.rows(), cols);
+    ASSERT_EQ(both.V.cols(), k);
+    EXPECT_LT((both.U * both.values.asDiagonal() * both.V.transpose() - M).cwiseAbs().maxCoeff(), 1e-12) << rows;
+    EXPECT_LT((both.values - jacobi.values).cwiseAbs().maxCoeff(), 1e-12 * jacobi.values[0]) << rows;
+    // One factor alone, up to signs: (UᵀM)(UᵀM)ᵀ = Σ² and (MV)ᵀ(MV) = Σ².
+    const Eigen::MatrixXd squares = both.values.cwiseAbs2().asDiagonal();
+    const Svd left = singularValueDecomposition(M, SvdMethod::qr_iteration, kThinU);
+    EXPECT_EQ(left.V.size(), 0);
+    const Eigen::MatrixXd UtM = left.U.transpose() * M;
+    EXPECT_LT((UtM * UtM.transpose() - squares).cwiseAbs().maxCoeff(), 1e-12 * squares(0, 0)) << rows;
+    const Svd right = singularValueDecomposition(M, SvdMethod::qr_iteration, kThinV);
+    EXPECT_EQ(right.U.size(), 0);
+    const Eigen::MatrixXd MV = M * right.V;
+    EXPECT_LT((MV.transpose() * MV - squares).cwiseAbs().maxCoeff(), 1e-12 * squares(0, 0)) << rows;
+  }
 }
 
 TEST(DenseDecompositions, RandomizedRangeHoldsAnExactlyLowRankRange) {
