@@ -10,7 +10,7 @@ namespace {
 
 constexpr int kOversampling = 10;
 constexpr int kSubspaceIterations = 2;
-constexpr Eigen::Index kJacobiRows = 64;  ///< leadingSingularVectors: QR iteration or Jacobi up to this many samples
+constexpr Eigen::Index kSmallSvdRows = 64;  ///< leadingSingularVectors: QR iteration (Jacobi without OpenBLAS) up to this many samples
 
 constexpr unsigned kSketchSeed = 20160101u;
 
@@ -49,10 +49,10 @@ Eigen::MatrixXd leadingSingularVectors(const Eigen::MatrixXd& coordinates, int c
   // The SVD of the small projected matrix itself (not of its Gram matrix, whose eigenvalues would resolve σ only
   // down to √ε σ_1): singular values to ε σ_1, so `drop` means what it says. For the coarse spaces' at most
   // 40 rows LAPACK's QR iteration on the transpose (Jacobi without OpenBLAS: on the seed scene it took 26–38 ms
-  // over 77 calls against 36–41 ms for divide and conquer); divide and conquer above kJacobiRows rows
+  // over 77 calls against 36–41 ms for divide and conquer); divide and conquer above kSmallSvdRows rows
   // (energyModes at the end of a solve asks for every mode: at 1601 contact nodes Jacobi took 4 % of the solve).
   const linalg::SvdMethod method =
-      samples <= kJacobiRows ? linalg::SvdMethod::qr_iteration : linalg::SvdMethod::divide_and_conquer;
+      samples <= kSmallSvdRows ? linalg::SvdMethod::qr_iteration : linalg::SvdMethod::divide_and_conquer;
   const linalg::Svd svd = linalg::singularValueDecomposition(Q.transpose() * coordinates, method, linalg::kThinU);
   const Eigen::VectorXd& sigma = svd.values;  // decreasing
   int keep = 0;

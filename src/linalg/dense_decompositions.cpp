@@ -33,8 +33,8 @@ Svd fromDecomposition(const Decomposition& d, unsigned vectors) {
 
 #ifdef EIGEN_USE_BLAS
 // The first n columns of Q = H(1) H(2) ⋯ H(n), the reflectors of dgeqrf (LAPACK's dorgqr): the ones
-// Eigen::HouseholderQR forms, applied in blocks of OpenBLAS products. On the range finder's shapes
-// (462 to 987 rows, 20 to 100 columns) it took 0.35 to 0.5 of Eigen's time, the same Q to 4e-16.
+// Eigen::HouseholderQR forms, applied in blocks of OpenBLAS products. On the range finders' shapes
+// (201 to 987 rows, 20 to 100 columns) 0.28 to 0.92 of Eigen's time (bench/bench_dense.cpp).
 bool lapackThinQ(Eigen::MatrixXd& A) {
   const int m = static_cast<int>(A.rows()), n = static_cast<int>(A.cols()), lda = std::max(m, 1);
   Eigen::VectorXd tau(n);

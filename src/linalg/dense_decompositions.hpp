@@ -32,8 +32,8 @@ enum class SvdMethod {
   divide_and_conquer,  ///< Eigen::BDCSVD: bidiagonalisation then divide and conquer (Jacobi below 16 columns)
   /// LAPACK's dgesvd (QR, bidiagonalisation, implicit QR iteration) from OpenBLAS on the taller of M
   /// and Mᵀ when Eigen's products use OpenBLAS, Jacobi otherwise: singular values to ε σ_1, like
-  /// divide and conquer. On the range finder's projected histories (25 to 64 rows, 201 to 2001
-  /// columns) 0.3 to 0.9 of Jacobi's time.
+  /// divide and conquer. On the range finders' projected histories (25 to 64 rows, 201 and 2001
+  /// columns) 0.31 to 0.97 of Jacobi's time (bench/bench_dense.cpp).
   qr_iteration,
 };
 enum SvdVectors : unsigned { kValuesOnly = 0, kThinU = 1, kThinV = 2 };
