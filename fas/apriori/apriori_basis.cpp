@@ -17,14 +17,14 @@ CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& hat) {
   const pgd::ResponseBasis& basis = stage_.basis();
   const pgd::EnergyFactor& factor = basis.energyFactor();
   // In whitened coordinates the A-product is the Euclidean one: modes are unit vectors there.
+  const Eigen::MatrixXd whitened = factor.whiten(pgd::historyFactor(basis, c));
   if (factor.rank() <= options_.modes + options_.increment_modes) {
     // The whole expansion fits: its span is the coarse space (early cycles, and expansions of low
     // rank such as a problem without contact, whose few energy modes alone starve the coarse step).
-    previous_ = factor.whiten(pgd::historyFactor(basis, c));
+    previous_ = whitened;
     const Eigen::MatrixXd all = Eigen::MatrixXd::Identity(factor.rank(), factor.rank());
     return CoarseSpace::fromTraces(pgd::modeTraces(basis, factor.combination(all)));
   }
-  const Eigen::MatrixXd whitened = factor.whiten(pgd::historyFactor(basis, c));
   Eigen::MatrixXd U = pgd::leadingSingularVectors(whitened, options_.modes);
   if (options_.increment_modes > 0 && previous_.size() > 0) {
     // ũ − ũ_previous in Φ̂: R only gains columns, and rows that start at them, so R [G; c_prev; 0] is
