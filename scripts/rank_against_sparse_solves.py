@@ -18,16 +18,10 @@ import sys
 import numpy as np
 import stcontact
 
-SEED = "examples/scenes/hemicylinder.toml"
-HALF_BALL = "examples/scenes/hemisphere.toml"
-SCENES = [
-    ("seed", SEED, []),
-    ("arc_nodes 801", SEED, ["mesh.arc_nodes=801"]),
-    ("arc_nodes 1601", SEED, ["mesh.arc_nodes=1601"]),
-    ("hemisphere, divisions 8", HALF_BALL, []),
-    ("hemisphere, divisions 12", HALF_BALL, ["mesh.divisions=12"]),
-]
-LARGE = [("hemisphere, divisions 16", HALF_BALL, ["mesh.divisions=16"])]
+from study_scenes import ARC_NODES_801, ARC_NODES_1601, HEMISPHERE_8, HEMISPHERE_12, HEMISPHERE_16, SEED_SCENE
+
+SCENES = [SEED_SCENE, ARC_NODES_801, ARC_NODES_1601, HEMISPHERE_8, HEMISPHERE_12]
+LARGE = [HEMISPHERE_16]
 TOLERANCE = 1e-6
 
 

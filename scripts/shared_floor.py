@@ -31,18 +31,11 @@ import subprocess
 import sys
 import tempfile
 
-SEED = "examples/scenes/hemicylinder.toml"
-HALF_BALL = "examples/scenes/hemisphere.toml"
-SCENES = [
-    ("seed", SEED, []),
-    ("arc_nodes 801", SEED, ["mesh.arc_nodes=801"]),
-    ("arc_nodes 1601", SEED, ["mesh.arc_nodes=1601"]),
-    ("401 x 2001", SEED, ["mesh.arc_nodes=401", "time.steps=2001"]),
-    ("fretting, 10 cycles x 2001", "examples/scenes/fretting.toml", []),
-    ("hemisphere, divisions 8", HALF_BALL, []),
-    ("hemisphere, divisions 12", HALF_BALL, ["mesh.divisions=12"]),
-]
-LARGE = [("hemisphere, divisions 16", HALF_BALL, ["mesh.divisions=16"])]
+from study_scenes import (ARC_NODES_801, ARC_NODES_1601, FRETTING, HEMISPHERE_8, HEMISPHERE_12,
+                          HEMISPHERE_16, LONG_GRID, SEED_SCENE)
+
+SCENES = [SEED_SCENE, ARC_NODES_801, ARC_NODES_1601, LONG_GRID, FRETTING, HEMISPHERE_8, HEMISPHERE_12]
+LARGE = [HEMISPHERE_16]
 SOLVERS = ("fas-apriori", "incremental")
 TOLERANCE = 1e-6
 
