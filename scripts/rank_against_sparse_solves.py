@@ -13,11 +13,13 @@ The SVD verifies; it is never used to solve. Prints a Markdown table.
 
 --large adds the hemisphere at divisions 16 (its incremental solve takes about 30 s here).
 """
+import os
 import sys
 
 import numpy as np
 import stcontact
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # study_scenes.py, also when loaded by path
 from study_scenes import ARC_NODES_801, ARC_NODES_1601, HEMISPHERE_8, HEMISPHERE_12, HEMISPHERE_16, SEED_SCENE
 
 SCENES = [SEED_SCENE, ARC_NODES_801, ARC_NODES_1601, HEMISPHERE_8, HEMISPHERE_12]

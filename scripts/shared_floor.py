@@ -31,6 +31,7 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # study_scenes.py, also when loaded by path
 from study_scenes import (ARC_NODES_801, ARC_NODES_1601, FRETTING, HEMISPHERE_8, HEMISPHERE_12,
                           HEMISPHERE_16, LONG_GRID, SEED_SCENE)
 
