@@ -42,6 +42,7 @@ ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledS
 void ControlledGlobalStage::retime(const Problem& grid) {
   basis_.retime(grid);
   c_.resize(0, 0);
+  w_last_.resize(0, 0);
   target_ = -1.0;
 }
 
@@ -75,9 +76,27 @@ Eigen::MatrixXd ControlledGlobalStage::scaledRightHandSides(const InterfaceHisto
   return basis_.invSqrtK().asDiagonal() * (hat.lambda + k.asDiagonal() * hat.v);
 }
 
+void ControlledGlobalStage::completeWhenDue() {
+  if (every_row_ || !basis_.condensesInterface() || basis_.size() < options_.full_share * basis_.maxSize()) return;
+  basis_.completeToEveryRow();
+  every_row_ = true;
+}
+
+const Eigen::MatrixXd& ControlledGlobalStage::coordinates() const {
+  if (w_last_.size() > 0) {
+    c_.noalias() = basis_.scaledDirections().transpose() * w_last_;
+    w_last_.resize(0, 0);
+  }
+  return c_;
+}
+
 double ControlledGlobalStage::project(const Eigen::MatrixXd& w_scaled, Eigen::MatrixXd& c, Eigen::MatrixXd& r_scaled) {
   const Eigen::MatrixXd& scaled = basis_.scaledDirections();
   c.noalias() = scaled.transpose() * w_scaled;
+  if (every_row_) {  // Zs is square and orthogonal: nothing is left
+    r_scaled.setZero(w_scaled.rows(), w_scaled.cols());
+    return 0.0;
+  }
   r_scaled = w_scaled;
   r_scaled.noalias() -= scaled * c;
   // Before any gap is known (the first solve, or a warm start) the bound is a share of w itself.
@@ -86,6 +105,7 @@ double ControlledGlobalStage::project(const Eigen::MatrixXd& w_scaled, Eigen::Ma
 }
 
 Eigen::MatrixXd ControlledGlobalStage::anticipate(const InterfaceHistory& hat) {
+  completeWhenDue();
   Eigen::MatrixXd c, r_scaled;
   project(scaledRightHandSides(hat), c, r_scaled);
   return c;
@@ -93,6 +113,17 @@ Eigen::MatrixXd ControlledGlobalStage::anticipate(const InterfaceHistory& hat) {
 
 void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s) {
   const Eigen::VectorXd& k = problem_.contact.search_direction;
+  completeWhenDue();
+  if (every_row_) {
+    // The exact stage v = V_F G + D w, λ = w − k v (header, "Every row").
+    const Eigen::MatrixXd w = hat.lambda + k.asDiagonal() * hat.v;
+    s.v = basis_.freeResponse();
+    s.v.noalias() += basis_.condensedInterface() * w;
+    s.lambda = w - k.asDiagonal() * s.v;
+    w_last_ = basis_.invSqrtK().asDiagonal() * w;
+    error_ = 0.0;
+    return;
+  }
   // Scaled right-hand sides w̃ = k^{-1/2} (λ̂ + k v̂) and their projection on the directions.
   const Eigen::MatrixXd w_scaled = scaledRightHandSides(hat);
   Eigen::MatrixXd r_scaled;

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/linalg/low_rank_solve.hpp"
 #include "stcontact/pgd/separated_loads.hpp"
 
@@ -9,6 +10,7 @@ namespace stc::pgd {
 namespace {
 
 constexpr double kReorthogonalise = 0.70710678118654752;  ///< 1/√2: a second Gram–Schmidt pass below it
+constexpr unsigned kComplementSeed = 20131001u;            ///< Ω of completeToEveryRow: the same on every run
 
 }  // namespace
 
@@ -124,6 +126,20 @@ void ResponseBasis::solvePending() {
   }
   pending_ = 0;
   extendEnergyFactor(added);
+}
+
+void ResponseBasis::completeToEveryRow() {
+  if (!condensesInterface()) throw std::logic_error("ResponseBasis::completeToEveryRow: needs D = B A⁻¹ Bᵀ");
+  solvePending();
+  const Eigen::Index n = maxSize(), p = size();
+  if (p == n) return;
+  Eigen::MatrixXd Y(n, n);
+  Y << Zs_.view(), linalg::gaussianSketch(n, n - p, kComplementSeed);
+  const Eigen::MatrixXd scaled = linalg::orthonormalColumns(Y).rightCols(n - p);
+  Zs_.append(scaled);
+  Z_.append(sqrt_k_.asDiagonal() * scaled);
+  pending_ = n - p;
+  solvePending();
 }
 
 ResponseBasis::View ResponseBasis::responses() const {

@@ -59,6 +59,11 @@ class ResponseBasis {
   /// block, since a supernodal (3D) solve costs less per column the more columns it takes at once
   /// (src/linalg/spd_factor.cpp). Until then responses(), traces() and energyFactor() lack them.
   int appendDirections(const Eigen::MatrixXd& candidates, double drop = 1e-8);
+  /// Completes the directions to span every interface row (size() becomes maxSize()): the pending
+  /// ones solved, then an orthonormal complement of Zs appended, the last columns of the Householder
+  /// Q of [Zs Ω] (Ω Gaussian, d n_C × (d n_C − p)), with T = D Z and the energy factor extended; no
+  /// sparse solve. Throws std::logic_error unless condensesInterface().
+  void completeToEveryRow();
   /// Solves the pending directions' responses in one multi-right-hand-side solve, stores them and
   /// their traces, and extends the energy factor.
   void solvePending();
@@ -71,6 +76,8 @@ class ResponseBasis {
   long sparseSolves() const { return sparse_solves_; }
   /// Whether the traces come from D = B A⁻¹ Bᵀ of the factor's trailing block (no solve per direction).
   bool condensesInterface() const { return condensed_.size() > 0; }
+  /// D = B A⁻¹ Bᵀ (d n_C × d n_C) when condensesInterface(), else empty.
+  const Eigen::MatrixXd& condensedInterface() const { return condensed_; }
   /// B_rows (U_F G + X c), the displacements on other rows (e.g. of contact nodes left out) of the
   /// history with coordinates c (p' × m, p' ≤ p): with X when every response is known, else
   /// B_rows U_F G + B_rows A⁻¹ Bᵀ (Z c) with rank(Z c) solves (linalg/low_rank_solve.hpp).

@@ -9,6 +9,10 @@ struct ControlledStageOptions {
   /// γ: the projection error is kept below γ times the previous iteration's gap ‖s − ŝ‖. Must be
   /// small against 1 − ρ (LATIN's rate ρ ≈ 0.9 on the seed scene); 0.05 measured in docs/floor.md.
   double gap_share = 0.05;
+  /// Share of the interface rows d n_C from which the directions are completed to span them all
+  /// when the factor gives D = B A⁻¹ Bᵀ (pgd/controlled_global_stage.hpp, "Every row"): 1 completes
+  /// only a basis the enrichment has filled.
+  double full_share = 0.3;
   int block = 8;             ///< directions added per enrichment pass at most
   int oversampling = 4;      ///< extra random samples of the range finder
   int power_iterations = 1;  ///< subspace iterations of the range finder
@@ -16,6 +20,7 @@ struct ControlledStageOptions {
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
     visit("pgd_gap_share", o.gap_share, inOpenUnit());
+    visit("pgd_full_share", o.full_share, inUnitHalfOpen());
     visit("block", o.block, atLeast(1), Exposure::Library);
     visit("oversampling", o.oversampling, atLeast(0), Exposure::Library);
     visit("power_iterations", o.power_iterations, atLeast(0), Exposure::Library);

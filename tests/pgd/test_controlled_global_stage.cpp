@@ -2,7 +2,8 @@
 // k⁻¹-orthonormal with exact responses; the stage's iterate is in equilibrium, departs from the
 // exact global stage by no more than its projection error (and no less than 1/√2 of it), and is
 // the exact global stage once the directions span the right-hand sides; on a mid-sized zone its
-// interface operator comes from the factor (no solve per direction).
+// interface operator comes from the factor (no solve per direction), and from a share of its rows
+// the directions are completed to span them all, after which the stage is exact.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -138,6 +139,34 @@ TEST(ResponseBasis, TracesFromTheFactorsTrailingBlockAreThoseOfTheSolves) {
   EXPECT_EQ(condensed.sparseSolves(), loads + 3 + 11);
 }
 
+// Completed to span every row (from 11 directions), the basis stays k⁻¹-orthonormal, its traces are
+// D Z = B A⁻¹ Bᵀ Z (checked against solves), its energy factor covers every column, and no sparse
+// solve was made. A basis whose factor does not give D refuses.
+TEST(ResponseBasis, CompletedToEveryRowIsOrthonormalWithTheTracesOfD) {
+  const auto& f = fixture();
+  const Eigen::SparseMatrix<double> A = stc::latin::searchDirectionOperator(f.problem);
+  const stc::SpdFactor plain(A, "K + B^T k B"), last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
+  stc::pgd::ResponseBasis solved(f.problem, plain), condensed(f.problem, last);
+  EXPECT_THROW(solved.completeToEveryRow(), std::logic_error);
+  std::srand(13);
+  const int n = f.problem.contact.rows();
+  ASSERT_EQ(condensed.append(Eigen::MatrixXd::Random(n, 11)), 11);
+  const Eigen::MatrixXd before = condensed.directions();
+  const long loads = condensed.sparseSolves();
+  condensed.completeToEveryRow();
+  ASSERT_EQ(condensed.size(), n);
+  EXPECT_EQ(condensed.sparseSolves(), loads);
+  EXPECT_TRUE(Eigen::MatrixXd(condensed.directions().leftCols(11)) == before);  // the first ones kept
+  const Eigen::MatrixXd Zs = condensed.scaledDirections();
+  EXPECT_LE((Zs.transpose() * Zs - Eigen::MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff(), 1e-12);
+  const Eigen::MatrixXd Z = condensed.directions();
+  const Eigen::MatrixXd T = f.problem.contact.B * plain.solve(Eigen::MatrixXd(f.problem.contact.B.transpose() * Z));
+  EXPECT_LE((Eigen::MatrixXd(condensed.traces()) - T).norm(), 1e-10 * T.norm());
+  EXPECT_EQ(condensed.energyFactor().size(), condensed.loadResponses().cols() + n);
+  condensed.completeToEveryRow();  // already complete: nothing changes
+  EXPECT_EQ(condensed.size(), n);
+}
+
 TEST(ControlledGlobalStage, DepartsFromTheExactStageByItsProjectionError) {
   const auto& f = fixture();
   stc::latin::GlobalStage exact(f.problem);
@@ -253,4 +282,43 @@ TEST(ControlledGlobalStage, CondensesTheZoneOfThe801NodeSeedMeshWhereTheIncremen
   EXPECT_TRUE(stage.basis().condensesInterface());
   const stc::SpdFactor incremental(problem.stiffness_free, "K_ff", stc::dofsReadBy(problem.contact.B));
   EXPECT_FALSE(incremental.condenses(problem.contact.B));
+}
+
+// From ControlledStageOptions::full_share of its rows (here 0.5 %: 3 of the zone's 462) the stage
+// completes its directions (no sparse solve) and is then the exact global stage, v = V_F G + D w;
+// its coordinates, formed when asked for, give v through the traces, and the anticipation of the
+// same right-hand side gives them too.
+TEST(ControlledGlobalStage, SpansEveryRowFromItsShareAndIsThenTheExactStage) {
+  stc::Problem problem = stc::buildProblem(stc::test::seedScene(801, 3));
+  const std::optional<std::vector<int>> zone = stc::reachZone(problem);
+  ASSERT_TRUE(zone);
+  problem.contact = stc::restrictToNodes(problem.contact, *zone);
+  const int n = problem.contact.rows(), m = problem.numSteps();
+  stc::pgd::ControlledStageOptions options;
+  options.full_share = 0.005;
+  stc::pgd::ControlledGlobalStage stage(problem, options);
+  ASSERT_TRUE(stage.basis().condensesInterface());
+  std::srand(17);
+  stc::InterfaceHistory first{1e-3 * Eigen::MatrixXd::Random(n, m), Eigen::MatrixXd::Random(n, m)}, s;
+  stage.solve(first, s);
+  ASSERT_FALSE(stage.spansEveryRow());
+  ASSERT_GE(stage.rank(), 3);  // the rank of w: its 3 instants
+  ASSERT_LT(stage.rank(), n);
+  const long solves = stage.sparseSolves();
+  const stc::InterfaceHistory hat{1e-3 * Eigen::MatrixXd::Random(n, m), Eigen::MatrixXd::Random(n, m)};
+  stage.solve(hat, s);
+  EXPECT_TRUE(stage.spansEveryRow());
+  EXPECT_EQ(stage.rank(), n);
+  EXPECT_EQ(stage.sparseSolves(), solves);
+  EXPECT_EQ(stage.projectionError(), 0.0);
+  stc::latin::GlobalStage exact(problem);
+  stc::InterfaceHistory s_exact;
+  exact.solve(hat, s_exact);
+  const double size = distance(problem, s_exact, stc::InterfaceHistory::zeros(problem.contact, m));
+  EXPECT_LE(distance(problem, s, s_exact), 1e-9 * size);
+  const Eigen::MatrixXd c = stage.coordinates();
+  ASSERT_EQ(c.rows(), n);
+  const Eigen::MatrixXd v = stage.basis().freeResponse() + stage.basis().traces() * c;
+  EXPECT_LE((v - s.v).norm(), 1e-10 * s.v.norm());
+  EXPECT_LE((stage.anticipate(hat) - c).norm(), 1e-12 * c.norm());
 }

@@ -451,6 +451,8 @@ TEST(SceneReaderErrors, FasRangesAreChecked) {
   EXPECT_THAT(errorOf(kSeed + "pgd_gap_share = 1\n"), HasSubstr("'solver.pgd_gap_share' = 1"));
   EXPECT_THAT(errorOf(kSeed + "pgd_increment_modes = -1\n"), HasSubstr("'solver.pgd_increment_modes' = -1"));
   EXPECT_THAT(errorOf(kSeed + "pgd_gap_share = 0\n"), HasSubstr("'solver.pgd_gap_share' = 0"));
+  EXPECT_THAT(errorOf(kSeed + "pgd_full_share = 0\n"), HasSubstr("'solver.pgd_full_share' = 0"));
+  EXPECT_THAT(errorOf(kSeed + "pgd_full_share = 1.5\n"), HasSubstr("'solver.pgd_full_share' = 1.5"));
   EXPECT_THAT(errorOf(kSeed + "coarse_start = \"middle\"\n"), HasSubstr("solver.coarse_start"));
   EXPECT_THAT(errorOf(kSeed + "adapt_coarse_iterations = 1\n"), HasSubstr("solver.adapt_coarse_iterations"));
   EXPECT_THAT(errorOf(kSeed + "pgd_anticipate = \"yes\"\n"), HasSubstr("solver.pgd_anticipate"));
