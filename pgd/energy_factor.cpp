@@ -1,5 +1,6 @@
 #include "stcontact/pgd/energy_factor.hpp"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -36,6 +37,38 @@ void EnergyFactor::append(const Eigen::VectorXd& products) {
   RK_.row(r).head(r).setZero();
   RK_(r, r) = pivot;
   kept_.push_back(j);
+}
+
+void EnergyFactor::appendBlock(const Eigen::MatrixXd& products) {
+  const int s = size_, r = rank(), b = static_cast<int>(products.cols());
+  if (products.rows() != s + b) throw std::invalid_argument("EnergyFactor::appendBlock: needs size() + b rows");
+  // Y = R_K⁻ᵀ M(K, new), then the Schur complement S = M(new, new) − YᵀY = UᵀU of the new block.
+  Eigen::MatrixXd Y(r, b);
+  for (int i = 0; i < r; ++i) Y.row(i) = products.row(kept_[static_cast<size_t>(i)]);
+  RK_.topLeftCorner(r, r).triangularView<Eigen::Upper>().transpose().solveInPlace(Y);
+  Eigen::MatrixXd S = products.bottomRows(b).selfadjointView<Eigen::Upper>();
+  S.noalias() -= Y.transpose() * Y;
+  const Eigen::LLT<Eigen::MatrixXd> llt(S);
+  bool independent = llt.info() == Eigen::Success;
+  const Eigen::MatrixXd U = llt.matrixU();
+  for (int a = 0; independent && a < b; ++a) {
+    const double energy = products(s + a, a), rest = U(a, a) * U(a, a);
+    independent = energy > 0.0 && rest > drop_ * energy && std::isfinite(rest);
+  }
+  if (!independent) {  // a dependent column: append's rules, one column at a time
+    for (int a = 0; a < b; ++a) append(products.col(a).head(s + a + 1));
+    return;
+  }
+  reserve(R_, s + b);
+  reserve(RK_, r + b);
+  R_.block(0, s, r, b) = Y;
+  R_.block(r, 0, b, s).setZero();
+  R_.block(r, s, b, b) = U;
+  RK_.block(0, r, r, b) = Y;
+  RK_.block(r, 0, b, r).setZero();
+  RK_.block(r, r, b, b) = U;
+  for (int a = 0; a < b; ++a) kept_.push_back(s + a);
+  size_ += b;
 }
 
 Eigen::MatrixXd EnergyFactor::whiten(const Eigen::MatrixXd& theta) const {

@@ -20,6 +20,12 @@ class EnergyFactor {
   /// Appends the column j = size() of Φ given its energy products with every column so far and
   /// itself: `products` = Φᵀ A φ_j (j + 1 entries, the last one φ_jᵀ A φ_j).
   void append(const Eigen::VectorXd& products);
+  /// Appends b columns at once, the same factor as b calls of append to round-off: `products`
+  /// ((size() + b) × b), column a holding Φᵀ A φ_{size()+a} in its first size() + a + 1 entries (the
+  /// rest is not read). Their coefficients on Φ̂ come from one triangular solve with b right-hand
+  /// sides, their own rows from the Cholesky factor of the Schur complement of their block, or
+  /// column by column (append) when one of them is dependent.
+  void appendBlock(const Eigen::MatrixXd& products);
 
   int size() const { return size_; }                          ///< s: columns of Φ
   int rank() const { return static_cast<int>(kept_.size()); } ///< s': rows of R

@@ -10,7 +10,6 @@ namespace stc::pgd {
 namespace {
 
 constexpr double kReorthogonalise = 0.70710678118654752;  ///< 1/√2: a second Gram–Schmidt pass below it
-constexpr unsigned kComplementSeed = 20131001u;            ///< Ω of completeToEveryRow: the same on every run
 
 }  // namespace
 
@@ -83,17 +82,10 @@ Eigen::MatrixXd ResponseBasis::orthonormalised(const Eigen::MatrixXd& candidates
 void ResponseBasis::extendEnergyFactor(Eigen::Index added) {
   // For a new direction z_j: φ_iᵀ A φ_j = (B φ_i)ᵀ z_j, i ≤ j (the factor reads one triangle; the
   // other side, z_iᵀ (B φ_j), agrees to the sparse solves' accuracy and read all of Z again).
-  const Eigen::Index p = Z_.cols() - added;
   const View Z = Z_.view(), T = T_.view();
-  const Eigen::MatrixXd load_part = VF_.transpose() * Z.rightCols(added);   // q × added
-  const Eigen::MatrixXd TZ = T.transpose() * Z.rightCols(added);            // (p + added) × added
-  const Eigen::Index q = VF_.cols();
-  for (Eigen::Index a = 0; a < added; ++a) {
-    Eigen::VectorXd products(q + p + a + 1);
-    products.head(q) = load_part.col(a);
-    products.tail(p + a + 1) = TZ.col(a).head(p + a + 1);
-    energy_.append(products);
-  }
+  Eigen::MatrixXd products(VF_.cols() + Z.cols(), added);  // (q + p + added) × added
+  products << VF_.transpose() * Z.rightCols(added), T.transpose() * Z.rightCols(added);
+  energy_.appendBlock(products);
 }
 
 Eigen::MatrixXd ResponseBasis::solveColumns(const Eigen::MatrixXd& rhs) const {
@@ -133,9 +125,7 @@ void ResponseBasis::completeToEveryRow() {
   solvePending();
   const Eigen::Index n = maxSize(), p = size();
   if (p == n) return;
-  Eigen::MatrixXd Y(n, n);
-  Y << Zs_.view(), linalg::gaussianSketch(n, n - p, kComplementSeed);
-  const Eigen::MatrixXd scaled = linalg::orthonormalColumns(Y).rightCols(n - p);
+  const Eigen::MatrixXd scaled = linalg::orthonormalComplement(Zs_.view());
   Zs_.append(scaled);
   Z_.append(sqrt_k_.asDiagonal() * scaled);
   pending_ = n - p;

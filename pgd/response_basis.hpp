@@ -60,9 +60,9 @@ class ResponseBasis {
   /// (src/linalg/spd_factor.cpp). Until then responses(), traces() and energyFactor() lack them.
   int appendDirections(const Eigen::MatrixXd& candidates, double drop = 1e-8);
   /// Completes the directions to span every interface row (size() becomes maxSize()): the pending
-  /// ones solved, then an orthonormal complement of Zs appended, the last columns of the Householder
-  /// Q of [Zs Ω] (Ω Gaussian, d n_C × (d n_C − p)), with T = D Z and the energy factor extended; no
-  /// sparse solve. Throws std::logic_error unless condensesInterface().
+  /// ones solved, then an orthonormal complement of Zs appended (linalg::orthonormalComplement),
+  /// with T = D Z and the energy factor extended; no sparse solve. Throws std::logic_error unless
+  /// condensesInterface().
   void completeToEveryRow();
   /// Solves the pending directions' responses in one multi-right-hand-side solve, stores them and
   /// their traces, and extends the energy factor.

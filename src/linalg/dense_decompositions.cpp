@@ -14,6 +14,8 @@ void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau,
              int* info);
 void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
              const int* lwork, int* info);
+void dormqr_(const char* side, const char* trans, const int* m, const int* n, const int* k, const double* a,
+             const int* lda, const double* tau, double* c, const int* ldc, double* work, const int* lwork, int* info);
 void dgesvd_(const char* jobu, const char* jobvt, const int* m, const int* n, double* a, const int* lda, double* s,
              double* u, const int* ldu, double* vt, const int* ldvt, double* work, const int* lwork, int* info);
 }
@@ -47,6 +49,24 @@ bool lapackThinQ(Eigen::MatrixXd& A) {
   dgeqrf_(&m, &n, A.data(), &lda, tau.data(), work.data(), &lwork, &info);
   if (info != 0) return false;
   dorgqr_(&m, &n, &n, A.data(), &lda, tau.data(), work.data(), &lwork, &info);
+  return info == 0;
+}
+
+// C ← H(1) ⋯ H(p) C for the reflectors of dgeqrf of A (m × p) (LAPACK's dormqr): with C = [0; I]
+// the last m − p columns of the full Q, an orthonormal basis of the complement of A's range.
+bool lapackApplyQ(Eigen::MatrixXd A, Eigen::MatrixXd& C) {
+  const int m = static_cast<int>(A.rows()), p = static_cast<int>(A.cols()), n = static_cast<int>(C.cols());
+  const int lda = std::max(m, 1);
+  Eigen::VectorXd tau(std::max(p, 1));
+  int info = 0, query = -1;
+  double size_qr = 0.0, size_apply = 0.0;
+  dgeqrf_(&m, &p, A.data(), &lda, tau.data(), &size_qr, &query, &info);
+  dormqr_("L", "N", &m, &n, &p, A.data(), &lda, tau.data(), C.data(), &lda, &size_apply, &query, &info);
+  int lwork = static_cast<int>(std::max({size_qr, size_apply, 1.0}));
+  Eigen::VectorXd work(lwork);
+  dgeqrf_(&m, &p, A.data(), &lda, tau.data(), work.data(), &lwork, &info);
+  if (info != 0) return false;
+  dormqr_("L", "N", &m, &n, &p, A.data(), &lda, tau.data(), C.data(), &lda, work.data(), &lwork, &info);
   return info == 0;
 }
 
@@ -98,6 +118,20 @@ Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y) {
 #endif
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
   return qr.householderQ() * Eigen::MatrixXd::Identity(Y.rows(), Y.cols());
+}
+
+Eigen::MatrixXd orthonormalComplement(const Eigen::MatrixXd& Q) {
+  const Eigen::Index n = Q.rows(), p = Q.cols();
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(n, n - p);
+  C.bottomRows(n - p).setIdentity();
+  if (p == 0 || p == n) return C;
+#ifdef EIGEN_USE_BLAS
+  if (lapackApplyQ(Q, C)) return C;
+  C.setZero();
+  C.bottomRows(n - p).setIdentity();
+#endif
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Q);
+  return qr.householderQ() * C;
 }
 
 SymmetricEigen symmetricEigen(const Eigen::MatrixXd& M) {

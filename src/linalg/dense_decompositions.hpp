@@ -13,6 +13,11 @@ namespace stc::linalg {
 /// Y's first k when those are independent.
 Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y);
 
+/// An orthonormal basis (n × (n − p)) of the complement of the range of Q (n × p, p ≤ n, orthonormal
+/// columns): the last n − p columns of the full Q of Q's Householder QR, [0; I] with the reflectors
+/// applied (LAPACK's dgeqrf and dormqr where orthonormalColumns uses LAPACK, Eigen otherwise).
+Eigen::MatrixXd orthonormalComplement(const Eigen::MatrixXd& Q);
+
 /// Eigenpairs of the symmetric M (Eigen::SelfAdjointEigenSolver, which reads its lower triangle),
 /// eigenvalues ascending, eigenvector j in column j. `converged` is false when the QR iterations did not.
 struct SymmetricEigen {

@@ -51,6 +51,25 @@ TEST(DenseDecompositions, OrthonormalColumnsOfAWideBlockWithADependentColumn) {
   }
 }
 
+// The complement of an orthonormal block: orthonormal, orthogonal to the block, and with it a square
+// orthogonal matrix; on a small block and on one wider than LAPACK's blocks of 32 (dormqr's blocked
+// path); an empty block gives the identity, a square one nothing.
+TEST(DenseDecompositions, OrthonormalComplementCompletesAnOrthonormalBlock) {
+  for (const auto& [n, p] : {std::pair{30, 7}, std::pair{300, 110}}) {
+    const Eigen::MatrixXd Q = orthonormalColumns(gaussianSketch(n, p, 9));
+    const Eigen::MatrixXd C = orthonormalComplement(Q);
+    ASSERT_EQ(C.rows(), n);
+    ASSERT_EQ(C.cols(), n - p);
+    EXPECT_LT((C.transpose() * C - Eigen::MatrixXd::Identity(n - p, n - p)).cwiseAbs().maxCoeff(), 1e-13) << n;
+    EXPECT_LT((Q.transpose() * C).cwiseAbs().maxCoeff(), 1e-13) << n;
+    Eigen::MatrixXd square(n, n);
+    square << Q, C;
+    EXPECT_LT((square * square.transpose() - Eigen::MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff(), 1e-13) << n;
+  }
+  EXPECT_EQ(orthonormalComplement(Eigen::MatrixXd(6, 0)), Eigen::MatrixXd::Identity(6, 6));
+  EXPECT_EQ(orthonormalComplement(orthonormalColumns(gaussianSketch(6, 6, 4))).cols(), 0);
+}
+
 TEST(DenseDecompositions, SymmetricEigenReconstructsAscending) {
   const Eigen::MatrixXd G = gaussianSketch(12, 12, 4);
   const Eigen::MatrixXd M = G + G.transpose();

@@ -54,6 +54,29 @@ TEST(EnergyFactor, ADependentColumnGetsNoRowButKeepsItsCoordinates) {
   EXPECT_LE((Y * factor.whiten(theta) - Phi * theta).norm(), 1e-10 * (Phi * theta).norm());
 }
 
+// Blocks of columns (after 5 single ones, then 9 and 6 at once) give the factor of the same columns
+// appended one by one; a block with a dependent column falls back to append's rules (no row).
+TEST(EnergyFactor, ABlockOfColumnsIsTheirAppendOneByOne) {
+  const Eigen::MatrixXd A = spd(40);
+  for (const bool dependent : {false, true}) {
+    Eigen::MatrixXd Phi = Eigen::MatrixXd::Random(40, 20);
+    if (dependent) Phi.col(17) = Phi.col(2) - 3.0 * Phi.col(12);
+    const Eigen::MatrixXd M = Phi.transpose() * A * Phi;
+    stc::pgd::EnergyFactor blocks;
+    for (int j = 0; j < 5; ++j) blocks.append(M.col(j).head(j + 1));
+    blocks.appendBlock(M.block(0, 5, 14, 9));
+    blocks.appendBlock(M.block(0, 14, 20, 6));
+    const stc::pgd::EnergyFactor single = factorOf(Phi, A);
+    ASSERT_EQ(blocks.size(), 20);
+    ASSERT_EQ(blocks.rank(), dependent ? 19 : 20);
+    ASSERT_EQ(single.rank(), blocks.rank());
+    const Eigen::MatrixXd R = single.coordinatesOfColumns();
+    EXPECT_LE((Eigen::MatrixXd(blocks.coordinatesOfColumns()) - R).norm(), 1e-12 * R.norm()) << dependent;
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(blocks.rank(), blocks.rank());
+    EXPECT_LE((blocks.combination(I) - single.combination(I)).norm(), 1e-10 * single.combination(I).norm());
+  }
+}
+
 TEST(EnergyFactor, ProjectionsAreTheCoordinatesOfTheEnergyProjectionOnTheSpan) {
   const Eigen::MatrixXd A = spd(20);
   Eigen::MatrixXd Phi = Eigen::MatrixXd::Random(20, 6);
