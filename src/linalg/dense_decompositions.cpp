@@ -122,9 +122,10 @@ Eigen::MatrixXd orthonormalColumns(const Eigen::MatrixXd& Y) {
 
 Eigen::MatrixXd orthonormalComplement(const Eigen::MatrixXd& Q) {
   const Eigen::Index n = Q.rows(), p = Q.cols();
+  if (p >= n) return Eigen::MatrixXd(n, 0);  // no block of an n × 0 matrix (UBSan: offset on null)
   Eigen::MatrixXd C = Eigen::MatrixXd::Zero(n, n - p);
   C.bottomRows(n - p).setIdentity();
-  if (p == 0 || p == n) return C;
+  if (p == 0) return C;
 #ifdef EIGEN_USE_BLAS
   if (lapackApplyQ(Q, C)) return C;
   C.setZero();
