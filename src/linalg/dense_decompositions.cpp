@@ -34,40 +34,48 @@ Svd fromDecomposition(const Decomposition& d, unsigned vectors) {
 }
 
 #ifdef EIGEN_USE_BLAS
+// LAPACK's dgeqrf of A (m × p) in place, the reflectors below its diagonal and their factors in
+// `tau`, then `use(work, lwork)`, the routine that forms or applies them (it returns LAPACK's info):
+// both are asked for their workspace first (lwork = −1, the size in work[0]) and then run with one
+// that fits both. False when either fails.
+template <class Use>
+bool householderThen(Eigen::MatrixXd& A, Eigen::VectorXd& tau, Use&& use) {
+  const int m = static_cast<int>(A.rows()), p = static_cast<int>(A.cols()), lda = std::max(m, 1);
+  tau.resize(std::max(p, 1));
+  int info = 0, query = -1;
+  double size_qr = 0.0, size_use = 0.0;
+  dgeqrf_(&m, &p, A.data(), &lda, tau.data(), &size_qr, &query, &info);
+  use(&size_use, query);
+  int lwork = static_cast<int>(std::max({size_qr, size_use, 1.0}));
+  Eigen::VectorXd work(lwork);
+  dgeqrf_(&m, &p, A.data(), &lda, tau.data(), work.data(), &lwork, &info);
+  return info == 0 && use(work.data(), lwork) == 0;
+}
+
 // The first n columns of Q = H(1) H(2) ⋯ H(n), the reflectors of dgeqrf (LAPACK's dorgqr): the ones
 // Eigen::HouseholderQR forms, applied in blocks of OpenBLAS products. On the range finders' shapes
 // (201 to 987 rows, 20 to 100 columns) 0.28 to 0.92 of Eigen's time (bench/bench_dense.cpp).
 bool lapackThinQ(Eigen::MatrixXd& A) {
   const int m = static_cast<int>(A.rows()), n = static_cast<int>(A.cols()), lda = std::max(m, 1);
-  Eigen::VectorXd tau(n);
-  int info = 0, query = -1;
-  double size_qr = 0.0, size_q = 0.0;
-  dgeqrf_(&m, &n, A.data(), &lda, tau.data(), &size_qr, &query, &info);
-  dorgqr_(&m, &n, &n, A.data(), &lda, tau.data(), &size_q, &query, &info);
-  int lwork = static_cast<int>(std::max({size_qr, size_q, 1.0}));
-  Eigen::VectorXd work(lwork);
-  dgeqrf_(&m, &n, A.data(), &lda, tau.data(), work.data(), &lwork, &info);
-  if (info != 0) return false;
-  dorgqr_(&m, &n, &n, A.data(), &lda, tau.data(), work.data(), &lwork, &info);
-  return info == 0;
+  Eigen::VectorXd tau;
+  return householderThen(A, tau, [&](double* work, int lwork) {
+    int info = 0;
+    dorgqr_(&m, &n, &n, A.data(), &lda, tau.data(), work, &lwork, &info);
+    return info;
+  });
 }
 
 // C ← H(1) ⋯ H(p) C for the reflectors of dgeqrf of A (m × p) (LAPACK's dormqr): with C = [0; I]
 // the last m − p columns of the full Q, an orthonormal basis of the complement of A's range.
 bool lapackApplyQ(Eigen::MatrixXd A, Eigen::MatrixXd& C) {
   const int m = static_cast<int>(A.rows()), p = static_cast<int>(A.cols()), n = static_cast<int>(C.cols());
-  const int lda = std::max(m, 1);
-  Eigen::VectorXd tau(std::max(p, 1));
-  int info = 0, query = -1;
-  double size_qr = 0.0, size_apply = 0.0;
-  dgeqrf_(&m, &p, A.data(), &lda, tau.data(), &size_qr, &query, &info);
-  dormqr_("L", "N", &m, &n, &p, A.data(), &lda, tau.data(), C.data(), &lda, &size_apply, &query, &info);
-  int lwork = static_cast<int>(std::max({size_qr, size_apply, 1.0}));
-  Eigen::VectorXd work(lwork);
-  dgeqrf_(&m, &p, A.data(), &lda, tau.data(), work.data(), &lwork, &info);
-  if (info != 0) return false;
-  dormqr_("L", "N", &m, &n, &p, A.data(), &lda, tau.data(), C.data(), &lda, work.data(), &lwork, &info);
-  return info == 0;
+  const int ld = std::max(m, 1);
+  Eigen::VectorXd tau;
+  return householderThen(A, tau, [&](double* work, int lwork) {
+    int info = 0;
+    dormqr_("L", "N", &m, &n, &p, A.data(), &ld, tau.data(), C.data(), &ld, work, &lwork, &info);
+    return info;
+  });
 }
 
 // A = U Σ Vᵀ for a tall A (rows ≥ cols) by dgesvd: its QR first, then the bidiagonal SVD of R by
@@ -127,9 +135,7 @@ Eigen::MatrixXd orthonormalComplement(const Eigen::MatrixXd& Q) {
   C.bottomRows(n - p).setIdentity();
   if (p == 0) return C;
 #ifdef EIGEN_USE_BLAS
-  if (lapackApplyQ(Q, C)) return C;
-  C.setZero();
-  C.bottomRows(n - p).setIdentity();
+  if (Eigen::MatrixXd applied = C; lapackApplyQ(Q, applied)) return applied;
 #endif
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Q);
   return qr.householderQ() * C;
