@@ -93,10 +93,6 @@ const Eigen::MatrixXd& ControlledGlobalStage::coordinates() const {
 double ControlledGlobalStage::project(const Eigen::MatrixXd& w_scaled, Eigen::MatrixXd& c, Eigen::MatrixXd& r_scaled) {
   const Eigen::MatrixXd& scaled = basis_.scaledDirections();
   c.noalias() = scaled.transpose() * w_scaled;
-  if (every_row_) {  // Zs is square and orthogonal: nothing is left
-    r_scaled.setZero(w_scaled.rows(), w_scaled.cols());
-    return 0.0;
-  }
   r_scaled = w_scaled;
   r_scaled.noalias() -= scaled * c;
   // Before any gap is known (the first solve, or a warm start) the bound is a share of w itself.
@@ -107,7 +103,10 @@ double ControlledGlobalStage::project(const Eigen::MatrixXd& w_scaled, Eigen::Ma
 Eigen::MatrixXd ControlledGlobalStage::anticipate(const InterfaceHistory& hat) {
   completeWhenDue();
   Eigen::MatrixXd c, r_scaled;
-  project(scaledRightHandSides(hat), c, r_scaled);
+  if (every_row_)  // Zs is square and orthogonal: nothing is left to enrich along
+    c.noalias() = basis_.scaledDirections().transpose() * scaledRightHandSides(hat);
+  else
+    project(scaledRightHandSides(hat), c, r_scaled);
   return c;
 }
 
