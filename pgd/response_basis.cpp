@@ -141,14 +141,36 @@ ResponseBasis::View ResponseBasis::responses() const {
   return X_.view();
 }
 
+Eigen::MatrixXd ResponseBasis::liftedInterface(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& M) const {
+  const Eigen::Index p = M.rows();
+  if (X_.cols() >= p) return (B_rows * X_.view().leftCols(p)) * M;
+  return linalg::solveThroughRank(factor_, B_rows, problem_.contact.B, Z_.view().leftCols(p) * M, sparse_solves_);
+}
+
 Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& c) const {
   Eigen::MatrixXd v = (B_rows * UF_) * G_;
-  if (c.rows() == 0) return v;
-  if (X_.cols() >= c.rows())
-    v.noalias() += (B_rows * X_.view().leftCols(c.rows())) * c;
-  else
-    v += linalg::solveThroughRank(factor_, B_rows, problem_.contact.B, Z_.view().leftCols(c.rows()) * c, sparse_solves_);
+  if (c.rows() > 0) v += liftedInterface(B_rows, c);
   return v;
+}
+
+Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& c,
+                                              double energy_budget) const {
+  if (!(energy_budget > 0.0) || c.rows() == 0 || pending_ > 0) return displacementOn(B_rows, c);
+  const Eigen::Index q = G_.rows();
+  Eigen::MatrixXd theta = Eigen::MatrixXd::Zero(q + c.rows(), c.cols());
+  theta << G_, c;
+  const linalg::Svd svd = linalg::singularValueDecomposition(energy_.whiten(theta), linalg::SvdMethod::divide_and_conquer,
+                                                             linalg::kThinU | linalg::kThinV);
+  // ρ: the fewest leading modes whose tail Σ_{i>ρ} σ_i² is within the budget.
+  Eigen::Index rho = svd.values.size();
+  for (double tail = 0.0; rho > 0 && tail + svd.values[rho - 1] * svd.values[rho - 1] <= energy_budget; --rho)
+    tail += svd.values[rho - 1] * svd.values[rho - 1];
+  if (rho == svd.values.size()) return displacementOn(B_rows, c);
+  const Eigen::MatrixXd C = energy_.combination(svd.U.leftCols(rho));  // (q + p) × ρ
+  const Eigen::MatrixXd time = svd.values.head(rho).asDiagonal() * svd.V.leftCols(rho).transpose();
+  Eigen::MatrixXd modes = (B_rows * UF_) * C.topRows(q);
+  modes += liftedInterface(B_rows, C.middleRows(q, c.rows()));
+  return modes * time;
 }
 
 int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {

@@ -82,6 +82,15 @@ class ResponseBasis {
   /// history with coordinates c (p' × m, p' ≤ p): with X when every response is known, else
   /// B_rows U_F G + B_rows A⁻¹ Bᵀ (Z c) with rank(Z c) solves (linalg/low_rank_solve.hpp).
   Eigen::MatrixXd displacementOn(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& c) const;
+  /// The same, of the history truncated in energy: with Θ = [G; c] and its whitened coordinates
+  /// R Θ = U Σ Vᵀ (energy_factor.hpp: u = Φ̂ R Θ, Φ̂ A-orthonormal), the fewest ρ modes whose
+  /// dropped energy Σ_{i>ρ} σ_i² = Σ_k ‖u_k − u_ρ,k‖²_A is at most `energy_budget`,
+  ///   B_rows u_ρ = B_rows Φ C Σ_ρ V_ρᵀ,   Φ C = Φ̂ U_ρ (EnergyFactor::combination),
+  /// with at most ρ solves (none when every response is known). Since K_ff ≤ A = K_ff + Bᵀ k B, the
+  /// dropped energy bounds Σ_k δu_kᵀ K δu_k too (δu has no prescribed part). `energy_budget` ≤ 0,
+  /// or a truncation that keeps every mode: displacementOn(B_rows, c).
+  Eigen::MatrixXd displacementOn(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& c,
+                                 double energy_budget) const;
 
  private:
   /// k^{-1/2}-scaled candidates made orthonormal to Zs and each other; dependent ones dropped.
@@ -90,6 +99,9 @@ class ResponseBasis {
   /// A⁻¹ rhs, its columns solved in parts of 4 spread over threadCount() threads (the parts do not
   /// depend on the thread count, so neither does the result).
   Eigen::MatrixXd solveColumns(const Eigen::MatrixXd& rhs) const;
+  /// B_rows A⁻¹ Bᵀ (Z_p M) for the first p = M.rows() directions: with X when their responses are
+  /// known, else through the rank of Z_p M (linalg/low_rank_solve.hpp).
+  Eigen::MatrixXd liftedInterface(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& M) const;
 
   const Problem& problem_;
   const SpdFactor& factor_;

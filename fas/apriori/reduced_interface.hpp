@@ -64,7 +64,8 @@ class ErrorOnRows : public ErrorMeasure {
 /// One `fas-apriori` solve of `problem` (its separated stage, a priori basis and FAS cycle) from
 /// inputs.start, with the directions started from inputs.basis_seed when given; `far_v` receives
 /// B_far u of the last iterate's displacement history (B_far: rows × n_free, e.g. the rows of nodes
-/// left out); the result's spatial modes are left empty unless inputs.spatial_modes. The coarse
+/// left out), truncated in energy to what a converged estimate leaves of the tolerance (at most
+/// (τ − ε_est)² E dropped, E the iterate's energy: pgd::ResponseBasis::displacementOn); the result's spatial modes are left empty unless inputs.spatial_modes. The coarse
 /// spaces come from `coarse_basis` here and in the two functions below (the a priori ones by default).
 SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
                            const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v,

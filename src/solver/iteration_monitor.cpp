@@ -52,6 +52,7 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
   if (!summary_.history.empty() && rank != summary_.history.back().rank) rank_changed_ = r.iteration;
   const std::optional<double> energy = energy_ ? std::optional<double>((*energy_)(s)) : std::nullopt;
   r.error_estimate = energy ? estimate(s, indicator, *energy) : indicator;
+  r.energy = energy;
   r.error = measureError(lambda);
   r.rank = rank;
   r.sparse_solves = static_cast<int>(sparse_solves);

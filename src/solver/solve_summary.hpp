@@ -23,6 +23,9 @@ struct IterationRecord {
   int rank = 0;                   ///< coarse / PGD basis size (0 for plain LATIN)
   int sparse_solves = 0;          ///< right-hand sides solved with the sparse factor so far
   double wall_s = 0.0;            ///< since the start of the solve
+  /// E = Σ_k u_kᵀ K u_k of the iterate (src/solver/equilibrium_energy.hpp: the true error's
+  /// normalisation), when the solver measures it for its estimate.
+  std::optional<double> energy;
 };
 
 /// A part of a solve beside its main iteration (docs/method.md §5): the solve on a sub-grid of

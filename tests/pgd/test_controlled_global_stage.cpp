@@ -167,6 +167,44 @@ TEST(ResponseBasis, CompletedToEveryRowIsOrthonormalWithTheTracesOfD) {
   EXPECT_EQ(condensed.size(), n);
 }
 
+// The displacement history truncated in energy (a lift that spends a budget): its A-energy from the
+// whole history, Σ_k δu_kᵀ A δu_k with A assembled, is within the budget; it makes fewer solves than
+// the history's rank; no budget gives the exact lift bitwise, a budget above the whole energy gives
+// zero with no solve. B_rows = I: the whole free field.
+TEST(ResponseBasis, DisplacementTruncatedInEnergyStaysWithinItsBudget) {
+  const auto& f = fixture();
+  const Eigen::SparseMatrix<double> A = stc::latin::searchDirectionOperator(f.problem);
+  const stc::SpdFactor last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
+  stc::pgd::ResponseBasis basis(f.problem, last);
+  ASSERT_TRUE(basis.condensesInterface());
+  std::srand(17);
+  ASSERT_EQ(basis.append(Eigen::MatrixXd::Random(f.problem.contact.rows(), 12)), 12);
+  // A history of rank 12 whose modes decay by 10 per mode.
+  const int m = f.problem.numSteps();
+  const Eigen::VectorXd decay = Eigen::VectorXd::LinSpaced(12, 0.0, -11.0).unaryExpr([](double e) { return std::pow(10.0, e); });
+  const Eigen::MatrixXd c = Eigen::MatrixXd::Random(12, 12) * decay.asDiagonal() * Eigen::MatrixXd::Random(12, m);
+  Eigen::SparseMatrix<double> I(f.problem.numFreeDofs(), f.problem.numFreeDofs());
+  I.setIdentity();
+  const auto energy = [&](const Eigen::MatrixXd& u) { return (u.transpose() * A * u).trace(); };
+  long before = basis.sparseSolves();
+  const Eigen::MatrixXd u = basis.displacementOn(I, c);
+  const long exact_solves = basis.sparseSolves() - before;
+  EXPECT_EQ(exact_solves, 12);
+  EXPECT_TRUE(basis.displacementOn(I, c, 0.0) == u);
+  for (const double share : {1e-4, 1e-10, 1e-16}) {
+    const double budget = share * energy(u);
+    before = basis.sparseSolves();
+    const Eigen::MatrixXd truncated = basis.displacementOn(I, c, budget);
+    const long solves = basis.sparseSolves() - before;
+    EXPECT_LE(energy(u - truncated), budget * (1 + 1e-6) + 1e-14 * energy(u)) << share;
+    EXPECT_LT(solves, exact_solves) << share;
+    EXPECT_GE(solves, 1) << share;
+  }
+  before = basis.sparseSolves();
+  EXPECT_EQ(basis.displacementOn(I, c, 2.0 * energy(u)).norm(), 0.0);
+  EXPECT_EQ(basis.sparseSolves(), before);
+}
+
 TEST(ControlledGlobalStage, DepartsFromTheExactStageByItsProjectionError) {
   const auto& f = fixture();
   stc::latin::GlobalStage exact(f.problem);
