@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/pgd/separated_history.hpp"
 #include "stcontact/solver/warm_start.hpp"
 
 namespace stc::pgd {
@@ -108,6 +109,21 @@ Eigen::MatrixXd ControlledGlobalStage::anticipate(const InterfaceHistory& hat) {
   else
     project(scaledRightHandSides(hat), c, r_scaled);
   return c;
+}
+
+Eigen::MatrixXd ControlledGlobalStage::anticipateWhitened(const InterfaceHistory& hat) {
+  completeWhenDue();
+  if (!every_row_) {
+    const Eigen::MatrixXd c = anticipate(hat);  // may enrich: the factor is read after it
+    return basis_.energyFactor().whiten(historyFactor(basis_, c));
+  }
+  const EnergyFactor& factor = basis_.energyFactor();
+  const Eigen::Index q = basis_.loadHistories().rows();
+  if (whitened_rows_.size() == 0)
+    whitened_rows_.noalias() = factor.coordinatesOfColumns().rightCols(basis_.size()) * basis_.scaledDirections().transpose();
+  Eigen::MatrixXd whitened = factor.coordinatesOfColumns().leftCols(q) * basis_.loadHistories();
+  whitened.noalias() += whitened_rows_ * scaledRightHandSides(hat);
+  return whitened;
 }
 
 void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s) {

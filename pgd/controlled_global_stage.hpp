@@ -77,6 +77,11 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// builds the coarse space from it). The last solve's coordinates() are kept; the directions
   /// added stay.
   Eigen::MatrixXd anticipate(const InterfaceHistory& hat);
+  /// The anticipated history's energy coordinates R [G; c] (EnergyFactor::whiten of
+  /// historyFactor(basis(), anticipate(hat))): what the coarse space is built from. Once the
+  /// directions span every row, c = Z̃ᵀ w̃ and R [G; c] = R_G G + (R_Z Z̃ᵀ) w̃ with R_Z Z̃ᵀ formed once,
+  /// one product per call instead of two.
+  Eigen::MatrixXd anticipateWhitened(const InterfaceHistory& hat);
 
  private:
   /// w̃ = k^{-1/2} (λ̂ + k v̂), the scaled right-hand sides of a solve from `hat`.
@@ -96,6 +101,7 @@ class ControlledGlobalStage : public latin::LinearStage {
   ResponseBasis basis_;
   mutable Eigen::MatrixXd c_;
   mutable Eigen::MatrixXd w_last_;  ///< w̃ of the last exact solve, until coordinates() forms c_ from it
+  Eigen::MatrixXd whitened_rows_;   ///< R_Z Z̃ᵀ once the directions span every row (anticipateWhitened)
   bool every_row_ = false;
   double target_ = -1.0;  ///< < 0: no gap observed yet
   double error_ = 0.0;

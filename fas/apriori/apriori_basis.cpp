@@ -11,13 +11,13 @@ AprioriBasisProvider::AprioriBasisProvider(pgd::ControlledGlobalStage& stage, Ap
 }
 
 CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& hat) {
-  // The coordinates of ũ (anticipation first: it may add directions to the basis and its factor).
-  const Eigen::MatrixXd anticipated = options_.anticipate ? stage_.anticipate(hat) : Eigen::MatrixXd();
-  const Eigen::MatrixXd& c = options_.anticipate ? anticipated : stage_.coordinates();
+  // The coordinates of ũ, whitened: in them the A-product is the Euclidean one, and modes are unit
+  // vectors (anticipation first: it may add directions to the basis and its factor).
+  const Eigen::MatrixXd whitened =
+      options_.anticipate ? stage_.anticipateWhitened(hat)
+                          : stage_.basis().energyFactor().whiten(pgd::historyFactor(stage_.basis(), stage_.coordinates()));
   const pgd::ResponseBasis& basis = stage_.basis();
   const pgd::EnergyFactor& factor = basis.energyFactor();
-  // In whitened coordinates the A-product is the Euclidean one: modes are unit vectors there.
-  const Eigen::MatrixXd whitened = factor.whiten(pgd::historyFactor(basis, c));
   if (factor.rank() <= options_.modes + options_.increment_modes) {
     // The whole expansion fits: its span is the coarse space (early cycles, and expansions of low
     // rank such as a problem without contact, whose few energy modes alone starve the coarse step).
