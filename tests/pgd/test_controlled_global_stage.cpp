@@ -19,6 +19,7 @@
 #include "stcontact/latin/local_stage.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
 #include "stcontact/pgd/controlled_global_stage.hpp"
+#include "stcontact/pgd/separated_history.hpp"
 #include "stcontact/problem/time_subgrid.hpp"
 
 namespace {
@@ -359,4 +360,8 @@ TEST(ControlledGlobalStage, SpansEveryRowFromItsShareAndIsThenTheExactStage) {
   const Eigen::MatrixXd v = stage.basis().freeResponse() + stage.basis().traces() * c;
   EXPECT_LE((v - s.v).norm(), 1e-10 * s.v.norm());
   EXPECT_LE((stage.anticipate(hat) - c).norm(), 1e-12 * c.norm());
+  // The whitened anticipation formed from R_Z Z̃ᵀ is the whitening of the anticipated coordinates.
+  const stc::pgd::EnergyFactor& factor = stage.basis().energyFactor();
+  const Eigen::MatrixXd whitened = factor.whiten(stc::pgd::historyFactor(stage.basis(), stage.anticipate(hat)));
+  EXPECT_LE((stage.anticipateWhitened(hat) - whitened).norm(), 1e-10 * whitened.norm());
 }
