@@ -143,6 +143,7 @@ ResponseBasis::View ResponseBasis::responses() const {
 
 Eigen::MatrixXd ResponseBasis::liftedInterface(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& M) const {
   const Eigen::Index p = M.rows();
+  if (B_rows.rows() == 0) return Eigen::MatrixXd(0, M.cols());  // no row to lift to: no solve
   if (X_.cols() >= p) return (B_rows * X_.view().leftCols(p)) * M;
   return linalg::solveThroughRank(factor_, B_rows, problem_.contact.B, Z_.view().leftCols(p) * M, sparse_solves_);
 }
@@ -155,9 +156,9 @@ Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>&
 
 Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& c,
                                               double energy_budget) const {
-  if (!(energy_budget > 0.0) || c.rows() == 0 || pending_ > 0) return displacementOn(B_rows, c);
+  if (!(energy_budget > 0.0) || B_rows.rows() == 0 || c.rows() == 0 || pending_ > 0) return displacementOn(B_rows, c);
   const Eigen::Index q = G_.rows();
-  Eigen::MatrixXd theta = Eigen::MatrixXd::Zero(q + c.rows(), c.cols());
+  Eigen::MatrixXd theta(q + c.rows(), c.cols());
   theta << G_, c;
   const linalg::Svd svd = linalg::singularValueDecomposition(energy_.whiten(theta), linalg::SvdMethod::divide_and_conquer,
                                                              linalg::kThinU | linalg::kThinV);

@@ -65,8 +65,9 @@ class ErrorOnRows : public ErrorMeasure {
 /// inputs.start, with the directions started from inputs.basis_seed when given; `far_v` receives
 /// B_far u of the last iterate's displacement history (B_far: rows × n_free, e.g. the rows of nodes
 /// left out), truncated in energy to what a converged estimate leaves of the tolerance (at most
-/// (τ − ε_est)² E dropped, E the iterate's energy: pgd::ResponseBasis::displacementOn); the result's spatial modes are left empty unless inputs.spatial_modes. The coarse
-/// spaces come from `coarse_basis` here and in the two functions below (the a priori ones by default).
+/// (τ − ε_est)² E dropped, E the iterate's energy: pgd::ResponseBasis::displacementOn); the result's
+/// spatial modes are left empty unless inputs.spatial_modes. The coarse spaces come from
+/// `coarse_basis` here and in the two functions below (the a priori ones by default).
 SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
                            const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v,
                            const SeparatedCoarseBasis& coarse_basis = {});

@@ -171,7 +171,7 @@ TEST(ResponseBasis, CompletedToEveryRowIsOrthonormalWithTheTracesOfD) {
 // The displacement history truncated in energy (a lift that spends a budget): its A-energy from the
 // whole history, Σ_k δu_kᵀ A δu_k with A assembled, is within the budget; it makes fewer solves than
 // the history's rank; no budget gives the exact lift bitwise, a budget above the whole energy gives
-// zero with no solve. B_rows = I: the whole free field.
+// zero with no solve, and no row to lift to no solve at all. B_rows = I: the whole free field.
 TEST(ResponseBasis, DisplacementTruncatedInEnergyStaysWithinItsBudget) {
   const auto& f = fixture();
   const Eigen::SparseMatrix<double> A = stc::latin::searchDirectionOperator(f.problem);
@@ -203,6 +203,11 @@ TEST(ResponseBasis, DisplacementTruncatedInEnergyStaysWithinItsBudget) {
   }
   before = basis.sparseSolves();
   EXPECT_EQ(basis.displacementOn(I, c, 2.0 * energy(u)).norm(), 0.0);
+  EXPECT_EQ(basis.sparseSolves(), before);
+  // No row to lift to (a solve on the whole interface leaves no node out): no solve either way.
+  const Eigen::SparseMatrix<double> none(0, f.problem.numFreeDofs());
+  EXPECT_EQ(basis.displacementOn(none, c).size(), 0);
+  EXPECT_EQ(basis.displacementOn(none, c, 1e-4 * energy(u)).size(), 0);
   EXPECT_EQ(basis.sparseSolves(), before);
 }
 
