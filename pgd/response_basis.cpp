@@ -4,6 +4,7 @@
 
 #include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/linalg/low_rank_solve.hpp"
+#include "stcontact/pgd/separated_history.hpp"
 #include "stcontact/pgd/separated_loads.hpp"
 
 namespace stc::pgd {
@@ -158,9 +159,8 @@ Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>&
                                               double energy_budget) const {
   if (!(energy_budget > 0.0) || B_rows.rows() == 0 || c.rows() == 0 || pending_ > 0) return displacementOn(B_rows, c);
   const Eigen::Index q = G_.rows();
-  Eigen::MatrixXd theta(q + c.rows(), c.cols());
-  theta << G_, c;
-  const linalg::Svd svd = linalg::singularValueDecomposition(energy_.whiten(theta), linalg::SvdMethod::divide_and_conquer,
+  const linalg::Svd svd = linalg::singularValueDecomposition(energy_.whiten(historyFactor(*this, c)),
+                                                             linalg::SvdMethod::divide_and_conquer,
                                                              linalg::kThinU | linalg::kThinV);
   // ρ: the fewest leading modes whose tail Σ_{i>ρ} σ_i² is within the budget.
   Eigen::Index rho = svd.values.size();
