@@ -78,6 +78,7 @@ Eigen::MatrixXd iterateOnZone(const ContactInterface& zone_contact, const ZoneLi
                               const FasOptions& options, const Eigen::MatrixXd& v0,
                               const Eigen::MatrixXd& W_s, Eigen::MatrixXd& w) {
   const Eigen::VectorXd& k = zone_contact.search_direction;
+  const int iterations = options.coarse_iterations.value_or(defaultCoarseIterations(zone_contact.dimension));
   Eigen::MatrixXd image(w.rows(), w.cols()), z, xi, dv(w.rows(), w.cols());
   std::optional<AndersonMixing> mixing;
   if (options.coarse_anderson > 0 && w.rows() > 0)
@@ -86,7 +87,7 @@ Eigen::MatrixXd iterateOnZone(const ContactInterface& zone_contact, const ZoneLi
   for (int it = 0;; ++it) {
     z = w - W_s;
     stage.apply(z, xi);
-    if (it + 1 >= options.coarse_iterations || w.rows() == 0) return xi;
+    if (it + 1 >= iterations || w.rows() == 0) return xi;
     dv.noalias() = stage.traces * xi;  // B Δu, seed eq. (7)
     // The trial v = Bũ + B Δu, λ = W(ŝ) − k v (seed eq. (5)), its local stage and the next state
     // W(ŝ) = λ̂ + k v̂, in one pass.

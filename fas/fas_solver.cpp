@@ -52,19 +52,21 @@ class FineLevel {
 // it, that next step is judged with θ = 1 (the 2-cycle of a poor coarse space, coarse step up and
 // relaxation down, is broken so; docs/method.md §4).
 // FasOptions::adapt_coarse_iterations: the verdicts also set i_C, halved on a rejection, one more
-// on an acceptance, within [1, coarse_iterations].
+// on an acceptance, within [1, i_C] (FasOptions::coarse_iterations or its default for the dimension).
 class CoarseGuard {
  public:
   CoarseGuard(const FasOptions& options, int dimension, bool anticipated)
       : enabled_(options.safeguard),
         adapt_(options.safeguard && options.adapt_coarse_iterations),
         max_skip_(options.max_skip),
-        max_iterations_(options.coarse_iterations),
-        iterations_(options.coarse_iterations),
+        max_iterations_(options.coarse_iterations.value_or(defaultCoarseIterations(dimension))),
+        iterations_(max_iterations_),
         growth_(options.safeguard_growth.value_or(defaultSafeguardGrowth(dimension, anticipated))) {}
 
   /// i_C of the next coarse step.
   int coarseIterations() const { return iterations_; }
+  /// Whether i_C was lowered from its most.
+  bool lowered() const { return iterations_ < max_iterations_; }
 
   bool skipThisCycle() {
     if (skip_ == 0) return false;
@@ -155,7 +157,7 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
   SolveSummary summary = monitor.finish();
   if (guard.rejected > 0) {
     std::string remark = std::to_string(guard.rejected) + " coarse corrections rejected";
-    if (guard.coarseIterations() < options.coarse_iterations)
+    if (guard.lowered())
       remark += ", i_C ended at " + std::to_string(guard.coarseIterations());
     summary.remarks.push_back(remark);
     summary.composeMessage();

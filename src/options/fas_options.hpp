@@ -30,6 +30,14 @@ constexpr double defaultSafeguardGrowth(int dimension, bool anticipated) {
   return anticipated ? 5.0 : 1.5;
 }
 
+/// i_C when FasOptions::coarse_iterations is unset: 8 on the plane meshes (fewer lose on the stiff
+/// and fine 2D cases: i_C = 4 took 60 relaxations against 37 on the hard case ν = 0.49 and 50
+/// against 42 at 801 arc nodes, docs/method.md §4); 4 in 3D, where the coarse step's later
+/// iterations overshoot (relaxations to 1e-6 on the generator's hemisphere at divisions 8 / 12 /
+/// 16: 18 / 25 / 28 against 20 / 27 / 31; on the graded half-ball 29 against 32; 0.85 to 0.92 of
+/// the iterations' time, level at divisions 12: docs/floor.md, "Fewer coarse iterations in 3D").
+constexpr int defaultCoarseIterations(int dimension) { return dimension == 3 ? 4 : 8; }
+
 struct FasOptions {
   /// Tolerance and cap count fine relaxations (the cost unit of the seed's Figs. 4–5).
   StoppingOptions stop;
@@ -37,10 +45,11 @@ struct FasOptions {
   /// for both bases on the seed scene (docs/fas_aposteriori.md, docs/compare_bases.md).
   int pre_relaxations = 1;
   int post_relaxations = 1;  ///< ν2: relaxations after it
-  /// i_C: coarse linear stage + fine local stage pairs (seed: 15). 8 with Anderson depth 2: the same
-  /// or fewer relaxations on the seed scene and every hard case, at about half the coarse work
-  /// (docs/method.md §4, docs/floor.md).
-  int coarse_iterations = 8;
+  /// i_C: coarse linear stage + fine local stage pairs (seed: 15); unset: defaultCoarseIterations
+  /// (dimension). With Anderson depth 2, 8 gave the same or fewer relaxations than the seed's 15 on
+  /// the seed scene and every 2D hard case, at about half the coarse work (docs/method.md §4,
+  /// docs/floor.md).
+  std::optional<int> coarse_iterations;
   /// Anderson depth of the coarse iterations (fas/coarse_step.hpp; 0: plain restricted LATIN).
   int coarse_anderson = 2;
   /// The coarse step on its contact zone only, the open nodes clear of the obstacle eliminated
@@ -69,7 +78,7 @@ struct FasOptions {
   int max_skip = 8;  ///< the longest run of skipped coarse steps
   /// With the safeguard, i_C follows its verdicts (additive increase, multiplicative decrease): a
   /// rejected correction halves the coarse iterations of the next coarse steps (at least 1), each
-  /// accepted one adds one back, up to coarse_iterations. Where the later coarse iterations
+  /// accepted one adds one back, up to i_C. Where the later coarse iterations
   /// overshoot (the 3D hemisphere: 6 of 27 corrections of 15 iterations rejected, none of 4), this
   /// keeps the part that helps; where none is rejected (the plane seed scene) nothing changes.
   /// docs/method.md §4. Off: i_C fixed.

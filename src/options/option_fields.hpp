@@ -54,7 +54,8 @@ class FieldCheck {
   explicit FieldCheck(const char* owner) : owner_(owner) {}
   void operator()(const char* key, int value, const Range& range, Exposure = Exposure::SceneKey) const;
   void operator()(const char* key, double value, const Range& range, Exposure = Exposure::SceneKey) const;
-  void operator()(const char* key, const std::optional<double>& value, const Range& range,
+  template <class T>
+  void operator()(const char* key, const std::optional<T>& value, const Range& range,
                   Exposure exposure = Exposure::SceneKey) const {
     if (value) (*this)(key, *value, range, exposure);
   }

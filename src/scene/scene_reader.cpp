@@ -504,10 +504,11 @@ class SceneFieldReader {
     value = *table_.optionalNumber(key);
     requireRange(table_, key, value, range.holds(value), range.rule);
   }
-  void operator()(const char* key, std::optional<double>& value, const Range& range,
+  template <class T>
+  void operator()(const char* key, std::optional<T>& value, const Range& range,
                   Exposure exposure = Exposure::SceneKey) const {
     if (!present(key, exposure)) return;
-    double read = 0.0;
+    T read{};
     (*this)(key, read, range, exposure);
     value = read;
   }

@@ -76,6 +76,10 @@ struct NumericKeys {
                   stc::Exposure e = stc::Exposure::SceneKey) {
     add(key, false, r, e);
   }
+  void operator()(const char* key, const std::optional<int>&, const stc::Range& r,
+                  stc::Exposure e = stc::Exposure::SceneKey) {
+    add(key, true, r, e);
+  }
   void operator()(const char*, const bool&, const stc::Range&, stc::Exposure = stc::Exposure::SceneKey) {}
   template <class E>
   void operator()(const char*, const E&, stc::Keywords<E>, stc::Exposure = stc::Exposure::SceneKey) {}
@@ -90,7 +94,7 @@ struct SetKey {
   template <class T, class Rule>
   void operator()(const char* name, T& field, const Rule&, stc::Exposure e = stc::Exposure::SceneKey) {
     if (name != key || e != stc::Exposure::SceneKey) return;
-    if constexpr (std::is_same_v<T, int>) field = static_cast<int>(value), ++set;
+    if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::optional<int>>) field = static_cast<int>(value), ++set;
     else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>) field = value, ++set;
   }
 };
@@ -152,7 +156,7 @@ TEST(OptionFields, TheDefaultsAreValidAndEveryKeyIsReadIntoEveryStrategyThatHasI
       if (name != k.key || e != stc::Exposure::SceneKey) return;
       if constexpr (std::is_same_v<T, int> || std::is_same_v<T, double>) {
         value = range.holds(2.0 * field) ? 2.0 * field : field;
-      } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+      } else if constexpr (std::is_same_v<T, std::optional<double>> || std::is_same_v<T, std::optional<int>>) {
         value = field.value_or(range.low + 1.0);
       }
     });
@@ -172,6 +176,7 @@ TEST(OptionFields, TheDefaultsAreValidAndEveryKeyIsReadIntoEveryStrategyThatHasI
       if constexpr (std::is_same_v<T, int>) equal += field == static_cast<int>(value);
       else if constexpr (std::is_same_v<T, double>) equal += field == value;
       else if constexpr (std::is_same_v<T, std::optional<double>>) equal += field && *field == value;
+      else if constexpr (std::is_same_v<T, std::optional<int>>) equal += field && *field == static_cast<int>(value);
     });
     EXPECT_GE(fields, 1);
     EXPECT_EQ(equal, fields);

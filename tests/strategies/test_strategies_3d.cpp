@@ -73,8 +73,8 @@ TEST(ThreeD, AdaptedCoarseIterationsSaveRelaxationsWhereCorrectionsOvershoot) {
 
 // In 3D the safeguard's default growth is θ = 1 (fas::defaultSafeguardGrowth; docs/method.md §4): the
 // corrections that raise the indicator raise the true error too. A 3D scene without the key solves
-// as with θ = 1, and the plane meshes' default θ = 5 takes a different path here (measured: 27
-// relaxations against 43; 29 at θ = 1.5).
+// as with θ = 1, and the plane meshes' θ = 1.5 takes a different path here (measured with 3D's
+// i_C = 4: 26 relaxations against 27; with i_C = 8, 27 against 29, and 43 at θ = 5).
 TEST(ThreeD, TheSafeguardDefaultsToNoGrowth) {
   stc::Scene scene = stc::test::hemisphereScene(6, 21);
   // On the whole interface: on its contact zone this small hemisphere takes 20 relaxations at either
@@ -93,6 +93,26 @@ TEST(ThreeD, TheSafeguardDefaultsToNoGrowth) {
   std::cout << "[ measured ] 3D fas-apriori to 1e-6: theta = 1 " << strict.summary.relaxations
             << " relaxations, theta = " << stc::fas::defaultSafeguardGrowth(2, false) << " (the plane default) "
             << tolerant.summary.relaxations << "\n";
+}
+
+// In 3D a coarse step makes at most i_C = 4 coarse iterations by default (fas::defaultCoarseIterations;
+// docs/floor.md, "Fewer coarse iterations in 3D"): a 3D scene without the key solves as with
+// i_C = 4, and the plane meshes' default of 8 takes a different path here.
+TEST(ThreeD, TheCoarseIterationsDefaultToFour) {
+  stc::Scene scene = stc::test::hemisphereScene(6, 21);
+  ASSERT_FALSE(scene.solver.fas_apriori.fas.coarse_iterations);
+  const auto by_default = stc::test::StrategyFixture(scene).solve("fas-apriori", 1e-6);
+  scene.solver.fas_apriori.fas.coarse_iterations = 4;
+  const auto four = stc::test::StrategyFixture(scene).solve("fas-apriori", 1e-6);
+  scene.solver.fas_apriori.fas.coarse_iterations = stc::fas::defaultCoarseIterations(2);
+  const auto plane = stc::test::StrategyFixture(scene).solve("fas-apriori", 1e-6);
+  ASSERT_TRUE(by_default.summary.converged() && plane.summary.converged());
+  EXPECT_EQ(by_default.summary.relaxations, four.summary.relaxations);
+  EXPECT_EQ(by_default.summary.message, four.summary.message);
+  EXPECT_NE(plane.summary.relaxations, four.summary.relaxations);
+  EXPECT_LE(*by_default.summary.error, 1e-6);
+  std::cout << "[ measured ] 3D fas-apriori to 1e-6: i_C = 4 " << four.summary.relaxations << " relaxations, i_C = "
+            << stc::fas::defaultCoarseIterations(2) << " (the plane default) " << plane.summary.relaxations << "\n";
 }
 
 namespace {
