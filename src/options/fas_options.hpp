@@ -34,8 +34,9 @@ constexpr double defaultSafeguardGrowth(int dimension, bool anticipated) {
 /// and fine 2D cases: i_C = 4 took 60 relaxations against 37 on the hard case ν = 0.49 and 50
 /// against 42 at 801 arc nodes, docs/method.md §4); 4 in 3D, where the coarse step's later
 /// iterations overshoot (relaxations to 1e-6 on the generator's hemisphere at divisions 8 / 12 /
-/// 16: 18 / 25 / 28 against 20 / 27 / 31; on the graded half-ball 29 against 32; 0.85 to 0.92 of
-/// the iterations' time, level at divisions 12: docs/floor.md, "Fewer coarse iterations in 3D").
+/// 16: 18 / 25 / 28 against 20 / 27 / 31; on the graded half-ball 29 against 32; 0.85 to 0.96 of
+/// the iterations' time, 1.04 at divisions 12 to 1e-4: docs/floor.md, "Fewer coarse iterations in
+/// 3D").
 constexpr int defaultCoarseIterations(int dimension) { return dimension == 3 ? 4 : 8; }
 
 struct FasOptions {
