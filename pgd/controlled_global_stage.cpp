@@ -115,7 +115,7 @@ Eigen::MatrixXd ControlledGlobalStage::anticipateWhitened(const InterfaceHistory
   completeWhenDue();
   if (!every_row_) {
     const Eigen::MatrixXd c = anticipate(hat);  // may enrich: the factor is read after it
-    return basis_.energyFactor().whiten(historyFactor(basis_, c));
+    return whitenedHistory(basis_, c);
   }
   const EnergyFactor& factor = basis_.energyFactor();
   const Eigen::Index q = basis_.loadHistories().rows();

@@ -77,8 +77,8 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// builds the coarse space from it). The last solve's coordinates() are kept; the directions
   /// added stay.
   Eigen::MatrixXd anticipate(const InterfaceHistory& hat);
-  /// The anticipated history's energy coordinates R [G; c] (EnergyFactor::whiten of
-  /// historyFactor(basis(), anticipate(hat))): what the coarse space is built from. Once the
+  /// The anticipated history's energy coordinates R [G; c] (whitenedHistory(basis(),
+  /// anticipate(hat))): what the coarse space is built from. Once the
   /// directions span every row, c = Z̃ᵀ w̃ and R [G; c] = R_G G + (R_Z Z̃ᵀ) w̃ with R_Z Z̃ᵀ formed once,
   /// one product per call instead of two.
   Eigen::MatrixXd anticipateWhitened(const InterfaceHistory& hat);

@@ -159,7 +159,7 @@ Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>&
                                               double energy_budget) const {
   if (!(energy_budget > 0.0) || B_rows.rows() == 0 || c.rows() == 0 || pending_ > 0) return displacementOn(B_rows, c);
   const Eigen::Index q = G_.rows();
-  const linalg::Svd svd = linalg::singularValueDecomposition(energy_.whiten(historyFactor(*this, c)),
+  const linalg::Svd svd = linalg::singularValueDecomposition(whitenedHistory(*this, c),
                                                              linalg::SvdMethod::divide_and_conquer,
                                                              linalg::kThinU | linalg::kThinV);
   // ρ: the fewest leading modes whose tail Σ_{i>ρ} σ_i² is within the budget.

@@ -42,6 +42,10 @@ Eigen::MatrixXd historyFactor(const ResponseBasis& basis, const Eigen::MatrixXd&
   return theta;
 }
 
+Eigen::MatrixXd whitenedHistory(const ResponseBasis& basis, const Eigen::MatrixXd& c) {
+  return basis.energyFactor().whiten(historyFactor(basis, c));
+}
+
 Eigen::MatrixXd leadingSingularVectors(const Eigen::MatrixXd& coordinates, int count, double drop) {
   const Eigen::Index samples = std::min<Eigen::Index>({count + kOversampling, coordinates.rows(), coordinates.cols()});
   if (count <= 0 || samples == 0) return Eigen::MatrixXd(coordinates.rows(), 0);
@@ -62,7 +66,7 @@ Eigen::MatrixXd leadingSingularVectors(const Eigen::MatrixXd& coordinates, int c
 
 EnergySvd energySvd(const ResponseBasis& basis, const Eigen::MatrixXd& c, int count, double drop) {
   const EnergyFactor& factor = basis.energyFactor();
-  const Eigen::MatrixXd coordinates = factor.whiten(historyFactor(basis, c));
+  const Eigen::MatrixXd coordinates = whitenedHistory(basis, c);
   const Eigen::MatrixXd U = leadingSingularVectors(coordinates, count, drop);
   EnergySvd svd;
   svd.combination = factor.combination(U);

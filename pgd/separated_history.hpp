@@ -20,6 +20,10 @@ namespace stc::pgd {
 /// are zero), s × m.
 Eigen::MatrixXd historyFactor(const ResponseBasis& basis, const Eigen::MatrixXd& c);
 
+/// Θ̂ = R Θ, the history's energy coordinates (EnergyFactor::whiten of historyFactor): u = Φ̂ Θ̂
+/// with Φ̂ A-orthonormal, so the A-product of histories is the Euclidean one of their Θ̂.
+Eigen::MatrixXd whitenedHistory(const ResponseBasis& basis, const Eigen::MatrixXd& c);
+
 /// The leading `count` left singular vectors of `coordinates` (s' × m), fewer if its rank is
 /// smaller (singular values below `drop` times the largest are left out). Halko, Martinsson &
 /// Tropp, SIAM Review 53 (2011), alg. 4.4 (range finder with q = 2 subspace iterations, 10 extra

@@ -33,7 +33,7 @@ Eigen::MatrixXd SeparatedAposterioriProvider::residualTraces() const {
   const pgd::EnergyFactor& factor = basis.energyFactor();
   const Eigen::MatrixXd& BY = fixed_.interface();
   const Eigen::Index q = basis.loadResponses().cols(), p = basis.size(), k = fixed_.rank();
-  const Eigen::MatrixXd theta = factor.whiten(pgd::historyFactor(basis, stage_.coordinates()));  // Θ̂
+  const Eigen::MatrixXd theta = pgd::whitenedHistory(basis, stage_.coordinates());  // Θ̂
   // S = Φ̂ᵀ A Y from Φᵀ A Y = [U_Fᵀ A Y; Zᵀ B Y].
   Eigen::MatrixXd products(q + p, k);
   products.topRows(q) = basis.loadResponses().transpose() * AY_;

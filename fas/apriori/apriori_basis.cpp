@@ -13,9 +13,8 @@ AprioriBasisProvider::AprioriBasisProvider(pgd::ControlledGlobalStage& stage, Ap
 CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& hat) {
   // The coordinates of ũ, whitened: in them the A-product is the Euclidean one, and modes are unit
   // vectors (anticipation first: it may add directions to the basis and its factor).
-  const Eigen::MatrixXd whitened =
-      options_.anticipate ? stage_.anticipateWhitened(hat)
-                          : stage_.basis().energyFactor().whiten(pgd::historyFactor(stage_.basis(), stage_.coordinates()));
+  const Eigen::MatrixXd whitened = options_.anticipate ? stage_.anticipateWhitened(hat)
+                                                       : pgd::whitenedHistory(stage_.basis(), stage_.coordinates());
   const pgd::ResponseBasis& basis = stage_.basis();
   const pgd::EnergyFactor& factor = basis.energyFactor();
   if (factor.rank() <= options_.modes + options_.increment_modes) {
