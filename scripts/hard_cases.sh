@@ -8,11 +8,12 @@
 #   scripts/hard_cases.sh                       # full settings -> results/hard/table.md (docs/hard_cases.md quotes it)
 #   scripts/hard_cases.sh --small --report -    # the ctest settings, table on stdout
 # Options: --small, --cases "a b", --solvers "x y", --out DIR (results, default
-# results/hard[_small]), --report FILE (default DIR/table.md) ('-': stdout), --bin PATH (default build/bin/stcontact).
+# results/hard[_small]), --report FILE (default DIR/table.md) ('-': stdout), --bin PATH (default build/bin/stcontact),
+# --set KEY=VALUE (repeatable: added to every solve after the case's own settings, e.g. an ablation).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=$root/build/bin/stcontact
-small=0; only_cases=""; solvers="latin latin-pgd fas-aposteriori fas-apriori incremental"
+small=0; only_cases=""; extra_sets=(); solvers="latin latin-pgd fas-aposteriori fas-apriori incremental"
 out=""; report=""
 while [ $# -gt 0 ]; do
   case $1 in
@@ -22,6 +23,7 @@ while [ $# -gt 0 ]; do
     --out) out=$2; shift ;;
     --report) report=$2; shift ;;
     --bin) bin=$2; shift ;;
+    --set) extra_sets+=("$2"); shift ;;
     *) echo "error: unknown option '$1' (see the top of $0)" >&2; exit 1 ;;
   esac
   shift
@@ -44,7 +46,7 @@ while IFS="|" read -r name scene full small_sets _bound; do
   if [ -n "$only_cases" ] && ! grep -qw -- "$name" <<<"$only_cases"; then continue; fi
   sets=$([ $small = 1 ] && trim "$small_sets" || trim "$full")
   args=(--set output.vtu=false)  # the suite reads summaries and CSVs; no ParaView fields
-  for s in $sets; do args+=(--set "$s"); done
+  for s in $sets "${extra_sets[@]}"; do args+=(--set "$s"); done
   for solver in $solvers; do
     dir=$out/$name/$solver
     rm -rf "$dir"
