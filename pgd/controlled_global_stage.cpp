@@ -44,6 +44,7 @@ void ControlledGlobalStage::retime(const Problem& grid) {
   basis_.retime(grid);
   c_.resize(0, 0);
   w_last_.resize(0, 0);
+  c_stale_ = false;
   target_ = -1.0;
 }
 
@@ -84,9 +85,9 @@ void ControlledGlobalStage::completeWhenDue() {
 }
 
 const Eigen::MatrixXd& ControlledGlobalStage::coordinates() const {
-  if (w_last_.size() > 0) {
+  if (c_stale_) {
     c_.noalias() = basis_.scaledDirections().transpose() * w_last_;
-    w_last_.resize(0, 0);
+    c_stale_ = false;
   }
   return c_;
 }
@@ -111,19 +112,45 @@ Eigen::MatrixXd ControlledGlobalStage::anticipate(const InterfaceHistory& hat) {
   return c;
 }
 
-Eigen::MatrixXd ControlledGlobalStage::anticipateWhitened(const InterfaceHistory& hat) {
+Eigen::MatrixXd ControlledGlobalStage::stepSketch(Eigen::Index instants, int samples) {
+  return linalg::gaussianSketch(instants, samples, 20261129u) / std::sqrt(static_cast<double>(samples));
+}
+
+ControlledGlobalStage::Anticipated ControlledGlobalStage::anticipateWhitened(const InterfaceHistory& hat,
+                                                                             int step_samples) {
   completeWhenDue();
+  Anticipated out;
   if (!every_row_) {
     const Eigen::MatrixXd c = anticipate(hat);  // may enrich: the factor is read after it
-    return whitenedHistory(basis_, c);
+    out.whitened = whitenedHistory(basis_, c);
+    if (step_samples > 0 && c_.size() > 0 && c_.cols() == c.cols()) {
+      // R [0; (c − c_last) Ω]: the load histories G are the same in both.
+      Eigen::MatrixXd dc = c;
+      dc.topRows(c_.rows()) -= c_;
+      Eigen::MatrixXd theta = Eigen::MatrixXd::Zero(basis_.loadHistories().rows() + dc.rows(), step_samples);
+      theta.bottomRows(dc.rows()).noalias() = dc * stepSketch(c.cols(), step_samples);
+      out.step = basis_.energyFactor().whiten(theta);
+    }
+    return out;
   }
   const EnergyFactor& factor = basis_.energyFactor();
   const Eigen::Index q = basis_.loadHistories().rows();
   if (whitened_rows_.size() == 0)
     whitened_rows_.noalias() = factor.coordinatesOfColumns().rightCols(basis_.size()) * basis_.scaledDirections().transpose();
-  Eigen::MatrixXd whitened = factor.coordinatesOfColumns().leftCols(q) * basis_.loadHistories();
-  whitened.noalias() += whitened_rows_ * scaledRightHandSides(hat);
-  return whitened;
+  out.whitened = factor.coordinatesOfColumns().leftCols(q) * basis_.loadHistories();
+  const Eigen::MatrixXd w = scaledRightHandSides(hat);
+  if (step_samples <= 0 || w_last_.rows() != w.rows() || w_last_.cols() != w.cols()) {
+    out.whitened.noalias() += whitened_rows_ * w;
+    return out;
+  }
+  // One product for the history and the step: R_Z Z̃ᵀ [w̃, (w̃ − w̃_last) Ω].
+  Eigen::MatrixXd both(w.rows(), w.cols() + step_samples);
+  both.leftCols(w.cols()) = w;
+  both.rightCols(step_samples).noalias() = (w - w_last_) * stepSketch(w.cols(), step_samples);
+  const Eigen::MatrixXd product = whitened_rows_ * both;
+  out.whitened += product.leftCols(w.cols());
+  out.step = product.rightCols(step_samples);
+  return out;
 }
 
 void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s) {
@@ -136,6 +163,7 @@ void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory&
     s.v.noalias() += basis_.condensedInterface() * w;
     s.lambda = w - k.asDiagonal() * s.v;
     w_last_ = basis_.invSqrtK().asDiagonal() * w;
+    c_stale_ = true;
     error_ = 0.0;
     return;
   }

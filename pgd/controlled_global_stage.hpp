@@ -81,7 +81,20 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// anticipate(hat))): what the coarse space is built from. Once the
   /// directions span every row, c = Z̃ᵀ w̃ and R [G; c] = R_G G + (R_Z Z̃ᵀ) w̃ with R_Z Z̃ᵀ formed once,
   /// one product per call instead of two.
-  Eigen::MatrixXd anticipateWhitened(const InterfaceHistory& hat);
+  ///
+  /// With `step_samples` > 0, also `step` = R [0; (c − c_last) Ω]: the energy coordinates of
+  /// `step_samples` Gaussian combinations (Ω, m × step_samples, a fixed seed, scaled by
+  /// 1/√step_samples) of ũ − ũ_last, the change the next global stage makes to the last one's
+  /// displacement history (c_last padded with zeros for directions added since: ũ_last = X c_last).
+  /// Empty before a solve, after retime, and on the solve that completes the directions. Once they
+  /// span every row it is (R_Z Z̃ᵀ)(w̃ − w̃_last) Ω, in the same product as the history.
+  struct Anticipated {
+    Eigen::MatrixXd whitened;
+    Eigen::MatrixXd step;
+  };
+  Anticipated anticipateWhitened(const InterfaceHistory& hat, int step_samples = 0);
+  /// Ω of anticipateWhitened's step, m × samples.
+  static Eigen::MatrixXd stepSketch(Eigen::Index instants, int samples);
 
  private:
   /// w̃ = k^{-1/2} (λ̂ + k v̂), the scaled right-hand sides of a solve from `hat`.
@@ -100,7 +113,8 @@ class ControlledGlobalStage : public latin::LinearStage {
   SpdFactor factor_;
   ResponseBasis basis_;
   mutable Eigen::MatrixXd c_;
-  mutable Eigen::MatrixXd w_last_;  ///< w̃ of the last exact solve, until coordinates() forms c_ from it
+  Eigen::MatrixXd w_last_;        ///< w̃ of the last exact solve (every row)
+  mutable bool c_stale_ = false;  ///< c_ not yet formed from w_last_ (coordinates())
   Eigen::MatrixXd whitened_rows_;   ///< R_Z Z̃ᵀ once the directions span every row (anticipateWhitened)
   bool every_row_ = false;
   double target_ = -1.0;  ///< < 0: no gap observed yet

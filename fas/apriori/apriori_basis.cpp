@@ -13,8 +13,12 @@ AprioriBasisProvider::AprioriBasisProvider(pgd::ControlledGlobalStage& stage, Ap
 CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& hat) {
   // The coordinates of ũ, whitened: in them the A-product is the Euclidean one, and modes are unit
   // vectors (anticipation first: it may add directions to the basis and its factor).
-  const Eigen::MatrixXd whitened = options_.anticipate ? stage_.anticipateWhitened(hat)
-                                                       : pgd::whitenedHistory(stage_.basis(), stage_.coordinates());
+  pgd::ControlledGlobalStage::Anticipated next;
+  if (options_.anticipate)
+    next = stage_.anticipateWhitened(hat, options_.step_samples);
+  else
+    next.whitened = pgd::whitenedHistory(stage_.basis(), stage_.coordinates());
+  const Eigen::MatrixXd& whitened = next.whitened;
   const pgd::ResponseBasis& basis = stage_.basis();
   const pgd::EnergyFactor& factor = basis.energyFactor();
   if (factor.rank() <= options_.modes + options_.increment_modes) {
@@ -28,8 +32,10 @@ CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& hat) {
   if (options_.increment_modes > 0 && previous_.size() > 0) {
     // ũ − ũ_previous in Φ̂: R only gains columns, and rows that start at them, so R [G; c_prev; 0] is
     // the previous whitened history with zero rows below (energy_factor.hpp).
-    Eigen::MatrixXd d = whitened;
-    d.topRows(previous_.rows()) -= previous_;
+    // Beside it the sketched step of the next relaxation, ũ − ũ_last (anticipateWhitened).
+    Eigen::MatrixXd d(whitened.rows(), whitened.cols() + next.step.cols());
+    d << whitened, next.step;
+    d.topLeftCorner(previous_.rows(), previous_.cols()) -= previous_;
     d -= U * (U.transpose() * d);
     const Eigen::MatrixXd V = pgd::leadingSingularVectors(d, options_.increment_modes, 1e-10);
     Eigen::MatrixXd all(U.rows(), U.cols() + V.cols());

@@ -9,6 +9,9 @@
 //   - the `increment_modes` leading modes of what ũ changed since the previous coarse step, made
 //     A-orthogonal to the former (the directions the iteration is still moving in: the seed's
 //     residual vectors, §4.3, taken from the iterates' history instead of the iterate itself),
+//     and of `step_samples` Gaussian combinations of the change the next global stage makes,
+//     ũ − ũ_last (ControlledGlobalStage::anticipateWhitened: the direction the smoother moves in
+//     now, where ũ − ũ_previous sums a whole cycle),
 // as a coarse space known by its traces B Y alone: no n_free × m array, no product with A.
 // With `anticipate` (the default) ũ is the displacement history the next global stage would give:
 // the projection of its right-hand side λ̂ + k v̂ on the directions, enriched as that stage would

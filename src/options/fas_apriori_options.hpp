@@ -18,12 +18,18 @@ struct AprioriBasisOptions {
   int increment_modes = 30;
   /// The coarse space from the expansion the next global stage would give (true) or the last one's.
   bool anticipate = true;
+  /// Gaussian combinations of the next global stage's change ũ − ũ_last offered to the increment
+  /// modes beside ũ − ũ_previous (with `anticipate`; 0: none). 8: relaxations to 1e-6 at 801 / 1601
+  /// arc nodes 42 → 34 / 64 → 52, hemisphere at divisions 12 25 → 22 (docs/floor.md, "The step of
+  /// the next relaxation in the increment modes").
+  int step_samples = 8;
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
     visit("pgd_max_modes", o.modes, atLeast(0));
     visit("pgd_increment_modes", o.increment_modes, atLeast(0));
     visit("pgd_anticipate", o.anticipate, anyFlag());
+    visit("pgd_step_samples", o.step_samples, atLeast(0));
   }
   void validate() const;  ///< the fields, and at least one mode in all
 };

@@ -368,5 +368,38 @@ TEST(ControlledGlobalStage, SpansEveryRowFromItsShareAndIsThenTheExactStage) {
   // The whitened anticipation formed from R_Z Z̃ᵀ is the whitening of the anticipated coordinates.
   const stc::pgd::EnergyFactor& factor = stage.basis().energyFactor();
   const Eigen::MatrixXd whitened = factor.whiten(stc::pgd::historyFactor(stage.basis(), stage.anticipate(hat)));
-  EXPECT_LE((stage.anticipateWhitened(hat) - whitened).norm(), 1e-10 * whitened.norm());
+  EXPECT_LE((stage.anticipateWhitened(hat).whitened - whitened).norm(), 1e-10 * whitened.norm());
+  // Its step, in the same product: the sketched difference of the next and the last histories'
+  // energy coordinates.
+  const stc::InterfaceHistory next{1e-3 * Eigen::MatrixXd::Random(n, m), Eigen::MatrixXd::Random(n, m)};
+  const auto anticipated = stage.anticipateWhitened(next, 2);
+  const Eigen::MatrixXd last = factor.whiten(stc::pgd::historyFactor(stage.basis(), c));
+  const Eigen::MatrixXd step = (anticipated.whitened - last) * stc::pgd::ControlledGlobalStage::stepSketch(m, 2);
+  ASSERT_EQ(anticipated.step.cols(), 2);
+  EXPECT_LE((anticipated.step - step).norm(), 1e-10 * step.norm());
+}
+
+// The step of the next solve (anticipateWhitened with step samples): none before a solve; after
+// one, the sketched difference R [0; c_next − c_last] Ω of the anticipated and the last histories'
+// energy coordinates, the last solve's coordinates zero on the directions the anticipation added.
+TEST(ControlledGlobalStage, SketchesTheStepOfItsNextSolveInEnergyCoordinates) {
+  const auto& f = fixture();
+  const int m = f.problem.numSteps();
+  stc::pgd::ControlledGlobalStage stage(f.problem, {});
+  stc::InterfaceHistory s, first = stc::InterfaceHistory::zeros(f.problem.contact, m);
+  first.lambda = 0.3 * f.reference.interface.lambda;
+  EXPECT_EQ(stage.anticipateWhitened(first, 3).step.size(), 0);
+  stage.solve(first, s);
+  stage.observeGap(1e-2 * distance(f.problem, s, first));
+  const Eigen::MatrixXd c_last = stage.coordinates();
+  const int rank_last = stage.rank();
+  const auto anticipated = stage.anticipateWhitened(f.hat(), 3);
+  ASSERT_GT(stage.rank(), rank_last);  // the step reaches directions the last solve did not have
+  EXPECT_EQ(stage.anticipateWhitened(f.hat(), 0).step.size(), 0);
+  const Eigen::MatrixXd last = stage.basis().energyFactor().whiten(stc::pgd::historyFactor(stage.basis(), c_last));
+  const Eigen::MatrixXd step = (anticipated.whitened - last) * stc::pgd::ControlledGlobalStage::stepSketch(m, 3);
+  ASSERT_EQ(anticipated.step.rows(), anticipated.whitened.rows());
+  ASSERT_EQ(anticipated.step.cols(), 3);
+  EXPECT_GT(step.norm(), 0.0);
+  EXPECT_LE((anticipated.step - step).norm(), 1e-10 * step.norm());
 }
