@@ -23,8 +23,8 @@
 //      then satisfies every condition of the whole problem (equilibrium with λ_F = 0, the contact
 //      law on the zone, open far nodes). Nodes that penetrate join the zone and the solve goes on from
 //      where it stopped; after ReducedInterfaceOptions::rounds such rounds the whole interface is solved. A restricted
-//      round gets half of the iterations left; one that does not converge gives way to the whole
-//      interface from the first start.
+//      round gets half of the iterations left; one that does not converge within them gives way to
+//      the whole interface, from where it stopped (from the first start after a numerical issue).
 // The result is lifted to the whole interface: λ = 0 and v = B_F u on the nodes left out. Counts and
 // times include the first relaxation, when there is one, and everything before the restricted solve's
 // first iteration; the summary records the rounds as a stage (SolveStage::ContactZone).
