@@ -294,7 +294,8 @@ class ZoneRounds {
 
   /// The summary of all rounds: their history, counts and time, and the stage that says what they did
   /// (`rounds`, the last zone's `nodes`). A solve converged on its estimate counts the iterations of all
-  /// in its reason (one certified without contact keeps the certificate's reason).
+  /// in its reason (one certified without contact keeps the certificate's reason); one stopped by the
+  /// cap names the solve's cap, not the last round's share of it.
   void finish(SolveSummary& summary, const std::string& rounds, int nodes) {
     summary.history = std::move(history_);
     summary.iterations = offsets_.iterations;
@@ -303,6 +304,8 @@ class ZoneRounds {
     if (summary.converged() && !summary.history.empty() &&
         summary.history.back().error_estimate <= options_.fas.stop.tolerance)
       summary.reason = convergedReason(summary.history.back(), options_.fas.stop.tolerance);
+    if (summary.termination == Termination::MaxIterations && !summary.history.empty())
+      summary.reason = iterationLimitReason(options_.fas.stop.max_iterations, summary.history.back().indicator);
     SolveStage stage{SolveStage::Kind::ContactZone, "solved on " + rounds, 0, 0, 0.0, nodes, rounds_};
     if (!from_.zone_origin.empty()) stage.description += " (" + from_.zone_origin + ")";
     summary.addStage(std::move(stage));

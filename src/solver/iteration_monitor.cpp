@@ -14,6 +14,12 @@ std::string convergedReason(const IterationRecord& last, double tolerance) {
   return reason.str();
 }
 
+std::string iterationLimitReason(int max_iterations, double indicator) {
+  std::ostringstream reason;
+  reason << "iteration limit " << max_iterations << " reached with indicator " << indicator;
+  return reason.str();
+}
+
 IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const EquilibriumEnergy* energy,
                                    const ErrorMeasure* reference, IterationCallback callback)
     : rule_(rule),
@@ -75,11 +81,8 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
     return stop(Termination::Stagnated, msg.str());
   }
   if (callback_ && !callback_(r)) return stop(Termination::StoppedByCallback, "stopped by the callback");
-  if (r.iteration >= rule_.stop.max_iterations) {
-    std::ostringstream msg;
-    msg << "iteration limit " << rule_.stop.max_iterations << " reached with indicator " << indicator;
-    return stop(Termination::MaxIterations, msg.str());
-  }
+  if (r.iteration >= rule_.stop.max_iterations)
+    return stop(Termination::MaxIterations, iterationLimitReason(rule_.stop.max_iterations, indicator));
   return false;
 }
 

@@ -44,6 +44,8 @@ struct StoppingRule {
 /// The reason of a converged solve whose last record is `last` ("error estimate E <= tolerance T after
 /// N iterations (indicator I)").
 std::string convergedReason(const IterationRecord& last, double tolerance);
+/// The reason of a solve stopped by its iteration cap `max_iterations`, its last indicator `indicator`.
+std::string iterationLimitReason(int max_iterations, double indicator);
 
 class IterationMonitor {
  public:

@@ -194,10 +194,11 @@ TEST(ReducedInterface, AgreesWithTheWholeInterface) {
 }
 
 // A restricted round gets half of the iterations left (here 4 of 8, too few for τ = 1e-6: it takes
-// 7); the whole interface then goes on from where it stopped, not from the first start. Its first
-// relaxation's true error is far below the start's (0.052 against 0.39), though above the round's
-// last (7.7e-4): a started stage's first solve projects its right-hand side to a share of itself,
-// γ = 5 %, before any gap is known (ControlledStageOptions::gap_share).
+// 7); the whole interface then goes on from where it stopped, not from the first start, and stops
+// at the cap too (its 4 relaxations are not enough either). Its first relaxation's true error is far
+// below the start's (0.052 against 0.39), though above the round's last (7.7e-4): a started stage's
+// first solve projects its right-hand side to a share of itself, γ = 5 %, before any gap is known
+// (ControlledStageOptions::gap_share).
 TEST(ReducedInterface, ARoundCutShortByTheCapHandsItsIterateToTheWholeInterface) {
   const auto& f = fixture();
   const int cap = 8, half = cap / 2;
@@ -208,6 +209,9 @@ TEST(ReducedInterface, ARoundCutShortByTheCapHandsItsIterateToTheWholeInterface)
   const stc::SolveResult r = stc::solve(stc::strategyNamed("fas-apriori"), f.problem, spec, inputs);
   std::cout << "[ measured ] " << r.summary.message << "\n";
   EXPECT_NE(r.summary.message.find("max_iterations, from where it stopped"), std::string::npos) << r.summary.message;
+  // The whole interface too stops at the cap: the reason names the solve's, not the round's share.
+  EXPECT_EQ(r.summary.termination, stc::Termination::MaxIterations);
+  EXPECT_EQ(r.summary.message.rfind("iteration limit " + std::to_string(cap) + " reached", 0), 0u) << r.summary.message;
   const std::vector<stc::IterationRecord>& h = r.summary.history;
   ASSERT_GT(h.size(), static_cast<std::size_t>(half));
   ASSERT_TRUE(h[0].error && h[half - 1].error && h[half].error);
