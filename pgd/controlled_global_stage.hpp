@@ -86,7 +86,7 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// `step_samples` Gaussian combinations (Ω, m × step_samples, a fixed seed, scaled by
   /// 1/√step_samples) of ũ − ũ_last, the change the next global stage makes to the last one's
   /// displacement history (c_last padded with zeros for directions added since: ũ_last = X c_last).
-  /// Empty before a solve, after retime, and on the solve that completes the directions. Once they
+  /// Empty before a solve, after retime, and in the call that completes the directions. Once they
   /// span every row it is (R_Z Z̃ᵀ)(w̃ − w̃_last) Ω, in the same product as the history.
   struct Anticipated {
     Eigen::MatrixXd whitened;

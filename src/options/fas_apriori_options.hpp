@@ -20,8 +20,8 @@ struct AprioriBasisOptions {
   bool anticipate = true;
   /// Gaussian combinations of the next global stage's change ũ − ũ_last offered to the increment
   /// modes beside ũ − ũ_previous (with `anticipate`; 0: none). 8: relaxations to 1e-6 at 801 / 1601
-  /// arc nodes 42 → 34 / 64 → 52, hemisphere at divisions 12 25 → 22 (docs/floor.md, "The step of
-  /// the next relaxation in the increment modes").
+  /// arc nodes 42 → 36 / 64 → 53, hemisphere at divisions 12 25 → 21; 4 to 32 within 3 of each
+  /// other (docs/floor.md, "The step of the next relaxation in the increment modes").
   int step_samples = 8;
 
   template <class Self, class Visit>
