@@ -78,7 +78,7 @@ Eigen::MatrixXd iterateOnZone(const ContactInterface& zone_contact, const ZoneLi
                               const FasOptions& options, const Eigen::MatrixXd& v0,
                               const Eigen::MatrixXd& W_s, Eigen::MatrixXd& w) {
   const Eigen::VectorXd& k = zone_contact.search_direction;
-  const int iterations = options.coarse_iterations.value_or(defaultCoarseIterations(zone_contact.dimension));
+  const int iterations = options.coarseIterationsIn(zone_contact.dimension);
   Eigen::MatrixXd image(w.rows(), w.cols()), z, xi, dv(w.rows(), w.cols());
   std::optional<AndersonMixing> mixing;
   if (options.coarse_anderson > 0 && w.rows() > 0)

@@ -59,7 +59,7 @@ class CoarseGuard {
       : enabled_(options.safeguard),
         adapt_(options.safeguard && options.adapt_coarse_iterations),
         max_skip_(options.max_skip),
-        max_iterations_(options.coarse_iterations.value_or(defaultCoarseIterations(dimension))),
+        max_iterations_(options.coarseIterationsIn(dimension)),
         iterations_(max_iterations_),
         growth_(options.safeguard_growth.value_or(defaultSafeguardGrowth(dimension, anticipated))) {}
 

@@ -51,6 +51,10 @@ struct FasOptions {
   /// the seed scene and every 2D hard case, at about half the coarse work (docs/method.md §4,
   /// docs/floor.md).
   std::optional<int> coarse_iterations;
+  /// i_C in force in `dimension`: coarse_iterations, or defaultCoarseIterations(dimension) unset.
+  int coarseIterationsIn(int dimension) const {
+    return coarse_iterations.value_or(defaultCoarseIterations(dimension));
+  }
   /// Anderson depth of the coarse iterations (fas/coarse_step.hpp; 0: plain restricted LATIN).
   int coarse_anderson = 2;
   /// The coarse step on its contact zone only, the open nodes clear of the obstacle eliminated

@@ -168,7 +168,7 @@ void writeSummary(const fs::path& file, const Setup& st, const std::vector<Run>&
      << " instants, κ = " << st.scene.solver.search_scale << ", tolerance " << st.scene.solver.tolerance()
      << ", ν1 = ν2 = " << st.scene.solver.fas_aposteriori.fas.pre_relaxations
      << ", i_C = "
-     << st.scene.solver.fas_aposteriori.fas.coarse_iterations.value_or(stc::fas::defaultCoarseIterations(p.dimension))
+     << st.scene.solver.fas_aposteriori.fas.coarseIterationsIn(p.dimension)
      << ", N_res = " << st.scene.solver.fas_aposteriori.basis.residual_vectors << ". Wall times: median of " << o.repeats
      << " runs without the true-error evaluation.\n\n"
      << "| strategy | status | relaxations | sparse solves | rank | final error | wall (s) |";
