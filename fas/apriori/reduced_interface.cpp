@@ -207,6 +207,10 @@ SolveResult solveAprioriOnContactZone(const Problem& problem, const FasAprioriOp
 
 namespace {
 
+// Whether the round after `last` starts from where it stopped (its ŝ and directions): after every
+// ending but a numerical issue, which sends it back to the first start (ZoneRounds::startNext).
+bool nextRoundGoesOn(const SolveSummary& last) { return last.termination != Termination::NumericalIssue; }
+
 // The rounds of solveAprioriOnZone: what they have spent so far, and where the next one starts.
 class ZoneRounds {
  public:
@@ -281,7 +285,7 @@ class ZoneRounds {
   void startNext(SolveResult&& last) {
     if (measure_) measure_s_ += measure_->secondsSpent();
     measure_.reset();
-    if (last.summary.termination != Termination::NumericalIssue) {
+    if (nextRoundGoesOn(last.summary)) {
       hat_ = std::move(*last.contact_admissible);
       seed_ = std::move(last.interface_directions);
       return;
@@ -370,7 +374,7 @@ std::string zoneSize(const std::vector<int>& zone, int n) {
 // next one starts (ZoneRounds::startNext).
 std::string whyAnotherRound(const SolveSummary& last, std::size_t penetrating) {
   if (last.converged()) return "(" + std::to_string(penetrating) + " nodes left out penetrating) ";
-  const char* from = last.termination == Termination::NumericalIssue ? "from the start" : "from where it stopped";
+  const char* from = nextRoundGoesOn(last) ? "from where it stopped" : "from the start";
   return "(that solve " + std::string(toString(last.termination)) + ", " + from + ") ";
 }
 
