@@ -32,20 +32,16 @@ namespace stc::pgd {
 class ControlledGlobalStage : public latin::LinearStage {
  public:
   /// Factorises A = K_ff + Bᵀ k B (k = problem.contact.search_direction), the interface's dofs
-  /// ordered last where that pays (SpdFactor: then no solve per direction, response_basis.hpp), and
-  /// computes the load responses.
+  /// ordered last wherever SpdFactor's bounds on the dense trailing block allow (then no solve per
+  /// direction, response_basis.hpp, and the stage spans every row from its full_share on), and
+  /// computes the load responses. At any size, not from a work as the incremental solver's factor:
+  /// that one saves the |J| solves of one Delassus operator, this one a solve for every direction
+  /// and, once it spans every row, the enrichment. `stcontact solve SCENE --tol 1e-6 --no-reference`
+  /// against |J| · lnz ≥ 1e8 (the former threshold), alternated, medians of 5 (AMD EPYC,
+  /// 2026-11-29): the seed 58 → 22 solves, 10 → 8 relaxations, 0.71 of the time; fretting.toml 42 →
+  /// 31 solves, 0.90; 401 arc nodes 214 → 77 solves, 0.73; 401 × 2001 219 → 83, 0.77 (docs/threads.md,
+  /// "The Delassus operator from the factorisation").
   ControlledGlobalStage(const Problem& problem, ControlledStageOptions options);
-
-  /// |J| · lnz from which the interface's dofs J are ordered last in this stage's factor (SpdFactor's
-  /// `min_work`). Lower than the incremental solver's SpdFactor::kTrailingWork: that one saves the
-  /// |J| solves of W_ZZ once, this one every direction the iteration adds, about as many (391 sparse
-  /// solves on 462 interface dofs at 801 arc nodes, τ = 1e-6). Measured with `stcontact solve
-  /// examples/scenes/hemicylinder.toml --set mesh.arc_nodes=N --tol 1e-6 --no-reference`, both
-  /// orders alternated, medians of 3 (AMD EPYC, 2026-11-28): 801 arc nodes, 1.8e8, 391 → 162 solves,
-  /// 1.91 → 1.52 s (to 1e-4 1.02 → 0.82 s); 401 arc nodes, 3.8e7, 218 → 127 solves, 0.53 → 0.56 s;
-  /// 401 arc nodes × 2001 instants (the same factor) 2.26 → 2.30 s. 1601 arc nodes (8.2e8) and the
-  /// 3D meshes were above SpdFactor::kTrailingWork already.
-  static constexpr double kTrailingWork = 1e8;
 
   void solve(const InterfaceHistory& hat, InterfaceHistory& s) override;
   void observeGap(double gap) override { target_ = options_.gap_share * gap; }

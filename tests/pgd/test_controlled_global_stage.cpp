@@ -310,18 +310,17 @@ TEST(ControlledGlobalStage, RetimedIsTheStageOfTheOtherGrid) {
   EXPECT_THROW(stage.retime(other), std::invalid_argument);
 }
 
-// The separated stage orders its interface's dofs last from a lower work than the incremental
-// solver's factor (ControlledGlobalStage::kTrailingWork against SpdFactor::kTrailingWork): it
-// saves a solve for every direction it adds, not only the |J| of one Delassus operator. On the
-// zone within reach of the 801-node seed mesh (462 rows, |J| · lnz ≈ 1.8e8) its directions'
-// traces come from the trailing block, while the incremental solver's factor of the same dofs
-// stays plain.
-TEST(ControlledGlobalStage, CondensesTheZoneOfThe801NodeSeedMeshWhereTheIncrementalSolverDoesNot) {
-  stc::Problem problem = stc::buildProblem(stc::test::seedScene(801, 3));
+// The separated stage orders its interface's dofs last at every size SpdFactor's bounds allow,
+// the incremental solver's factor only from SpdFactor::kTrailingWork: the stage saves a solve for
+// every direction it adds, not only the |J| of one Delassus operator. On the zone within reach of
+// the seed mesh (101 arc nodes, 58 rows, |J| · lnz ≈ 1e6) its directions' traces come from the
+// trailing block, while the incremental solver's factor of the same dofs stays plain.
+TEST(ControlledGlobalStage, CondensesEvenTheSeedsZoneWhereTheIncrementalSolverDoesNot) {
+  stc::Problem problem = stc::buildProblem(stc::test::seedScene(101, 3));
   const std::optional<std::vector<int>> zone = stc::reachZone(problem);
   ASSERT_TRUE(zone);
   problem.contact = stc::restrictToNodes(problem.contact, *zone);
-  ASSERT_EQ(problem.contact.rows(), 462);
+  ASSERT_EQ(problem.contact.rows(), 58);
   const stc::pgd::ControlledGlobalStage stage(problem, {});
   EXPECT_TRUE(stage.basis().condensesInterface());
   const stc::SpdFactor incremental(problem.stiffness_free, "K_ff", stc::dofsReadBy(problem.contact.B));

@@ -3,6 +3,7 @@
 // measured against the incremental reference on the whole grid.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -47,7 +48,7 @@ TEST(NestedInTime, StrideKeepsAtLeastTheSubgridsInstants) {
 }
 
 // The true error on the whole grid is below the tolerance, as without the sub-grid; the first
-// record already counts the sub-grid's sparse solves and time.
+// record already counts the sub-grid's sparse solves and time (its stage in the summary).
 TEST(NestedInTime, StartsFromTheSubgridAndMeetsTheWholeGridsTolerance) {
   const stc::SolveResult nested = solveApriori(101);
   const stc::SolveResult plain = solveApriori(0);
@@ -59,7 +60,15 @@ TEST(NestedInTime, StartsFromTheSubgridAndMeetsTheWholeGridsTolerance) {
   EXPECT_LE(*nested.summary.error, 1e-6);
   EXPECT_LE(*plain.summary.error, 1e-6);
   const stc::IterationRecord& first = nested.summary.history.front();
-  EXPECT_GT(first.sparse_solves, 0);
+  const auto& stages = nested.summary.stages;
+  const auto found = std::find_if(stages.begin(), stages.end(),
+                                  [](const stc::SolveStage& s) { return s.kind == stc::SolveStage::Kind::SubGrid; });
+  ASSERT_NE(found, stages.end());
+  const stc::SolveStage& subgrid = *found;
+  EXPECT_GT(subgrid.relaxations, 0);
+  EXPECT_GT(subgrid.wall_s, 0.0);
+  EXPECT_GE(first.sparse_solves, subgrid.sparse_solves);
+  EXPECT_GT(first.wall_s, subgrid.wall_s);
   EXPECT_EQ(first.relaxations, 1);
   // The start is the shape of the solution: the first relaxation is closer to it than the plain
   // solve's first one.
