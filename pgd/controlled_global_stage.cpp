@@ -35,7 +35,7 @@ ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledS
     : problem_(problem),
       options_(options),
       matrix_(latin::searchDirectionOperator(problem)),
-      factor_(matrix_, "K + B^T k B", dofsReadBy(problem.contact.B), 0.0),
+      factor_(matrix_, "K + B^T k B", dofsReadBy(problem.contact.B), /*min_work=*/0.0),  // at any size (header)
       basis_(problem, factor_) {
   options_.validate();
 }
