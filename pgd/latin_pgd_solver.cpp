@@ -10,7 +10,10 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
   options.validate();
   ControlledGlobalStage stage(problem, options.stage);
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
-  SolveResult result = latin::solveLatinWith(problem, stage, options.latin, inputs, "latin-pgd");
+  const long set_up = stage.sparseSolves();  // the loads' responses, a warm start's directions
+  SolveResult result =
+      latin::solveLatinWith(problem, stage, options.latin, countingSolvesBefore(inputs, set_up), "latin-pgd");
+  result.summary.addSolvesBeforeIteration(set_up);
   result.interface_directions = stage.basis().directions();
   // The spatial modes need the responses, which a condensed interface has not solved yet
   // (response_basis.hpp): the last record counts those solves.

@@ -148,7 +148,10 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
                            const SeparatedCoarseBasis& coarse_basis) {
   pgd::ControlledGlobalStage stage(problem, options.stage);
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
-  SolveResult result = solveFasNestedInTime(problem, stage, options, inputs, coarse_basis);
+  const long set_up = stage.sparseSolves();  // the loads' responses, a warm start's directions
+  SolveResult result =
+      solveFasNestedInTime(problem, stage, options, countingSolvesBefore(inputs, set_up), coarse_basis);
+  result.summary.addSolvesBeforeIteration(set_up);
   result.interface_directions = stage.basis().directions();
   // What follows the iteration may solve: the responses of the spatial modes, the far nodes' lift
   // (response_basis.hpp); the last record counts those solves.

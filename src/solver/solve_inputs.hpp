@@ -36,6 +36,18 @@ struct SolveInputs {
   bool spatial_modes = true;
 };
 
+/// `inputs` whose callback sees `solves` more sparse solves in every record: those spent before the
+/// iteration (SolveSummary::addSolvesBeforeIteration gives the summary the same count).
+inline SolveInputs countingSolvesBefore(const SolveInputs& inputs, long solves) {
+  SolveInputs counted = inputs;
+  if (inputs.callback)
+    counted.callback = [callback = inputs.callback, solves](IterationRecord r) {
+      r.sparse_solves += static_cast<int>(solves);
+      return callback(r);
+    };
+  return counted;
+}
+
 /// Where an iterative solve starts: inputs.start, else s = 0 on `problem`'s interface.
 inline InterfaceHistory startingHistory(const Problem& problem, const SolveInputs& inputs) {
   if (inputs.start) return *inputs.start;

@@ -12,6 +12,8 @@
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/error_reference.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/latin/local_stage.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/strategies/registry.hpp"
 
 namespace {
@@ -124,6 +126,28 @@ TEST(WarmStart, AprioriDirectionsSeedTheNextBasis) {
     EXPECT_GE(whole.interface_directions.cols(), previous.interface_directions.cols()) << solver;
   }
   EXPECT_EQ(solve("latin", value(0.15)).spatial_modes.cols(), 0);
+}
+
+// The sparse solves a separated stage spends before its first relaxation, its loads' responses and
+// those of a warm start's directions (where the factor does not give their traces), are the solve's
+// own: its first record counts what a stage that seeds and then solves once has counted.
+TEST(WarmStart, TheFirstRecordCountsTheSolvesSpentBeforeTheIteration) {
+  const Value& v = value(0.3);
+  const stc::SolveResult previous = solve("latin-pgd", value(0.15));
+  stc::SolveInputs inputs;
+  inputs.start = &previous.interface;
+  inputs.basis_seed = &previous.interface_directions;
+  const stc::SolveResult warm = stc::solve(stc::strategyNamed("latin-pgd"), v.problem, v.scene.solver, inputs);
+  ASSERT_FALSE(warm.summary.history.empty());
+
+  stc::pgd::ControlledGlobalStage stage(v.problem, v.scene.solver.latin_pgd.stage);
+  const long loads = stage.sparseSolves();
+  EXPECT_GT(loads, 0);  // the seed scene's prescribed motion has separated load terms
+  stage.seed(previous.interface_directions);
+  stc::InterfaceHistory hat, s;
+  stc::latin::localStage(v.problem.contact, previous.interface, hat);
+  stage.solve(hat, s);
+  EXPECT_EQ(warm.summary.history.front().sparse_solves, stage.sparseSolves());
 }
 
 TEST(WarmStart, AStartOfTheWrongSizeIsRefused) {
