@@ -235,12 +235,16 @@ class ZoneRounds {
     const int d = contact.dimension;
     const std::vector<int> far = otherNodes(contact.size(), zone);
     const std::vector<int> rows = rowsOfNodes(d, zone), far_rows = rowsOfNodes(d, far);
-    // The whole interface needs no copy of the problem (restrictToNodes of every node is its interface).
-    const bool whole = far.empty();
+    // The whole interface at the scene's k needs no copy of the problem (restrictToNodes of every
+    // node is its interface). On a large 2D zone the search direction grows with it
+    // (ReducedInterfaceOptions::search_growth).
+    const double scale = options_.zone.searchScaleOn(static_cast<int>(zone.size()), d);
+    const bool whole = far.empty() && scale == 1.0;
     Problem part;
     if (!whole) {
       part = problem_;
       part.contact = restrictToNodes(contact, zone);
+      part.contact.search_direction *= scale;
     }
     if (inputs_.reference) measure_.emplace(*inputs_.reference, rows, contact.rows());
     const Offsets before = offsets_;

@@ -53,6 +53,20 @@ struct ReducedInterfaceOptions {
   int rounds = 3;
   /// A zone above this share of the contact nodes is the whole interface.
   double whole_share = 0.75;
+  /// γ: in 2D each round's search direction on a zone of n_Z nodes is k (n_Z / kSearchNodes)^γ when
+  /// n_Z > kSearchNodes (k of the scene's law and κ; 0: k itself). The law k = κ E ℓ_i / L follows
+  /// the stiffness of the coarsest modes, and on a finer 2D zone it leaves the smoother's k further
+  /// below its nodes' (k_i W_ii at κ = 4: 0.33 on the seed, 0.061 at 801 arc nodes, 0.034 at 1601;
+  /// 0.23 to 0.36 on the 3D scenes). With the zone from the first relaxation at the scene's k, the
+  /// best scale on the hemicylinder's 801 and 1601 arc nodes and on the fretting pad at h = 0.0025
+  /// (zones of 231, 459 and 133 nodes) is 1.5 to 2, 1.25 to 1.5 at h = 0.005 (67), 1 at 29 to 40:
+  /// about (n_Z / 40)^¼. In 3D κ itself is best (docs/search_direction.md, "κ for fas-apriori on
+  /// refined meshes").
+  double search_growth = 0.25;
+  static constexpr int kSearchNodes = 40;
+
+  /// The factor of the search direction on a zone of `nodes` contact nodes in `dimension`.
+  double searchScaleOn(int nodes, int dimension) const;
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
@@ -61,6 +75,7 @@ struct ReducedInterfaceOptions {
     visit("zone_reach_margin", o.reach_margin, atLeast(0));
     visit("zone_rounds", o.rounds, atLeast(1));
     visit("zone_whole_share", o.whole_share, inUnitClosed());
+    visit("zone_search_growth", o.search_growth, atLeast(0));
   }
   void validate() const { validateFields(*this, "reduced interface"); }
 };

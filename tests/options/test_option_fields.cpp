@@ -219,3 +219,17 @@ TEST(OptionFields, EverySolverKeyOfTheCodeIsDocumentedAndNoOther) {
   });
   EXPECT_EQ(documented, code);
 }
+
+// ReducedInterfaceOptions::searchScaleOn: (n_Z / 40)^γ on a 2D zone of more than 40 nodes, else 1;
+// 1 in 3D and with γ = 0.
+TEST(ReducedInterface, TheSearchDirectionGrowsWithA2dZoneOfMoreThan40Nodes) {
+  stc::fas::ReducedInterfaceOptions o;
+  EXPECT_DOUBLE_EQ(o.searchScaleOn(40, 2), 1.0);
+  EXPECT_DOUBLE_EQ(o.searchScaleOn(29, 2), 1.0);
+  EXPECT_NEAR(o.searchScaleOn(160, 2), std::sqrt(2.0), 1e-15);  // 4^¼
+  EXPECT_DOUBLE_EQ(o.searchScaleOn(160, 3), 1.0);
+  o.search_growth = 0.0;
+  EXPECT_DOUBLE_EQ(o.searchScaleOn(160, 2), 1.0);
+  o.search_growth = -0.1;
+  EXPECT_THROW(o.validate(), stc::InputError);
+}
