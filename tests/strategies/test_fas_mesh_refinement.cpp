@@ -8,8 +8,8 @@
 //   latin             85    97   180
 //   fas-apriori        6     8    14   (302c384; 12 at 201 with --set solver.zone_search_growth=0)
 // The count grows by 8 from 51 to 201 nodes where LATIN's grows by 95; the test asserts finest <=
-// coarsest + 12 (12, 14, 20 when this table was last measured, before 7c29fb4 or earlier; before the anticipated
-// expansion: 15, 18, 26; before the coarse step's Anderson mixing: 18, 19, 26).
+// coarsest + 12 (12, 14, 20 when the table was written; before the anticipated expansion: 15, 18,
+// 26; before the coarse step's Anderson mixing: 18, 19, 26).
 #include <gtest/gtest.h>
 
 #include <cstdio>
