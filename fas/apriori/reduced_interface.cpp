@@ -239,9 +239,9 @@ class ZoneRounds {
     // node is its interface). On a large 2D zone the search direction grows with it
     // (ReducedInterfaceOptions::search_growth).
     const double scale = options_.zone.searchScaleOn(static_cast<int>(zone.size()), d);
-    const bool whole = far.empty() && scale == 1.0;
+    const bool whole = far.empty(), own_problem = !whole || scale != 1.0;
     Problem part;
-    if (!whole) {
+    if (own_problem) {
       part = problem_;
       part.contact = restrictToNodes(contact, zone);
       part.contact.search_direction *= scale;
@@ -272,7 +272,7 @@ class ZoneRounds {
     round.basis_seed = seed_ ? &part_seed : nullptr;
     round.spatial_modes = inputs_.spatial_modes;
     // B of the nodes left out: the rows of their sub-interface.
-    SolveResult r = solveAprioriOn(whole ? problem_ : part, budget, round, restrictToNodes(contact, far).B, far_v,
+    SolveResult r = solveAprioriOn(own_problem ? part : problem_, budget, round, restrictToNodes(contact, far).B, far_v,
                                    coarse_basis_);
     count(r.summary, withClock(before, clock.value_or(clockOffset(r.summary.wall_s))));
     penetrating_nodes = penetrating(contact, far, far_v);

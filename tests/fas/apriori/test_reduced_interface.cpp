@@ -220,3 +220,20 @@ TEST(ReducedInterface, ARoundCutShortByTheCapHandsItsIterateToTheWholeInterface)
   EXPECT_LT(*h[half - 1].error, 1e-2 * *h[0].error);
   EXPECT_LT(*h[half].error, 0.25 * *h[0].error);
 }
+
+// A round on the whole interface keeps the whole of the iterations left, also where the search
+// direction grows with the zone (ReducedInterfaceOptions::search_growth: 101 nodes in 2D, k × 1.26,
+// a problem of its own). Here the zone is the whole interface (zone_whole_share = 0) and the solve
+// takes 15 relaxations to τ = 1e-6; with a cap of 16 a round that got half of it stopped at 8.
+TEST(ReducedInterface, ARoundOnTheWholeInterfaceWithAGrownSearchDirectionKeepsTheWholeCap) {
+  const stc::Problem problem = stc::buildProblem(stc::test::seedScene(101, 41));
+  stc::SolverSpec spec = stc::test::seedScene(101, 41).solver;
+  spec.setTolerance(1e-6);
+  spec.fas_apriori.zone.whole_share = 0.0;
+  spec.fas_apriori.fas.stop.max_iterations = 16;
+  ASSERT_GT(spec.fas_apriori.zone.searchScaleOn(problem.contact.size(), problem.dimension), 1.0);
+  const stc::SolveResult r = stc::solve(stc::strategyNamed("fas-apriori"), problem, spec, {});
+  EXPECT_NE(r.summary.message.find("101 of 101 contact nodes"), std::string::npos) << r.summary.message;
+  EXPECT_TRUE(r.summary.converged()) << r.summary.message;
+  EXPECT_GT(r.summary.relaxations, 8) << r.summary.message;
+}
