@@ -10,10 +10,10 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
   options.validate();
   ControlledGlobalStage stage(problem, options.stage);
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
-  const long set_up = stage.sparseSolves();  // the loads' responses, a warm start's directions
-  SolveResult result =
-      latin::solveLatinWith(problem, stage, options.latin, countingSolvesBefore(inputs, set_up), "latin-pgd");
-  result.summary.addSolvesBeforeIteration(set_up);
+  // The loads' responses and a warm start's directions, solved before the iteration.
+  SolveResult result = countingSolvesBefore(stage.sparseSolves(), inputs, [&](const SolveInputs& counted) {
+    return latin::solveLatinWith(problem, stage, options.latin, counted, "latin-pgd");
+  });
   result.interface_directions = stage.basis().directions();
   // The spatial modes need the responses, which a condensed interface has not solved yet
   // (response_basis.hpp): the last record counts those solves.

@@ -148,10 +148,10 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
                            const SeparatedCoarseBasis& coarse_basis) {
   pgd::ControlledGlobalStage stage(problem, options.stage);
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
-  const long set_up = stage.sparseSolves();  // the loads' responses, a warm start's directions
-  SolveResult result =
-      solveFasNestedInTime(problem, stage, options, countingSolvesBefore(inputs, set_up), coarse_basis);
-  result.summary.addSolvesBeforeIteration(set_up);
+  // The loads' responses and a warm start's directions, solved before the iteration.
+  SolveResult result = countingSolvesBefore(stage.sparseSolves(), inputs, [&](const SolveInputs& counted) {
+    return solveFasNestedInTime(problem, stage, options, counted, coarse_basis);
+  });
   result.interface_directions = stage.basis().directions();
   // What follows the iteration may solve: the responses of the spatial modes, the far nodes' lift
   // (response_basis.hpp); the last record counts those solves.

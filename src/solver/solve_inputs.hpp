@@ -6,6 +6,7 @@
 
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/solver/error_measure.hpp"
+#include "stcontact/solver/solve_result.hpp"
 #include "stcontact/solver/solve_summary.hpp"
 #include "stcontact/spacetime/interface_history.hpp"
 
@@ -36,16 +37,20 @@ struct SolveInputs {
   bool spatial_modes = true;
 };
 
-/// `inputs` whose callback sees `solves` more sparse solves in every record: those spent before the
-/// iteration (SolveSummary::addSolvesBeforeIteration gives the summary the same count).
-inline SolveInputs countingSolvesBefore(const SolveInputs& inputs, long solves) {
+/// `solve(inputs)` for a solve that spent `solves` sparse solves before its iteration (a separated
+/// stage's load responses, a warm start's directions): its callback and its summary
+/// (SolveSummary::addSolvesBeforeIteration) count them in every record.
+template <class Solve>
+SolveResult countingSolvesBefore(long solves, const SolveInputs& inputs, Solve&& solve) {
   SolveInputs counted = inputs;
   if (inputs.callback)
     counted.callback = [callback = inputs.callback, solves](IterationRecord r) {
       r.sparse_solves += static_cast<int>(solves);
       return callback(r);
     };
-  return counted;
+  SolveResult result = solve(counted);
+  result.summary.addSolvesBeforeIteration(solves);
+  return result;
 }
 
 /// Where an iterative solve starts: inputs.start, else s = 0 on `problem`'s interface.
