@@ -16,6 +16,7 @@
 #include <Eigen/CholmodSupport>
 #include <thread>
 
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/latin/global_stage.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 
@@ -73,13 +74,13 @@ struct Solver {
 Eigen::SparseMatrix<double> globalOperator(int arc_nodes) {
   const stc::Problem problem = stc::buildProblem(stc::readScene(
       STC_SOURCE_DIR "/examples/scenes/hemicylinder.toml", {"solver.search_scale=3", "mesh.arc_nodes=" + std::to_string(arc_nodes)}));
-  return stc::latin::searchDirectionOperator(problem);
+  return stc::searchDirectionOperator(problem);
 }
 
 Eigen::SparseMatrix<double> halfBallOperator(int divisions) {
   const stc::Problem problem = stc::buildProblem(
       stc::readScene(STC_SOURCE_DIR "/examples/scenes/hemisphere.toml", {"mesh.divisions=" + std::to_string(divisions)}));
-  return stc::latin::searchDirectionOperator(problem);
+  return stc::searchDirectionOperator(problem);
 }
 
 void Solve3d(benchmark::State& state) {

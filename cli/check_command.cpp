@@ -50,7 +50,7 @@ int runCheck(const CheckArgs& args) {
                                                  " (solved in the obstacle's frame)\n"
                                            : std::string())
             << "initial gap      min " << c.initial_gap.minCoeff() << ", max " << c.initial_gap.maxCoeff() << "\n"
-            << "search direction " << searchLawFormula(scene.solver.search_law) << ": kappa = " << scene.solver.search_scale
+            << "search direction " << searchLawFormula(scene.search_direction.law) << ": kappa = " << scene.search_direction.scale
             << ", L = "
             << p.length_scale << ", kappa E / L = " << c.search_scale_per_length << ", k in ["
             << c.search_direction.minCoeff() << ", " << c.search_direction.maxCoeff() << "]\n"

@@ -18,25 +18,27 @@
 namespace stc::cli {
 namespace {
 
-std::unique_ptr<ErrorReference> referenceOrWarning(const Problem& problem, TerminalProgress& progress) {
+std::unique_ptr<ErrorReference> referenceOrWarning(const Problem& problem, TerminalProgress& progress,
+                                                   PreparedOperators& operators) {
   std::string warning;
   std::unique_ptr<ErrorReference> reference;
   {
     const RunProgress run(&progress, "reference (incremental)");
-    reference = solveReference(problem, run.callback(), warning);
+    reference = solveReference(problem, run.callback(), warning, operators);
   }
   if (!warning.empty()) std::cerr << "warning: " << warning << std::endl;
   return reference;
 }
 
 SolveResult runSolver(const Problem& problem, const Scene& scene, const ErrorReference* reference,
-                      TerminalProgress& progress) {
+                      TerminalProgress& progress, PreparedOperators& operators) {
   const RunProgress run(&progress, std::string(scene.solver.name()));
   SolveInputs inputs;
   inputs.reference = reference;
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
   inputs.callback = run.callback();
   inputs.spatial_modes = false;  // not written
+  inputs.operators = &operators;
   return solve(problem, scene.solver, inputs);
 }
 
@@ -51,12 +53,13 @@ int runSolve(const SolveArgs& args) {
   RunFolder folder(out);                         // checked and locked before the solve, written after
 
   TerminalProgress progress(args.quiet);
+  PreparedOperators operators;  // each operator prepared once: the reference, the solve, the frames
   std::unique_ptr<ErrorReference> reference;
   if (scene.solver.strategy != Strategy::Incremental && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes)
-    reference = referenceOrWarning(problem, progress);
-  const SolveResult result = runSolver(problem, scene, reference.get(), progress);
+    reference = referenceOrWarning(problem, progress, operators);
+  const SolveResult result = runSolver(problem, scene, reference.get(), progress, operators);
   throwIfInterrupted();  // a solve stopped by a signal writes nothing
-  writeRunOutputs(folder.path(), problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
+  writeRunOutputs(folder.path(), problem, result, {scene.parameters_json, STC_VERSION}, scene.output, operators);
   folder.commit();
 
   if (!args.quiet) {

@@ -16,21 +16,18 @@
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/interruption.hpp"
-#include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/json_writer.hpp"
 #include "stcontact/io/run_folder.hpp"
-#include "stcontact/pgd/displacement_history.hpp"
-#include "stcontact/pgd/space_time_svd.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/studies/mode_localisation.hpp"
+#include "stcontact/studies/solution_svd.hpp"
 #include "stcontact/studies/svd_figures.hpp"
 #include "stcontact/studies/svd_tables.hpp"
 
 namespace stc::cli {
 namespace {
 
-constexpr int kFigureSingularValues = 50;  // seed Fig. 3a shows 50
 constexpr int kFigureModes = 6;            // seed Figs. 2 and 3b show 6
 constexpr int kComparedValues = 10;        // the check of docs/svd_seed.md: the leading 10 σ, ARPACK vs dense
 constexpr int kMaxDenseCheck = 2000;       // m above which the O(m³) dense check is skipped
@@ -58,11 +55,8 @@ struct Analysis {
 Analysis analyse(const Eigen::MatrixXd& U, const Eigen::SparseMatrix<double>& K, int wanted) {
   const int m = static_cast<int>(U.cols());
   Analysis a;
-  pgd::EnergySvdOptions options;
-  options.method = pgd::SvdMethod::Arpack;
-  options.modes = std::min(m - 1, std::max(wanted, kFigureSingularValues));
   const auto start = std::chrono::steady_clock::now();
-  a.svd = pgd::energySvd(U, K, options);
+  a.svd = arpackEnergySvd(U, K, wanted);
   a.svd_s = seconds(start);
   if (m <= kMaxDenseCheck) {
     const pgd::SpaceTimeSvd dense = pgd::energySvd(U, K);
@@ -120,7 +114,7 @@ void writeFigures(const RunFolder& folder, const Problem& problem, const Analysi
   const int drawn = std::min({kFigureModes, a.svd.size()});
   SvdFigureSpec spec;
   spec.scene = problem.name;
-  spec.singular_values = std::min(kFigureSingularValues, a.svd.size());
+  spec.singular_values = std::min(kSvdFigurePairs, a.svd.size());
   spec.time_functions = drawn;
   writeFileAtomically(out / "modes_deformed.dat",
                       deformedModesData(std::get<TriMesh>(problem.body), a.svd, drawn, loc,
@@ -190,25 +184,19 @@ int runSvd(const SvdArgs& args) {
   const std::filesystem::path out =
       args.out ? std::filesystem::path(*args.out) : std::filesystem::path("results") / scene.name / "svd";
   const Problem problem = buildProblem(scene);
-  const int m = problem.numSteps();
-  if (m < 3) throw InputError("svd needs at least 3 instants (time.steps = " + std::to_string(m) + ")");
-  if (args.modes < 1 || args.modes > m - 1)
-    throw InputError("--modes = " + std::to_string(args.modes) + " must be in [1, " + std::to_string(m - 1) +
-                     "] (time.steps - 1)");
+  checkSvdSizes(problem.numSteps(), args.modes);
   RunFolder folder(out);  // every input checked (--modes 0 created the folder): locked, written whole at the end
   const std::filesystem::path& dir = folder.path();
 
-  const auto start = std::chrono::steady_clock::now();
-  const SolveResult solved = solveIncremental(problem);
-  const double solve_s = seconds(start);
+  const SolutionHistory history = incrementalHistory(problem);
+  const SolveResult& solved = history.solved;
+  const double solve_s = history.solve_s;
   if (!solved.summary.converged()) {
     std::cerr << "error: the incremental solver did not converge (" << solved.summary.message
               << "): no SVD written\n";
     return 2;
   }
-  const SpdFactor factor(problem.stiffness_free, "K_ff");
-  const Eigen::MatrixXd U = pgd::fullDisplacementHistory(problem, factor, solved.interface.lambda);
-  const Analysis a = analyse(U, problem.stiffness, args.modes);
+  const Analysis a = analyse(history.U, problem.stiffness, args.modes);
   const int modes = std::min(args.modes, a.svd.size());
 
   // The localisation bands, the mode figures and modes.vtu draw plane meshes: 2D scenes only.

@@ -4,7 +4,7 @@
 # The build tree's root, ${PROJECT_BINARY_DIR}/include, holds one link per module to its folder
 # (made at configure time) and the generated stcontact/version.hpp; an install copies the headers,
 # without the detail/ folders, to include/stcontact/<module>/.
-set(STC_CORE_MODULES core options mesh fem contact scene problem spacetime linalg io solver incremental)
+set(STC_CORE_MODULES core options mesh fem contact scene problem operators spacetime linalg io solver incremental)
 set(STC_ROOT_MODULES latin pgd fas strategies studies cli python)
 set(STC_INCLUDE_ROOT ${PROJECT_BINARY_DIR}/include)
 

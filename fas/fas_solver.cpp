@@ -127,7 +127,7 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
   StoppingRule rule{options.stop};
   rule.estimate_kind = EstimateKind::CalibratedIndicator;
   rule.calibration_safety = options.estimate_safety;
-  IterationMonitor monitor(solver_name, rule, &energy, inputs.reference, inputs.callback);
+  IterationMonitor monitor(solver_name, rule, &energy, inputs.reference, inputs.callback, inputs.origin);
   FineLevel fine(problem, global, start, monitor);
   CoarseGuard guard(options, problem.dimension, provider.anticipates());
   int rank = 0;

@@ -6,16 +6,13 @@
 
 namespace stc::latin {
 
-Eigen::SparseMatrix<double> searchDirectionOperator(const Problem& problem) {
-  const auto& B = problem.contact.B;
-  const Eigen::SparseMatrix<double> kB = problem.contact.search_direction.asDiagonal() * B;
-  return Eigen::SparseMatrix<double>(problem.stiffness_free + Eigen::SparseMatrix<double>(B.transpose()) * kB);
-}
-
+// An owner of its own, which the stage outlives: the operator stays with the stage's shared pointer.
 GlobalStage::GlobalStage(const Problem& problem, int block_size)
+    : GlobalStage(problem, *std::make_unique<PreparedOperators>(), block_size) {}
+
+GlobalStage::GlobalStage(const Problem& problem, PreparedOperators& operators, int block_size)
     : problem_(problem),
-      matrix_(searchDirectionOperator(problem)),
-      factor_(matrix_, "K + B^T k B"),
+      operator_(operators.searchOperator(problem)),
       B_rows_(problem.contact.B),
       block_size_(std::max(1, block_size)) {}
 
@@ -43,7 +40,7 @@ void GlobalStage::solveBlock(int k0, int count, const InterfaceHistory& hat, Int
   const auto l_hat = hat.lambda.middleCols(k0, count);
   Eigen::MatrixXd rhs = problem_.loadBlock(k0, count);
   rhs.noalias() += B.transpose() * (l_hat + k.asDiagonal() * v_hat);
-  const Eigen::MatrixXd u = factor_.solve(rhs, workspace);
+  const Eigen::MatrixXd u = operator_->factor.solve(rhs, workspace);
   s.v.middleCols(k0, count).noalias() = B_rows_ * u;
   s.lambda.middleCols(k0, count) = l_hat - k.asDiagonal() * (s.v.middleCols(k0, count) - v_hat);
   if (u_out) u_out->middleCols(k0, count) = u;

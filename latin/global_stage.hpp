@@ -8,10 +8,12 @@
 // with its own CHOLMOD workspace; every block's arithmetic is the same, so is the result.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <memory>
 #include <vector>
 
 #include "stcontact/latin/linear_stage.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/options/latin_options.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/spacetime/interface_history.hpp"
@@ -22,6 +24,8 @@ class GlobalStage : public LinearStage {
  public:
   /// Factorises K_ff + Bᵀ k B with k = problem.contact.search_direction.
   explicit GlobalStage(const Problem& problem, int block_size = LatinOptions{}.block_size);
+  /// The same operator taken from `operators` (prepared there once for the run).
+  GlobalStage(const Problem& problem, PreparedOperators& operators, int block_size = LatinOptions{}.block_size);
 
   /// s = global stage of ŝ (all instants). Adds m to the sparse-solve count.
   void solve(const InterfaceHistory& hat, InterfaceHistory& s) override { solve(hat, s, keep_ ? &u_ : nullptr); }
@@ -33,8 +37,8 @@ class GlobalStage : public LinearStage {
   const Eigen::MatrixXd& displacements() const { return u_; }
 
   /// The operator K_ff + Bᵀ k B and its factor (the FAS coarse space and PGD use them).
-  const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
-  const SpdFactor& factor() const override { return factor_; }
+  const Eigen::SparseMatrix<double>& matrix() const { return operator_->matrix; }
+  const SpdFactor& factor() const override { return operator_->factor; }
   long sparseSolves() const override { return sparse_solves_; }
 
  private:
@@ -43,8 +47,7 @@ class GlobalStage : public LinearStage {
                   SpdFactor::Workspace& workspace) const;
 
   const Problem& problem_;
-  Eigen::SparseMatrix<double> matrix_;
-  SpdFactor factor_;
+  std::shared_ptr<const SearchOperator> operator_;
   Eigen::SparseMatrix<double, Eigen::RowMajor> B_rows_;  ///< B by rows: v = B u 4x faster (measured)
   int block_size_;
   std::vector<SpdFactor::Workspace> workspaces_;  ///< one per thread, grown on demand
@@ -52,7 +55,5 @@ class GlobalStage : public LinearStage {
   bool keep_ = false;
   Eigen::MatrixXd u_;
 };
-
-Eigen::SparseMatrix<double> searchDirectionOperator(const Problem& problem);
 
 }  // namespace stc::latin

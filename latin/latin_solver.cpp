@@ -28,8 +28,11 @@ StoppingRule stoppingRuleFor(const LinearStage& global, const LatinOptions& opti
 
 SolveResult solveLatin(const Problem& problem, const LatinOptions& options, const SolveInputs& inputs) {
   options.validate();
-  GlobalStage global(problem, options.block_size);
-  return solveLatinWith(problem, global, options, inputs, "latin");
+  SolveInputs clocked = inputs;  // the operator's preparation on the solve's clock
+  clocked.origin = inputs.origin.clocked();
+  std::unique_ptr<PreparedOperators> own;
+  GlobalStage global(problem, operatorsOr(inputs.operators, own), options.block_size);
+  return solveLatinWith(problem, global, options, clocked, "latin");
 }
 
 SolveResult solveLatinWith(const Problem& problem, LinearStage& global, const LatinOptions& options,
@@ -38,7 +41,8 @@ SolveResult solveLatinWith(const Problem& problem, LinearStage& global, const La
   InterfaceHistory s = startingHistory(problem, inputs);
   requireFits(s, problem);
   const EquilibriumEnergy energy(problem, global.factor());
-  IterationMonitor monitor(solver_name, stoppingRuleFor(global, options), &energy, inputs.reference, inputs.callback);
+  IterationMonitor monitor(solver_name, stoppingRuleFor(global, options), &energy, inputs.reference, inputs.callback,
+                           inputs.origin);
   const Eigen::VectorXd& k = problem.contact.search_direction;
   const long solves_before = global.sparseSolves();
   InterfaceHistory hat, s_new;

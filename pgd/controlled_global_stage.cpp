@@ -31,12 +31,17 @@ Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double norm, double 
 
 }  // namespace
 
+// An owner of its own, which the stage outlives: the operator stays with the stage's shared pointer.
 ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledStageOptions options)
+    : ControlledGlobalStage(problem, options, *std::make_unique<PreparedOperators>()) {}
+
+ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledStageOptions options,
+                                             PreparedOperators& operators)
     : problem_(problem),
       options_(options),
-      matrix_(latin::searchDirectionOperator(problem)),
-      factor_(matrix_, "K + B^T k B", dofsReadBy(problem.contact.B), /*min_work=*/0.0),  // at any size (header)
-      basis_(problem, factor_) {
+      // the interface's dofs last at any size (header)
+      operator_(operators.searchOperator(problem, {dofsReadBy(problem.contact.B), /*min_work=*/0.0})),
+      basis_(problem, operator_->factor) {
   options_.validate();
 }
 

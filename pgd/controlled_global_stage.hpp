@@ -22,8 +22,8 @@
 // one product with d n_C columns where a solve took three with p, and no enrichment; c = Zsᵀ w̃ is
 // formed only when asked for. On the zones of 801 arc nodes and of the graded half-ball the
 // enrichment ends at 391 of 462 and 606 of 606 rows (docs/floor.md, "Every row").
-#include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/linear_stage.hpp"
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/options/separated_stage_options.hpp"
 #include "stcontact/pgd/response_basis.hpp"
 
@@ -42,13 +42,15 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// 31 solves, 0.93; 401 arc nodes 214 → 77 solves, 0.77; 401 × 2001 219 → 83, 0.78; punch_seat.toml
   /// 34 → 46 relaxations, 1.19 (docs/threads.md, "The Delassus operator from the factorisation").
   ControlledGlobalStage(const Problem& problem, ControlledStageOptions options);
+  /// The same operator taken from `operators` (prepared there once for the run).
+  ControlledGlobalStage(const Problem& problem, ControlledStageOptions options, PreparedOperators& operators);
 
   void solve(const InterfaceHistory& hat, InterfaceHistory& s) override;
   void observeGap(double gap) override { target_ = options_.gap_share * gap; }
   long sparseSolves() const override { return basis_.sparseSolves(); }
   int rank() const override { return basis_.size(); }
   bool changesItsMap() const override { return true; }
-  const SpdFactor& factor() const override { return factor_; }
+  const SpdFactor& factor() const override { return operator_->factor; }
 
   /// Starts the directions from `directions` (d n_C × p, e.g. a neighbouring problem's: a warm
   /// start), k⁻¹-orthonormalised in order, dependent ones dropped. Returns the number kept.
@@ -60,7 +62,7 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// iteration in time uses to solve on a sub-grid and then on the whole grid with one basis.
   void retime(const Problem& grid);
   const ResponseBasis& basis() const { return basis_; }
-  const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
+  const Eigen::SparseMatrix<double>& matrix() const { return operator_->matrix; }
   /// c of the last solve (p × m): the displacement history is u_k = U_F g_k + X c_k.
   const Eigen::MatrixXd& coordinates() const;
   /// Whether the directions span every interface row (the exact stage of the header's "Every row").
@@ -105,8 +107,7 @@ class ControlledGlobalStage : public latin::LinearStage {
 
   const Problem& problem_;
   ControlledStageOptions options_;
-  Eigen::SparseMatrix<double> matrix_;
-  SpdFactor factor_;
+  std::shared_ptr<const SearchOperator> operator_;
   ResponseBasis basis_;
   mutable Eigen::MatrixXd c_;
   Eigen::MatrixXd w_last_;        ///< w̃ of the last exact solve (every row)

@@ -8,12 +8,14 @@ namespace stc::pgd {
 
 SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options, const SolveInputs& inputs) {
   options.validate();
-  ControlledGlobalStage stage(problem, options.stage);
+  SolveInputs counted = inputs;
+  counted.origin = inputs.origin.clocked();  // the stage's set-up on the solve's clock
+  std::unique_ptr<PreparedOperators> own;
+  ControlledGlobalStage stage(problem, options.stage, operatorsOr(inputs.operators, own));
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
   // The loads' responses and a warm start's directions, solved before the iteration.
-  SolveResult result = countingSolvesBefore(stage.sparseSolves(), inputs, [&](const SolveInputs& counted) {
-    return latin::solveLatinWith(problem, stage, options.latin, counted, "latin-pgd");
-  });
+  counted.origin.sparse_solves += stage.sparseSolves();
+  SolveResult result = latin::solveLatinWith(problem, stage, options.latin, counted, "latin-pgd");
   result.interface_directions = stage.basis().directions();
   // The spatial modes need the responses, which a condensed interface has not solved yet
   // (response_basis.hpp): the last record counts those solves.

@@ -40,7 +40,7 @@ py::dict checkSizes(const SceneHandle& handle) {
   sizes["t_end"] = p.times.back();
   sizes["initial_gap_min"] = c.initial_gap.minCoeff();
   sizes["initial_gap_max"] = c.initial_gap.maxCoeff();
-  sizes["kappa"] = scene.solver.search_scale;
+  sizes["kappa"] = scene.search_direction.scale;
   sizes["length_scale"] = p.length_scale;
   sizes["kappa_young_per_length"] = c.search_scale_per_length;
   sizes["search_direction_min"] = c.search_direction.minCoeff();

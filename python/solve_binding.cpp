@@ -17,7 +17,7 @@
 #include "stcontact/io/contact_tables.hpp"
 #include "stcontact/io/run_folder.hpp"
 #include "stcontact/io/run_writer.hpp"
-#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/python/bindings.hpp"
 #include "stcontact/python/callback_bridge.hpp"
 #include "stcontact/python/numpy_arrays.hpp"
@@ -132,13 +132,14 @@ py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
 /// Everything the Python SolveResult holds. Texts and tables first, while `result` is whole; then
 /// the large matrices are moved into their arrays. Call within the call's thread count (the
 /// summary records it).
-py::dict resultDict(const SceneHandle& run, SolveResult&& result) {
+py::dict resultDict(const SceneHandle& run, SolveResult&& result, const PreparedOperators& operators) {
   const Scene& scene = run.scene();
   const ProblemPtr problem = run.problem();
   py::dict out;
   out["solver"] = std::string(scene.solver.name());
   out["dimension"] = problem->dimension;
-  out["summary_json"] = summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION});
+  out["summary_json"] =
+      summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION}, operators.preparations());
   out["history"] = historyArrays(result.summary);
   out["reactions"] = reactionArrays(*problem, result);
   out["times"] = movedToNumpy(std::vector<double>(problem->times));
@@ -159,7 +160,7 @@ SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_refer
   std::unique_ptr<ErrorReference> reference;
   if (scene.solver.strategy != Strategy::Incremental && with_reference &&
       problem.contact.size() <= kMaxReferenceContactNodes)
-    reference = solveReference(problem, bridge.signalsOnly(), warning);
+    reference = solveReference(problem, bridge.signalsOnly(), warning, *inputs.operators);
   if (bridge.interrupted()) return {};
   inputs.reference = reference.get();
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
@@ -176,8 +177,10 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   std::optional<RunFolder> folder;  // checked and locked before the solve, written whole after it
   if (options.out) folder.emplace(*options.out);
   std::optional<InterfaceHistory> start;
+  PreparedOperators operators;  // each operator prepared once: the reference, the solve, the frames
   SolveInputs inputs;
   inputs.spatial_modes = options.spatial_modes;
+  inputs.operators = &operators;
   applyWarmStart(warm, *problem, start, inputs);
 
   CallbackBridge bridge(std::move(callback));
@@ -186,10 +189,10 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   bridge.rethrowPending();
   if (!warning.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
   if (folder) {
-    writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
+    writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION}, scene.output, operators);
     folder->commit();
   }
-  return resultDict(run, std::move(result));
+  return resultDict(run, std::move(result), operators);
 }
 
 /// Full displacements n × m (dof d j: u_x of node j, d j + 1: u_y, d j + 2: u_z in 3D) rebuilt from the forces.
@@ -204,8 +207,8 @@ py::array displacementsFromForces(const ProblemRef& ref, const Eigen::MatrixXd& 
   Eigen::MatrixXd u;
   {
     py::gil_scoped_release unlocked;
-    const SpdFactor factor(problem->stiffness_free, "K_ff");
-    u = pgd::fullDisplacementHistory(*problem, factor, forces);
+    PreparedOperators operators;
+    u = fullDisplacements(*problem, *operators.stiffnessFree(*problem), forces);
     for (int k = 0; k < problem->numSteps(); ++k) problem->addFrameMotion(u.col(k), k);  // a moving obstacle's frame
   }
   return movedToNumpy(std::move(u));

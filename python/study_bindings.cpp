@@ -8,10 +8,8 @@
 #include <optional>
 
 #include "stcontact/core/input_error.hpp"
-#include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/run_folder.hpp"
-#include "stcontact/pgd/displacement_history.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 #include "stcontact/python/bindings.hpp"
 #include "stcontact/python/callback_bridge.hpp"
@@ -21,34 +19,21 @@
 #include "stcontact/studies/compare_runs.hpp"
 #include "stcontact/studies/comparison_writer.hpp"
 #include "stcontact/studies/number_format.hpp"
+#include "stcontact/studies/solution_svd.hpp"
 
 namespace stc::python {
 namespace {
 
-constexpr int kSvdFigurePairs = 50;  // pairs `stcontact svd` computes at least (its Fig. 3a shows 50)
-
-/// The checks of `stcontact svd` (cli/svd_command.cpp) on the instants and the modes asked.
-void checkSvdSizes(int m, int modes) {
-  if (m < 3) throw InputError("svd needs at least 3 instants (time.steps = " + std::to_string(m) + ")");
-  if (modes < 1 || modes > m - 1)
-    throw InputError("--modes = " + std::to_string(modes) + " must be in [1, " + std::to_string(m - 1) +
-                     "] (time.steps - 1)");
-}
-
-/// The energy SVD of the incremental solution with the options `stcontact svd` uses (ARPACK, at
-/// least kSvdFigurePairs pairs). Lock released; a Ctrl-C stops the incremental solve.
+/// The energy SVD of the incremental solution with the options `stcontact svd` uses
+/// (studies/solution_svd.hpp). Lock released; a Ctrl-C stops the incremental solve.
 pgd::SpaceTimeSvd energySvdOfSolution(const Problem& problem, int modes, CallbackBridge& bridge) {
   py::gil_scoped_release unlocked;
-  const SolveResult solved = solveIncremental(problem, {}, {.callback = bridge.signalsOnly()});
+  const SolutionHistory history = incrementalHistory(problem, bridge.signalsOnly());
   if (bridge.interrupted()) return {};
-  if (!solved.summary.converged())
-    throw std::runtime_error("the incremental solver did not converge (" + solved.summary.message + "): no SVD");
-  const SpdFactor factor(problem.stiffness_free, "K_ff");
-  const Eigen::MatrixXd U = pgd::fullDisplacementHistory(problem, factor, solved.interface.lambda);
-  pgd::EnergySvdOptions options;
-  options.method = pgd::SvdMethod::Arpack;
-  options.modes = std::min(problem.numSteps() - 1, std::max(modes, kSvdFigurePairs));
-  return pgd::energySvd(U, problem.stiffness, options);
+  if (!history.solved.summary.converged())
+    throw std::runtime_error("the incremental solver did not converge (" + history.solved.summary.message +
+                             "): no SVD");
+  return arpackEnergySvd(history.U, problem.stiffness, modes);
 }
 
 /// The columns of singular_values.csv, time_functions.csv (ν_i √σ_i) and the modes of modes.vtu

@@ -10,11 +10,21 @@ Reads every #include "stcontact/<module>/..." of the sources (src/<module>/ for 
   3. the Python module includes nothing of the program (python/ -> cli/).
 Prints the module graph (each module, its floor, the modules it includes) and every violation.
 
-Usage: scripts/include_graph.py [--dot FILE] [--markdown] [--check-doc FILE]
-  --dot FILE        also write the module graph for Graphviz
-  --markdown        print the floors as the markdown table docs/architecture.md holds
-  --check-doc FILE  fail (exit 1) unless FILE holds that table, as printed, between the lines
-                    "<!-- floors: begin -->" and "<!-- floors: end -->"
+  4. no io -> incremental, no pgd -> incremental (u(lambda) and the prepared stiffness live in
+     operators/, below both);
+  5. with --check-options: touching a strategy's options header recompiles the library sources of
+     that strategy, the registry, the scene reader and the front ends only (OPTIONS_USERS), not the
+     model (mesh, fem, contact, problem) nor another strategy.
+
+Usage: scripts/include_graph.py [--dot FILE] [--markdown] [--check-doc FILE] [--check-options]
+                                [--recompiles HEADER]
+  --dot FILE         also write the module graph for Graphviz
+  --markdown         print the floors as the markdown table docs/architecture.md holds
+  --check-doc FILE   fail (exit 1) unless FILE holds that table, as printed, between the lines
+                     "<!-- floors: begin -->" and "<!-- floors: end -->"
+  --check-options    item 5 above, with the count of library sources each options header reaches
+  --recompiles HEADER  print the library sources that include HEADER (a path from the root),
+                     directly or through other headers: what a change of it recompiles
 Exit status: 0 clean, 1 a violation (each printed) or a stale table, 2 an include that names no file.
 """
 import os
@@ -22,8 +32,8 @@ import re
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CORE = ['core', 'options', 'mesh', 'linalg', 'scene', 'fem', 'contact', 'spacetime', 'problem', 'solver',
-        'incremental', 'io']
+CORE = ['core', 'options', 'mesh', 'linalg', 'scene', 'fem', 'contact', 'spacetime', 'problem', 'operators',
+        'solver', 'incremental', 'io']
 # Lowest first; modules on one line share a floor (docs/architecture.md, "Floors").
 FLOORS = [
     ['core'],
@@ -33,6 +43,7 @@ FLOORS = [
     ['fem', 'contact'],
     ['spacetime'],
     ['problem'],
+    ['operators'],
     ['solver'],
     ['incremental'],
     ['io'],
@@ -43,7 +54,20 @@ FLOORS = [
     ['studies'],
     ['cli', 'python'],
 ]
-FORBIDDEN = [('python', 'cli')]
+FORBIDDEN = [('python', 'cli'), ('io', 'incremental'), ('pgd', 'incremental')]
+# Each strategy's options header, and the folders of the library whose sources a change of it may
+# recompile beside the front ends (FRONT: the options, the scene reader, the registry, the studies,
+# the program, the module): the strategy's own, and those of the strategies built on it.
+FRONT = ['src/options/', 'src/scene/', 'strategies/', 'studies/', 'cli/', 'python/']
+OPTIONS_USERS = {
+    # latin-pgd's options hold LATIN's; fas-aposteriori's LATIN fine level is latin's global stage
+    'src/options/latin_options.hpp': ['latin/', 'pgd/', 'fas/aposteriori/'],
+    'src/options/latin_pgd_options.hpp': ['pgd/'],
+    'src/options/fas_aposteriori_options.hpp': ['fas/aposteriori/'],
+    'src/options/fas_apriori_options.hpp': ['fas/'],  # fas-aposteriori runs on its fine level too
+    # fas-aposteriori solves with the incremental solver when no converged solution is given
+    'src/options/incremental_options.hpp': ['src/incremental/', 'fas/aposteriori/'],
+}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"stcontact/([^"]+)"', re.M)
 
 
@@ -137,6 +161,20 @@ def main():
     table = markdown(modules, rank)
     if '--markdown' in sys.argv:
         print(table)
+    if '--check-options' in sys.argv:
+        for header, owners in OPTIONS_USERS.items():
+            reached = recompiled(edges, header)
+            print('%-42s recompiles %d library sources' % (header, len(reached)))
+            for source in reached:
+                if not source.startswith(tuple(owners + FRONT)):
+                    problems.append('options: %s recompiles %s, neither its strategy (%s) nor a front end' % (
+                        header, source, ', '.join(owners)))
+    if '--recompiles' in sys.argv:
+        header = sys.argv[sys.argv.index('--recompiles') + 1]
+        reached = recompiled(edges, header)
+        for source in reached:
+            print(source)
+        print('%d library sources include %s' % (len(reached), header))
     if '--check-doc' in sys.argv:
         doc = sys.argv[sys.argv.index('--check-doc') + 1]
         if doc_table(doc) != table:
@@ -150,6 +188,21 @@ def main():
         print('%d files, %d modules: %s' % (len(files), len(rank), 'no arrow up, no circle' if not problems else
                                             '%d violations' % len(problems)))
     return 1 if problems else 0
+
+
+def recompiled(edges, header):
+    """The sources (.cpp) that include `header`, directly or through other headers, sorted."""
+    includers = {}
+    for path, targets in edges.items():
+        for target in targets:
+            includers.setdefault(target, set()).add(path)
+    seen, todo = set(), [header]
+    while todo:
+        for path in includers.get(todo.pop(), ()):
+            if path not in seen:
+                seen.add(path)
+                todo.append(path)
+    return sorted(p for p in seen if p.endswith('.cpp'))
 
 
 def file_circles(edges):

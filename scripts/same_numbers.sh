@@ -27,10 +27,14 @@ timed_columns() {
     { for (i = 1; i <= NF; i++) if (drop[i]) $i = "#"; print }'
 }
 
-# normalise FILE: the file without what differs between two runs of the same build.
+# normalise FILE [BOTH]: the file without what differs between two runs of the same build. A
+# summary.json keeps its "preparations" (the operators the run prepared, without their seconds) only
+# when BOTH programs write them (BOTH = 1): a program from before they were listed writes none.
 normalise() {
   case $1 in
-    */summary.json) sed -E '/^ +"(wall_s|version)":/d; s/[0-9.e+-]+ s\)/# s)/g' "$1" ;;
+    */summary.json)
+      sed -E '/^ +"(wall_s|version|seconds)":/d; s/[0-9.e+-]+ s\)/# s)/g' "$1" |
+        if [ "${2:-1}" = 1 ]; then cat; else sed '/^  "preparations": \[/,/^  \],$/d'; fi ;;
     *.csv) timed_columns , < "$1" ;;
     *.md|*.png|*.gp) echo "(not compared: times and figures)" ;;
     *.vtu) cat "$1" ;;  # binary frames: compared byte for byte
@@ -46,7 +50,9 @@ compare() {
     if [ ! -f "$a/$f" ] || [ ! -f "$b/$f" ]; then
       echo "DIFF $1/$f: present in one run only"; status=1; continue
     fi
-    if ! diff -u <(normalise "$a/$f") <(normalise "$b/$f") > "$work/diff" 2>&1; then
+    local both=1
+    if [ "$(grep -c '"preparations"' "$a/$f")" != "$(grep -c '"preparations"' "$b/$f")" ]; then both=0; fi
+    if ! diff -u <(normalise "$a/$f" $both) <(normalise "$b/$f" $both) > "$work/diff" 2>&1; then
       echo "DIFF $1/$f"; head -20 "$work/diff"; status=1
     fi
   done

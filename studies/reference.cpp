@@ -14,18 +14,20 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 
 }  // namespace
 
-ReferenceSolution computeReference(const Problem& problem, ProgressReporter* progress) {
+ReferenceSolution computeReference(const Problem& problem, ProgressReporter* progress, PreparedOperators* operators) {
+  std::unique_ptr<PreparedOperators> own;
+  PreparedOperators& prepared = operatorsOr(operators, own);
   ReferenceSolution out;
   const auto start = Clock::now();
   SolveResult ref;
   {
     const RunProgress run(progress, "reference (incremental)");
-    ref = solveIncremental(problem, {}, {.callback = run.callback()});
+    ref = solveIncremental(problem, {}, {.callback = run.callback(), .operators = &prepared});
   }
   out.solve_s = secondsSince(start);
   if (!ref.summary.converged())
     throw std::runtime_error("the incremental reference did not converge: " + ref.summary.message);
-  auto factor = std::make_shared<const SpdFactor>(problem.stiffness_free, "K_ff");
+  std::shared_ptr<const SpdFactor> factor = prepared.stiffnessFree(problem);
   out.factor_nonzeros = factor->factorNonZeros();
   out.reference = std::make_unique<ErrorReference>(problem, std::move(factor), std::move(ref.interface.lambda));
   out.total_s = secondsSince(start);
@@ -35,14 +37,13 @@ ReferenceSolution computeReference(const Problem& problem, ProgressReporter* pro
 // A reference that fails (Newton stops at some instant) is not an internal failure: the solve
 // goes on without a true error, and the warning says why.
 std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
-                                               std::string& warning) {
-  SolveResult ref = solveIncremental(problem, {}, {.callback = callback});
+                                               std::string& warning, PreparedOperators& operators) {
+  SolveResult ref = solveIncremental(problem, {}, {.callback = callback, .operators = &operators});
   if (!ref.summary.converged()) {
     warning = "no true error: the incremental reference did not converge (" + ref.summary.message + ")";
     return nullptr;
   }
-  auto factor = std::make_shared<const SpdFactor>(problem.stiffness_free, "K_ff");
-  return std::make_unique<ErrorReference>(problem, std::move(factor), std::move(ref.interface.lambda));
+  return std::make_unique<ErrorReference>(problem, operators.stiffnessFree(problem), std::move(ref.interface.lambda));
 }
 
 }  // namespace stc

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "stcontact/incremental/error_reference.hpp"
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/studies/progress.hpp"
 
@@ -18,18 +19,20 @@ inline constexpr int kMaxReferenceContactNodes = 1000;
 struct ReferenceSolution {
   std::unique_ptr<ErrorReference> reference;
   double solve_s = 0.0;  ///< the incremental solve alone
-  double total_s = 0.0;  ///< with the error measure's set-up (factor of K_ff, Delassus operator)
+  double total_s = 0.0;  ///< with the error measure's set-up (its reference energy)
   double factor_nonzeros = 0.0;  ///< entries of the Cholesky factor of K_ff (SpdFactor::factorNonZeros)
 };
 
 /// A study's reference: solves `problem` with the incremental solver and builds the true-error
-/// measure on it; throws std::runtime_error when the incremental solve does not converge.
-ReferenceSolution computeReference(const Problem& problem, ProgressReporter* progress);
+/// measure on it, both with the one factor of K_ff of `operators` (its own when null); throws
+/// std::runtime_error when the incremental solve does not converge.
+ReferenceSolution computeReference(const Problem& problem, ProgressReporter* progress,
+                                   PreparedOperators* operators = nullptr);
 
-/// A solve's reference: the same, or nullptr with the reason in `warning` when the incremental solve
-/// stops early (the solve then goes on without a true error). `callback` sees the incremental
-/// solver's records (progress, Ctrl-C).
+/// A solve's reference: the same with the run's `operators`, or nullptr with the reason in
+/// `warning` when the incremental solve stops early (the solve then goes on without a true error).
+/// `callback` sees the incremental solver's records (progress, Ctrl-C).
 std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
-                                               std::string& warning);
+                                               std::string& warning, PreparedOperators& operators);
 
 }  // namespace stc

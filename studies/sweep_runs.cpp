@@ -52,10 +52,11 @@ std::string pointLine(const SweepPoint& p, const std::string& key) {
   return line;
 }
 
+// The frames take K_ff from the point's reference (`operators`); the timed solves prepare their own.
 void writeSolution(const std::filesystem::path& dir, const Problem& problem, const Scene& scene,
-                   const SolveResult& result) {
+                   const SolveResult& result, PreparedOperators& operators) {
   ensureWritableDirectory(dir);
-  writeRunOutputs(dir, problem, result, {scene.parameters_json, STC_VERSION}, scene.output);
+  writeRunOutputs(dir, problem, result, {scene.parameters_json, STC_VERSION}, scene.output, operators);
 }
 
 }  // namespace
@@ -63,7 +64,8 @@ void writeSolution(const std::filesystem::path& dir, const Problem& problem, con
 SweepPoint WarmChain::solveValue(const Scene& scene, const SweepRange& range, std::size_t index,
                                  const SweepSettings& settings) {
   const Problem problem = buildProblem(scene);  // K + BᵀkB and its factor may depend on the value
-  const ReferenceSolution reference = computeReference(problem, settings.progress);
+  PreparedOperators operators;
+  const ReferenceSolution reference = computeReference(problem, settings.progress, &operators);
   const std::string label = range.override(index) + " (" + std::to_string(index + 1) + "/" +
                             std::to_string(range.values.size()) + ") ";
   SweepPoint point;
@@ -85,7 +87,7 @@ SweepPoint WarmChain::solveValue(const Scene& scene, const SweepRange& range, st
   point.forces = endForces(problem.contact, solved.result.interface);
   if (settings.independent) point.cold = timedSolve(problem, scene, {}, reference, label + "cold", settings).cost;
   if (settings.solutions_dir)
-    writeSolution(*settings.solutions_dir / ("value_" + point.text), problem, scene, solved.result);
+    writeSolution(*settings.solutions_dir / ("value_" + point.text), problem, scene, solved.result, operators);
   if (settings.progress) settings.progress->note(pointLine(point, range.key));
 
   interface_ = std::move(solved.result.interface);

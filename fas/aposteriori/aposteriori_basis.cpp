@@ -2,14 +2,14 @@
 
 #include <algorithm>
 
-#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 
 namespace stc::fas {
 
 Eigen::MatrixXd aposterioriModes(const Problem& problem, const SpdFactor& stiffness_free,
                                  const Eigen::MatrixXd& converged_lambda, int count) {
-  const Eigen::MatrixXd U = pgd::fullDisplacementHistory(problem, stiffness_free, converged_lambda);
+  const Eigen::MatrixXd U = fullDisplacements(problem, stiffness_free, converged_lambda);
   const pgd::SpaceTimeSvd svd = pgd::energySvd(U, problem.stiffness);
   const int kept = std::min(count, svd.resolved);
   Eigen::MatrixXd modes(problem.numFreeDofs(), kept);

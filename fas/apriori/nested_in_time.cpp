@@ -23,17 +23,13 @@ std::string ordinal(int q) {
   return std::to_string(q) + suffix;
 }
 
-// What the sub-grid solve spent, added to the records of the solve on the whole grid.
+// What the sub-grid solve spent: its stage in the summary (its sparse solves and time are in the
+// records of the solve on the whole grid, through their origin).
 struct SubgridCost {
   int instants = 0, stride = 0, relaxations = 0, sparse_solves = 0;
   double wall_s = 0.0;
   bool converged = false;
 
-  IterationRecord added(IterationRecord r) const {
-    r.sparse_solves += sparse_solves;
-    r.wall_s += wall_s;
-    return r;
-  }
   SolveStage stage() const {
     return {SolveStage::Kind::SubGrid, describe(), relaxations, sparse_solves, wall_s, 0, 0};
   }
@@ -71,6 +67,7 @@ SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalSt
   const int q = nestedStride(problem.numSteps(), options.nested.instants);
   if (q == 0) return solveOnGrid(problem, stage, options, inputs, coarse_basis);
   const InterfaceHistory start = startingHistory(problem, inputs);
+  const RecordOrigin origin = inputs.origin.clocked();
   const auto clock = Clock::now();
   const long solves_before = stage.sparseSolves();
   const std::vector<int> kept = everyNthInstant(problem.numSteps(), q);
@@ -79,7 +76,9 @@ SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalSt
   subgrid_options.fas.stop.tolerance = std::max(options.fas.stop.tolerance, options.nested.tolerance);
   stage.retime(subgrid);
   const InterfaceHistory subgrid_start = atInstants(start, kept);
-  const SolveResult coarse = solveOnGrid(subgrid, stage, subgrid_options, {.start = &subgrid_start}, coarse_basis);
+  // Its own counts (no callback, no true error), on the whole solve's clock.
+  const SolveResult coarse = solveOnGrid(subgrid, stage, subgrid_options,
+                                         {.start = &subgrid_start, .origin = {.clock = origin.clock}}, coarse_basis);
   stage.retime(problem);
   SubgridCost cost{subgrid.numSteps(), q, coarse.summary.relaxations,
                    static_cast<int>(stage.sparseSolves() - solves_before), 0.0, coarse.summary.converged()};
@@ -88,10 +87,8 @@ SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalSt
   cost.wall_s = std::chrono::duration<double>(Clock::now() - clock).count();
   SolveInputs whole = inputs;
   whole.start = cost.converged ? &interpolated : &start;
-  if (inputs.callback) whole.callback = [&](const IterationRecord& r) { return inputs.callback(cost.added(r)); };
+  whole.origin = origin.afterSolves(cost.sparse_solves);
   SolveResult out = solveOnGrid(problem, stage, options, whole, coarse_basis);
-  for (IterationRecord& r : out.summary.history) r = cost.added(r);
-  out.summary.wall_s += cost.wall_s;
   out.summary.addStage(cost.stage());
   return out;
 }

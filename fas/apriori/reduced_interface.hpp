@@ -28,73 +28,20 @@
 // The result is lifted to the whole interface: λ = 0 and v = B_F u on the nodes left out. Counts and
 // times include the first relaxation, when there is one, and everything before the restricted solve's
 // first iteration; the summary records the rounds as a stage (SolveStage::ContactZone).
-#include <Eigen/SparseCore>
-#include <atomic>
-#include <chrono>
-#include <optional>
-#include <string>
-#include <vector>
-
+// One file per level: step 1 here, the rounds of steps 2–3 in zone_rounds.hpp, each round's solve in
+// single_solve.hpp.
 #include "stcontact/fas/apriori/apriori_basis.hpp"
 #include "stcontact/options/fas_apriori_options.hpp"
 #include "stcontact/problem/problem.hpp"
-#include "stcontact/solver/error_measure.hpp"
 #include "stcontact/solver/solve_inputs.hpp"
 #include "stcontact/solver/solve_result.hpp"
 
 namespace stc::fas {
-
-/// The true-error measure of a solve on some rows of the interface: the other rows carry no force.
-class ErrorOnRows : public ErrorMeasure {
- public:
-  /// `rows`: the rows solved, among `all_rows` rows of `whole`'s interface.
-  ErrorOnRows(const ErrorMeasure& whole, std::vector<int> rows, int all_rows);
-  double relativeError(const Eigen::MatrixXd& lambda) const override;
-  bool defined() const override { return whole_.defined(); }
-  /// Time spent in relativeError so far (the solve's clock leaves the measure out).
-  double secondsSpent() const { return static_cast<double>(nanoseconds_.load()) * 1e-9; }
-
- private:
-  const ErrorMeasure& whole_;
-  std::vector<int> rows_;
-  int all_rows_;
-  mutable std::atomic<long long> nanoseconds_{0};
-};
-
-/// One `fas-apriori` solve of `problem` (its separated stage, a priori basis and FAS cycle) from
-/// inputs.start, with the directions started from inputs.basis_seed when given; `far_v` receives
-/// B_far u of the last iterate's displacement history (B_far: rows × n_free, e.g. the rows of nodes
-/// left out), truncated in energy to what a converged estimate leaves of the tolerance (at most
-/// (τ − ε_est)² E dropped, E the iterate's energy: pgd::ResponseBasis::displacementOn); the result's
-/// spatial modes are left empty unless inputs.spatial_modes. The coarse spaces come from
-/// `coarse_basis` here and in the two functions below (the a priori ones by default).
-SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
-                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v,
-                           const SeparatedCoarseBasis& coarse_basis = {});
 
 /// `fas-apriori` with the interface reduced to its contact zone (the header's steps 1–3). Falls back
 /// to the whole interface when the first relaxation's zone holds more than options.zone.whole_share
 /// of the nodes.
 SolveResult solveAprioriOnContactZone(const Problem& problem, const FasAprioriOptions& options,
                                       const SolveInputs& inputs, const SeparatedCoarseBasis& coarse_basis = {});
-
-/// Where steps 2–3 start: ŝ on the whole interface (the first start, or the first relaxation's local
-/// stage), and what was spent before (counted in the result). The histories pointed to must outlive
-/// the solve; each round copies the rows of its zone alone.
-struct ZoneStart {
-  const InterfaceHistory* hat = nullptr;    ///< ŝ of the first round (null: s = 0)
-  const InterfaceHistory* start = nullptr;  ///< the first start (null: s = 0), for a whole-interface restart
-  std::optional<IterationRecord> first;     ///< the record of a first relaxation, counted in the result
-  double measure_s = 0.0;                   ///< time spent measuring its true error (not the solve's)
-  std::string zone_origin;                  ///< where the zone came from, for the summary's message
-  std::chrono::steady_clock::time_point clock = std::chrono::steady_clock::now();  ///< the result's time origin
-};
-
-/// Steps 2–3 from the contact nodes `zone` (indices, increasing): restricted solves, each followed by
-/// the check of the nodes left out, until none penetrates (solveAprioriOnContactZone after step 1; a
-/// test may give a zone that misses nodes).
-SolveResult solveAprioriOnZone(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
-                               std::vector<int> zone, const ZoneStart& from,
-                               const SeparatedCoarseBasis& coarse_basis = {});
 
 }  // namespace stc::fas

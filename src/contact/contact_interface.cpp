@@ -338,7 +338,7 @@ void setSearchDirection(ContactInterface& contact, double kappa, double young, d
   contact.search_scale_per_length = kappa * young / length_scale;
   contact.search_direction.resize(contact.rows());
   Eigen::VectorXd k = contact.search_scale_per_length * contact.tributary;
-  if (law == SearchLaw::Local) {  // k_i h̄ / h_i, h̄ = Σ ℓ_i / Σ (ℓ_i / h_i) (src/options/search_law.hpp)
+  if (law == SearchLaw::Local) {  // k_i h̄ / h_i, h̄ = Σ ℓ_i / Σ (ℓ_i / h_i) (src/options/search_direction_options.hpp)
     Eigen::VectorXd per_size = Eigen::VectorXd::Zero(contact.size());  // ℓ_i / h_i (0 off every facet)
     for (int i = 0; i < contact.size(); ++i)
       if (contact.facet_size[i] > 0.0) per_size[i] = contact.tributary[i] / contact.facet_size[i];

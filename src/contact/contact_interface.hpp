@@ -11,7 +11,7 @@
 #include "stcontact/contact/obstacle.hpp"
 #include "stcontact/mesh/tet_mesh.hpp"
 #include "stcontact/mesh/tri_mesh.hpp"
-#include "stcontact/options/search_law.hpp"
+#include "stcontact/options/search_direction_options.hpp"
 
 namespace stc {
 
@@ -47,7 +47,7 @@ struct ContactInterface {
   std::vector<int> held_rows;
   /// Search direction k (d n_C, diagonal): the same k_i = κ E ℓ_i / L on every row of node i
   /// (docs/method.md §2; ℓ_i an area in 3D, so k_i is a stiffness in both), or with the local law
-  /// κ E ℓ_i h̄ / (L h_i) (src/options/search_law.hpp).
+  /// κ E ℓ_i h̄ / (L h_i) (src/options/search_direction_options.hpp).
   Eigen::VectorXd search_direction;
   double search_scale_per_length = 0.0;  ///< κ E / L: k_i = search_scale_per_length · ℓ_i (tributary law)
 
@@ -112,7 +112,7 @@ using GlobalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
 GlobalVector inGlobalFrame(const ContactInterface& contact, int i, const Eigen::Ref<const Eigen::VectorXd>& local);
 
 /// Sets k_i = κ E ℓ_i / L (tributary law) or κ E ℓ_i h̄ / (L h_i) (local law,
-/// src/options/search_law.hpp) on every row of every node.
+/// src/options/search_direction_options.hpp) on every row of every node.
 void setSearchDirection(ContactInterface& contact, double kappa, double young, double length_scale,
                         SearchLaw law = SearchLaw::Tributary);
 

@@ -8,7 +8,7 @@
 #include <variant>
 
 #include "stcontact/contact/surface_obstacle.hpp"
-#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/model_spec.hpp"
 
 namespace stc {
 

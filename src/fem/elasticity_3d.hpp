@@ -5,7 +5,7 @@
 #include <Eigen/SparseCore>
 
 #include "stcontact/mesh/tet_mesh.hpp"
-#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/model_spec.hpp"
 
 namespace stc {
 

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/model_spec.hpp"
 
 namespace stc {
 

@@ -24,11 +24,4 @@ void giveHeldRowsCompliance(const ContactInterface& contact, Eigen::MatrixXd& de
   for (int r : contact.held_rows) delassus(r, r) = delassus(d * (r / d), d * (r / d));
 }
 
-Eigen::MatrixXd displacementsFromForces(const Problem& problem, const SpdFactor& stiffness_free,
-                                        const Eigen::MatrixXd& lambda) {
-  Eigen::MatrixXd rhs = problem.loadBlock(0, problem.numSteps());
-  rhs.noalias() += problem.contact.B.transpose() * lambda;
-  return stiffness_free.solveOnThreads(rhs);
-}
-
 }  // namespace stc

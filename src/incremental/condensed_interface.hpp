@@ -29,8 +29,4 @@ Eigen::MatrixXd symmetricDelassus(const Eigen::SparseMatrix<double>& B, const Ei
 /// Δv_r = W(r, r) λ_r (from λ_r = 0 at t_0, by induction). The support takes the force.
 void giveHeldRowsCompliance(const ContactInterface& contact, Eigen::MatrixXd& delassus);
 
-/// Free displacements u(t_k) = K⁻¹ (f(t_k) + Bᵀ λ(t_k)) for every instant (n_free × m).
-Eigen::MatrixXd displacementsFromForces(const Problem& problem, const SpdFactor& stiffness_free,
-                                        const Eigen::MatrixXd& lambda);
-
 }  // namespace stc

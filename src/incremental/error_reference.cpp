@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "stcontact/operators/displacement.hpp"
+
 namespace stc {
 
 double spaceTimeEnergy(const Problem& problem, const Eigen::MatrixXd& u_free) {
@@ -47,7 +49,7 @@ ErrorReference::ErrorReference(const Problem& problem, std::shared_ptr<const Spd
 ErrorReference::~ErrorReference() = default;
 
 void ErrorReference::setReferenceEnergy(const Problem& problem, const SpdFactor& stiffness_free) {
-  const Eigen::MatrixXd u_free = displacementsFromForces(problem, stiffness_free, lambda_ref_);
+  const Eigen::MatrixXd u_free = freeDisplacements(problem, stiffness_free, lambda_ref_);
   reference_energy_ = spaceTimeEnergy(problem, u_free);
   const double gamma = problem.numDofs() * std::numeric_limits<double>::epsilon();  // γ_n (header)
   defined_ = reference_energy_ > gamma * absoluteEnergyScale(problem, u_free);

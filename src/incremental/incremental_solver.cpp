@@ -349,10 +349,12 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
   // The zone's dofs ordered last: its Delassus operator from the factorisation (reach_zone.hpp).
   const std::optional<std::vector<int>> zone = options.zone_within_reach ? reachZone(problem) : std::nullopt;
   const std::vector<int> zone_dofs = zone ? dofsReadBy(restrictToNodes(problem.contact, *zone).B) : std::vector<int>();
-  const SpdFactor factor(problem.stiffness_free, "the free-dof stiffness K_ff", zone_dofs);
+  std::unique_ptr<PreparedOperators> own;
+  const std::shared_ptr<const SpdFactor> factor =
+      operatorsOr(inputs.operators, own).stiffnessFree(problem, {zone_dofs, SpdFactor::kTrailingWork});
   if (problem.contact.dimension == 3 || options.cone_law)
-    return solveCone(problem, options, callback, start, factor, zone);
-  return solvePlane(problem, options, callback, start, factor, zone);
+    return solveCone(problem, options, callback, start, *factor, zone);
+  return solvePlane(problem, options, callback, start, *factor, zone);
 }
 
 }  // namespace stc

@@ -70,6 +70,12 @@ JsonObject& JsonObject::add(std::string key, const std::vector<double>& values) 
   return addDocument(std::move(key), {std::move(array)});
 }
 
+JsonObject& JsonObject::add(std::string key, const std::vector<JsonObject>& values) {
+  ordered_json array = ordered_json::array();
+  for (const JsonObject& v : values) array.push_back(v.document_->json);
+  return addDocument(std::move(key), {std::move(array)});
+}
+
 JsonObject& JsonObject::add(std::string key, const RawJson& value) {
   ordered_json parsed = ordered_json::parse(value.text, nullptr, false);
   if (parsed.is_discarded())

@@ -43,6 +43,7 @@ class JsonObject {
   JsonObject& add(std::string key, std::nullopt_t);
   JsonObject& add(std::string key, const JsonObject& value);
   JsonObject& add(std::string key, const std::vector<double>& values);
+  JsonObject& add(std::string key, const std::vector<JsonObject>& values);  ///< an array of objects
   JsonObject& add(std::string key, const RawJson& value);
 
   template <detail::JsonInteger T>

@@ -10,7 +10,6 @@
 #include "stcontact/core/threads.hpp"
 #include "stcontact/fem/elasticity.hpp"
 #include "stcontact/fem/elasticity_3d.hpp"
-#include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/body_blocks.hpp"
 #include "stcontact/io/contact_tables.hpp"
@@ -18,6 +17,7 @@
 #include "stcontact/io/vtu_writer.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/mesh/connected_parts.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/spacetime/contact_state_table.hpp"
 
 namespace stc {
@@ -175,7 +175,25 @@ std::optional<JsonObject> subGridJson(const SolveSummary& summary) {
 
 }  // namespace
 
-std::string summaryJson(const Problem& problem, const SolveSummary& summary, const RunInfo& info) {
+namespace {
+
+// summary.json's "preparations": each operator the run prepared (src/operators/prepared_operators.hpp).
+std::vector<JsonObject> preparationsJson(const std::vector<Preparation>& preparations) {
+  std::vector<JsonObject> out;
+  for (const Preparation& p : preparations) {
+    JsonObject entry;
+    entry.add("operator", p.name).add("rows", p.rows);
+    if (p.contact_nodes > 0) entry.add("contact_nodes", p.contact_nodes);
+    entry.add("factor_nonzeros", p.factor_nonzeros).add("seconds", p.seconds).add("uses", p.uses);
+    out.push_back(std::move(entry));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string summaryJson(const Problem& problem, const SolveSummary& summary, const RunInfo& info,
+                        const std::vector<Preparation>& preparations) {
   JsonObject json;
   json.add("solver", summary.solver)
       .add("termination", toString(summary.termination))
@@ -194,15 +212,16 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
       .add("n_dofs", problem.numDofs())
       .add("n_contact_nodes", problem.contact.size())
       .add("n_steps", problem.numSteps())
+      .add("preparations", preparationsJson(preparations))
       .add("version", info.version)
       .add("parameters", RawJson{info.parameters_json});
   return json.str() + "\n";
 }
 
 void writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
-                         int stride, VtuPrecision precision) {
+                         int stride, VtuPrecision precision, PreparedOperators& operators) {
   ensureWritableDirectory(dir / "vtu");
-  const SpdFactor factor(problem.stiffness_free, "K_ff");
+  const std::shared_ptr<const SpdFactor> factor = operators.stiffnessFree(problem);
   const ContactStateTable states(problem.contact, result.admissible());
   const FrameLayout layout = frameLayout(problem, precision);
   const std::vector<int> steps = frameSteps(problem.numSteps(), stride);
@@ -211,9 +230,8 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
   std::vector<SpdFactor::Workspace> workspaces(static_cast<std::size_t>(threads));
   parallelFor(static_cast<int>(steps.size()), threads, [&](int item, int thread) {
     const int k = steps[static_cast<std::size_t>(item)];
-    const Eigen::MatrixXd rhs = problem.load(k) + problem.contact.B.transpose() * result.interface.lambda.col(k);
-    const Eigen::VectorXd u =
-        problem.absoluteDisplacement(factor.solve(rhs, workspaces[static_cast<std::size_t>(thread)]), k);
+    const Eigen::VectorXd u = problem.absoluteDisplacement(
+        freeDisplacementAt(problem, *factor, result.interface.lambda.col(k), k, workspaces[static_cast<std::size_t>(thread)]), k);
     Eigen::MatrixXd force, state;
     contactFields(problem, result, states, k, force, state);
     const FrameFields fields = frameFields(problem, u, force, state, layout.bodies);
@@ -231,7 +249,7 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
 }
 
 void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
-                     const RunInfo& info, const OutputSpec& output) {
+                     const RunInfo& info, const OutputSpec& output, PreparedOperators& operators) {
   ensureWritableDirectory(dir);
   {
     AtomicFile file(dir / "reactions.csv");
@@ -246,8 +264,8 @@ void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, c
   writeFileAtomically(dir / "history.csv", historyCsv(result.summary));
   // The VTU writer refuses non-finite values: a run that broke down numerically gets no VTU series.
   if (output.vtu && result.interface.lambda.allFinite() && result.interface.v.allFinite())
-    writeSolutionSeries(dir, problem, result, output.vtu_stride, output.vtu_precision);
-  writeFileAtomically(dir / "summary.json", summaryJson(problem, result.summary, info));  // last: marks a complete run
+    writeSolutionSeries(dir, problem, result, output.vtu_stride, output.vtu_precision, operators);
+  writeFileAtomically(dir / "summary.json", summaryJson(problem, result.summary, info, operators.preparations()));  // last: marks a complete run
 }
 
 }  // namespace stc

@@ -4,9 +4,11 @@
 // summary.json, and solution.pvd + vtu/ when asked.
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/problem/problem.hpp"
-#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/output_spec.hpp"
 #include "stcontact/solver/solve_result.hpp"
 
 namespace stc {
@@ -16,17 +18,20 @@ struct RunInfo {
   std::string version;                 ///< stcontact version, recorded in summary.json
 };
 
+/// The frames take K_ff from `operators` (the run's: prepared once, shared with its reference and
+/// its solve), and summary.json lists what the run prepared.
 void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
-                     const RunInfo& info, const OutputSpec& output);
+                     const RunInfo& info, const OutputSpec& output, PreparedOperators& operators);
 
 /// history.csv: iteration,relaxations,indicator,error,rank,wall_s (error empty when unknown).
 std::string historyCsv(const SolveSummary& summary);
-/// summary.json.
-std::string summaryJson(const Problem& problem, const SolveSummary& summary, const RunInfo& info);
+/// summary.json, with the operators the run prepared.
+std::string summaryJson(const Problem& problem, const SolveSummary& summary, const RunInfo& info,
+                        const std::vector<Preparation>& preparations);
 
 /// solution.pvd + vtu/step_XXXXX.vtu: displacement, contact force and state (nodes), stress tensor
 /// and von Mises stress (elements) at every `stride`-th instant and the last one.
 void writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
-                         int stride, VtuPrecision precision = VtuPrecision::Float32);
+                         int stride, VtuPrecision precision, PreparedOperators& operators);
 
 }  // namespace stc

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/output_spec.hpp"
 
 namespace stc {
 

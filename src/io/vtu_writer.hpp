@@ -32,7 +32,7 @@
 #include "stcontact/io/vtu_arrays.hpp"
 #include "stcontact/mesh/tet_mesh.hpp"
 #include "stcontact/mesh/tri_mesh.hpp"
-#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/output_spec.hpp"
 
 namespace stc {
 

@@ -33,7 +33,6 @@ double SolverSpec::tolerance() const {
 }
 
 void SolverSpec::validate() const {
-  FieldCheck("solver")("search_scale", search_scale, positive());
   latin.validate();
   latin_pgd.validate();
   fas_aposteriori.validate();

@@ -1,6 +1,7 @@
 #pragma once
-// The scene's [solver] table: which strategy, the search direction's scale, and the options of every
-// strategy, each in its own struct (declared, defaulted and range-checked there, src/options/*.hpp).
+// The scene's [solver] table: which strategy, and the options of every strategy, each in its own
+// struct (declared, defaulted and range-checked there, src/options/*.hpp). The table's two other
+// keys, the search direction's (search_direction_options.hpp), belong to the model.
 // A key shared by several strategies (tolerance, max_iterations, pre_relaxations, pgd_gap_share…)
 // sets the field in each: the scene reader walks every struct's fields.
 #include "stcontact/options/fas_aposteriori_options.hpp"
@@ -9,20 +10,12 @@
 #include "stcontact/options/latin_options.hpp"
 #include "stcontact/options/latin_pgd_options.hpp"
 #include "stcontact/options/option_fields.hpp"
-#include "stcontact/options/search_law.hpp"
 #include "stcontact/options/strategy.hpp"
 
 namespace stc {
 
 struct SolverSpec {
   Strategy strategy = Strategy::FasApriori;  ///< solver.name
-  /// κ of the search direction k = κ E ℓ_i / L (docs/method.md §2), a property of the problem every
-  /// LATIN-based strategy iterates on; 4 from docs/search_direction.md.
-  double search_scale = 4.0;
-  /// How k is spread over the nodes (src/options/search_law.hpp): the local law, which is the
-  /// tributary one where every contact facet has one size and follows the facet size on graded meshes
-  /// (docs/search_direction.md "The local law").
-  SearchLaw search_law = SearchLaw::Local;
   latin::LatinOptions latin;
   pgd::LatinPgdOptions latin_pgd;
   fas::FasAposterioriOptions fas_aposteriori;
@@ -31,8 +24,6 @@ struct SolverSpec {
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
-    visit("search_scale", o.search_scale, positive());
-    visit("search_law", o.search_law, Keywords<SearchLaw>(kSearchLaws));
     latin::LatinOptions::fields(o.latin, visit);
     pgd::LatinPgdOptions::fields(o.latin_pgd, visit);
     fas::FasAposterioriOptions::fields(o.fas_aposteriori, visit);

@@ -13,7 +13,7 @@
 
 #include "stcontact/mesh/tet_mesh.hpp"
 #include "stcontact/mesh/tri_mesh.hpp"
-#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/model_spec.hpp"
 
 namespace stc {
 

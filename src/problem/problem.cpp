@@ -127,7 +127,7 @@ std::vector<char> elementsOfBodyOf(const BodyMesh& body, const std::string& mast
 /// R, the body's size (the default of L): the generator's radius, else half the mesh's largest
 /// extent, which is the radius again for a half-disc or half-ball read from a file (its extent is
 /// 2R), so that the same body gets the same search direction however it was meshed.
-double bodySize(const Scene& scene, const Problem& p) {
+double bodySize(const ModelSpec& scene, const Problem& p) {
   if (!scene.mesh.generator.empty()) return scene.mesh.radius;
   Eigen::MatrixXd x = p.nodePositions();
   if (scene.mesh.mirror_gap) x = x.leftCols(x.cols() / 2).eval();  // one body (mesh/mirror_image.hpp)
@@ -143,8 +143,8 @@ double bodySize(const Scene& scene, const Problem& p) {
 constexpr double kMinSearchScale = 1e-2;
 constexpr double kMaxSearchScale = 1e2;
 
-void requireMeaningfulSearchDirection(const Scene& scene, double size, double length_scale) {
-  const double kappa = scene.solver.search_scale;
+void requireMeaningfulSearchDirection(const ModelSpec& scene, double size, double length_scale) {
+  const double kappa = scene.search_direction.scale;
   const double scaled = kappa * size / length_scale;
   if (scaled >= kMinSearchScale && scaled <= kMaxSearchScale) return;
   std::ostringstream msg;
@@ -156,7 +156,7 @@ void requireMeaningfulSearchDirection(const Scene& scene, double size, double le
   throw InputError(msg.str());
 }
 
-void addLoads(Problem& p, const Scene& scene, const std::vector<int>& owner) {
+void addLoads(Problem& p, const ModelSpec& scene, const std::vector<int>& owner) {
   const Eigen::SparseMatrix<double>& K = p.stiffness;
   auto restrict = [&](const Eigen::VectorXd& full) {
     Eigen::VectorXd out(p.numFreeDofs());
@@ -208,7 +208,7 @@ std::vector<char> heldAtZero(const Problem& p, const std::vector<int>& owner) {
 }
 
 // `message` prefixed with the scene file and the key it concerns.
-std::string inContext(const Scene& scene, const std::string& key, const std::string& message) {
+std::string inContext(const ModelSpec& scene, const std::string& key, const std::string& message) {
   const std::string file = scene.source.empty() ? "<scene>" : scene.source.string();
   return file + ": " + (key.empty() ? "" : "key '" + key + "': ") + message;
 }
@@ -216,7 +216,7 @@ std::string inContext(const Scene& scene, const std::string& key, const std::str
 // Runs `step`, prefixing any InputError with the scene file and the key it concerns; a missing
 // file stays a MissingFileError.
 template <class Step>
-auto withContext(const Scene& scene, const std::string& key, Step&& step) {
+auto withContext(const ModelSpec& scene, const std::string& key, Step&& step) {
   try {
     return step();
   } catch (const MissingFileError& e) {
@@ -229,7 +229,7 @@ auto withContext(const Scene& scene, const std::string& key, Step&& step) {
 // A plane's point and normal, a ball's centre, have the scene's dimension (a polyline's points and a
 // surface's file are checked by the reader; two bodies have no obstacle). Scenes built in code skip
 // the reader.
-void requireObstacleDimension(const Scene& scene) {
+void requireObstacleDimension(const ModelSpec& scene) {
   const ObstacleSpec& o = scene.obstacle;
   const int d = scene.dimension;
   if (!scene.contact.master.empty() || o.type == ObstacleType::Polyline || o.type == ObstacleType::Surface) return;
@@ -241,7 +241,7 @@ void requireObstacleDimension(const Scene& scene) {
 
 // d(t_k) of the obstacle's [[obstacle.motion]] entries, d × m; empty when it has none or they are
 // zero at every instant (a fixed obstacle: the problem stays as it was).
-Eigen::MatrixXd obstacleMotion(const Scene& scene, const std::vector<double>& times) {
+Eigen::MatrixXd obstacleMotion(const ModelSpec& scene, const std::vector<double>& times) {
   Eigen::MatrixXd d = Eigen::MatrixXd::Zero(scene.dimension, static_cast<Eigen::Index>(times.size()));
   if (!scene.contact.master.empty()) return {};
   for (const ObstacleMotionSpec& motion : scene.obstacle.motion) {
@@ -253,7 +253,7 @@ Eigen::MatrixXd obstacleMotion(const Scene& scene, const std::vector<double>& ti
 }
 
 // The rigid obstacle's interface, or the two bodies' node-to-node pairs (contact.master).
-ContactInterface contactInterfaceOf(const Scene& scene, const Problem& p, const std::vector<char>& zero) {
+ContactInterface contactInterfaceOf(const ModelSpec& scene, const Problem& p, const std::vector<char>& zero) {
   const DofStatus dofs{p.free_index, zero};
   const ContactSpec& c = scene.contact;
   if (!c.master.empty())
@@ -284,7 +284,7 @@ BodyMesh buildBodyMesh(const MeshSpec& spec, int dimension) {
   throw InputError("mesh generator '" + spec.generator + "' is unknown (known in 2D: half_disc)");
 }
 
-Problem buildProblem(const Scene& scene) {
+Problem buildProblem(const ModelSpec& scene) {
   Problem p;
   p.name = scene.name;
   p.dimension = scene.dimension;
@@ -339,7 +339,7 @@ Problem buildProblem(const Scene& scene) {
   // scaled so that equal materials give E (docs/two_bodies.md).
   const double young = p.master_material ? 2.0 / (1.0 / p.material.young + 1.0 / p.master_material->young)
                                          : p.material.young;
-  setSearchDirection(p.contact, scene.solver.search_scale, young, p.length_scale, scene.solver.search_law);
+  setSearchDirection(p.contact, scene.search_direction.scale, young, p.length_scale, scene.search_direction.law);
   return p;
 }
 

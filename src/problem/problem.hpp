@@ -9,7 +9,7 @@
 
 #include "stcontact/contact/contact_interface.hpp"
 #include "stcontact/mesh/body_mesh.hpp"
-#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/model_spec.hpp"
 
 namespace stc {
 
@@ -73,7 +73,7 @@ struct Problem {
 /// Builds the mesh (triangles or tetrahedra, by scene.dimension), assembles K, eliminates Dirichlet dofs, samples the histories and sets up the
 /// contact interface with k = κ E ℓ_i / L. Throws InputError on inconsistent input (a boundary that
 /// the mesh lacks, a dof prescribed twice, initial penetration, a contact node half prescribed).
-Problem buildProblem(const Scene& scene);
+Problem buildProblem(const ModelSpec& scene);
 
 /// The scene's mesh in `dimension`: a built-in generator (half_disc in 2D; half_ball, half_disc_slab in
 /// 3D) or a Gmsh file.

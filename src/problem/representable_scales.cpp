@@ -53,7 +53,7 @@ void requireStiffnessScale(const Eigen::SparseMatrix<double>& K) {
 }
 
 // Dirichlet entries: their displacements and the forces −K_fD e_D u_d(t) they apply; loads: their forces.
-void requireLoadScales(const Scene& scene, const Problem& p) {
+void requireLoadScales(const ModelSpec& scene, const Problem& p) {
   for (std::size_t j = 0; j < p.loads.size(); ++j) {
     const SeparatedLoad& load = p.loads[j];
     const bool dirichlet = j < scene.dirichlet.size();
@@ -76,7 +76,7 @@ void requireGapScale(const Problem& p, const std::string& key) {
 
 }  // namespace
 
-void requireRepresentableScales(const Scene& scene, const Problem& problem) {
+void requireRepresentableScales(const ModelSpec& scene, const Problem& problem) {
   requireIncreasingInstants(problem.times);
   requireStiffnessScale(problem.stiffness);
   requireLoadScales(scene, problem);

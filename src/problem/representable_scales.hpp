@@ -9,7 +9,7 @@
 // scene is refused before anything is written, the message naming the key and asking for other
 // units (e.g. MPa and mm instead of Pa and m).
 #include "stcontact/problem/problem.hpp"
-#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/model_spec.hpp"
 
 namespace stc {
 
@@ -23,6 +23,6 @@ inline constexpr double kSmallestScale = 1e-150;
 /// prescribed displacement, the force it or a load applies, or the force of the initial gaps
 /// (max |K| · max |g0|) exceeds kLargestScale (they may be zero). `problem` is built from `scene`,
 /// its loads in the scene's order: the [[dirichlet]] entries, then the [[load]] entries.
-void requireRepresentableScales(const Scene& scene, const Problem& problem);
+void requireRepresentableScales(const ModelSpec& scene, const Problem& problem);
 
 }  // namespace stc

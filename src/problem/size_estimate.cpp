@@ -20,7 +20,7 @@ double contactNodes(const MeshSpec& spec, double nodes) {
   return 0.0;
 }
 
-std::string sizeKeys(const Scene& scene) {
+std::string sizeKeys(const ModelSpec& scene) {
   std::ostringstream keys;
   const MeshSpec& m = scene.mesh;
   if (m.generator == "half_disc") keys << "mesh.arc_nodes = " << m.arc_nodes << ", mesh.grading = " << m.grading;
@@ -33,7 +33,7 @@ std::string sizeKeys(const Scene& scene) {
 
 }  // namespace
 
-SizeEstimate estimateSize(const Scene& scene) {
+SizeEstimate estimateSize(const ModelSpec& scene) {
   SizeEstimate e;
   const MeshSpec& m = scene.mesh;
   const HalfDiscOptions section{m.radius, m.arc_nodes, m.grading};
@@ -49,7 +49,7 @@ SizeEstimate estimateSize(const Scene& scene) {
   return e;
 }
 
-void requireFitsInMemory(const Scene& scene) {
+void requireFitsInMemory(const ModelSpec& scene) {
   requireUsableAddressSpace();
   const SizeEstimate e = estimateSize(scene);
   const double available = availableMemoryBytes();

@@ -3,7 +3,7 @@
 // (order of magnitude), so that a scene that cannot fit is refused with its keys named instead of
 // allocating until the machine gives out (mesh.arc_nodes = 10^7 took 12 GB, time.steps = 10^8
 // ended in bad_alloc, mesh.arc_nodes = 2³¹ − 1 overflowed the generator's node numbering).
-#include "stcontact/scene/scene.hpp"
+#include "stcontact/scene/model_spec.hpp"
 
 namespace stc {
 
@@ -19,10 +19,10 @@ struct SizeEstimate {
 /// matrices (K, K_ff, K + BᵀkB and the factor's fill, about 14 entries per row in 2D and 45 in 3D,
 /// the factor 5 and 20 times those) and 10 interface histories of d n_C × m doubles (iterates, local
 /// stages, differences, directions).
-SizeEstimate estimateSize(const Scene& scene);
+SizeEstimate estimateSize(const ModelSpec& scene);
 
 /// Throws InputError naming the size keys when estimateSize(scene).bytes exceeds the memory the
 /// process may still allocate (src/core/memory.hpp), or the address-space limit is below any run's.
-void requireFitsInMemory(const Scene& scene);
+void requireFitsInMemory(const ModelSpec& scene);
 
 }  // namespace stc

@@ -1,170 +1,34 @@
 #pragma once
-// A validated scene: the input as read from TOML (docs/interface.md "Scene file"), nothing computed.
-// Units are the user's (the seed scene: mm, MPa, N/mm); times are dimensionless instants.
-#include <Eigen/Core>
-#include <array>
-#include <filesystem>
-#include <optional>
+// A validated scene: the input as read from TOML (docs/interface.md "Scene file"), nothing computed:
+// the model (model_spec.hpp), the strategy and every strategy's options ([solver]), the outputs.
 #include <string>
-#include <string_view>
-#include <utility>
-#include <vector>
 
 #include "stcontact/options/solver_spec.hpp"
+#include "stcontact/scene/model_spec.hpp"
+#include "stcontact/scene/output_spec.hpp"
 
 namespace stc {
 
-enum class PlaneModel { Strain, Stress };
-enum class Component { X, Y, Z };  ///< Z only in a 3D scene
-
-/// The dof of `c` within a node's d dofs: x 0, y 1, z 2.
-inline int componentIndex(Component c) { return c == Component::X ? 0 : c == Component::Y ? 1 : 2; }
-
-/// [mesh]: either a built-in generator or a Gmsh 4.1 file.
-struct MeshSpec {
-  std::string generator;              ///< "half_disc" (2D), "half_ball" or "half_disc_slab" (3D), or empty
-                                      ///< when `file` is given
-  std::filesystem::path file;         ///< resolved against the scene file's folder
-  double radius = 1.0;                ///< half_disc, half_ball: radius R (> 0)
-  int arc_nodes = 101;                ///< half_disc, half_disc_slab: potential contact nodes on the arc (>= 3)
-  double grading = 1.135;             ///< half_disc: growth of the element size per ring inward (1 = uniform);
-                                      ///< half_ball: grading toward the pole, in [1, 2] (default 1.5)
-  int divisions = 8;                  ///< half_ball: cells along the radius (>= 2; src/mesh/half_ball.hpp)
-  double thickness = 0.05;            ///< half_disc_slab: extent along z (> 0)
-  int layers = 2;                     ///< half_disc_slab: element layers along z (>= 1)
-  double core = 0.0;                  ///< half_ball: 0, or the half-width in (0, 1) of the uniformly meshed
-                                      ///< core around the pole, in units of R (divisions then counts its cells)
-  /// Two bodies: the mesh and its mirror image this far below it (>= 0; src/mesh/mirror_image.hpp),
-  /// the image's groups named "mirror_" + the mesh's. None: one body.
-  std::optional<double> mirror_gap;
-};
-
-/// [material]: isotropic linear elasticity.
-struct MaterialSpec {
-  double young = 0.0;    ///< E > 0
-  double poisson = 0.0;  ///< -1 < nu < 0.5
-};
-
-/// Plane (2D and 3D); sphere (3D) and cylinder (2D: its cross-section, a circle): a ball; polyline
-/// (2D): a rigid profile given by its points; surface (3D): a triangulated surface from a Gmsh file.
-enum class ObstacleType { Plane, Sphere, Cylinder, Polyline, Surface };
-
-/// One piecewise-linear history of a scalar: `times` strictly increasing, same length as `values`.
-struct History {
-  std::vector<double> times;
-  std::vector<double> values;
-};
-
-/// [[obstacle.motion]]: the obstacle's rigid translation along `component` (docs/scene_format.md).
-struct ObstacleMotionSpec {
-  Component component = Component::X;
-  History history;
-};
-
-/// [obstacle]: rigid obstacle. Plane: through `point` with unit `normal` pointing into the body,
-/// both with the scene's dimension of entries. Sphere, cylinder: `centre` and `radius`, the solid
-/// ball the body lies outside of, or with `inside` the ball's complement, a seat the body lies in.
-struct ObstacleSpec {
-  ObstacleType type = ObstacleType::Plane;
-  Eigen::VectorXd point = Eigen::VectorXd::Zero(2);
-  Eigen::VectorXd normal = Eigen::VectorXd::Unit(2, 1);  ///< normalised on reading (must be nonzero)
-  Eigen::VectorXd centre = Eigen::VectorXd::Zero(2);     ///< sphere, cylinder
-  double radius = 0.0;                                    ///< sphere, cylinder: > 0
-  bool inside = false;  ///< sphere, cylinder: the body inside the ball; surface: on the side its
-                        ///< triangles' normals point away from (side = "inside")
-  std::filesystem::path file;  ///< surface: the Gmsh surface mesh, resolved against the scene's folder
-  Eigen::Matrix2Xd points;  ///< polyline: its points (≥ 2, consecutive ones distinct), the body on the left
-  /// Its rigid translation d(t), one history per component (none: fixed). The problem is solved in
-  /// the obstacle's frame (src/problem/problem.hpp, Problem::frame_motion).
-  std::vector<ObstacleMotionSpec> motion;
-};
-
-/// [contact]: which boundary may touch the obstacle, with which Coulomb coefficient; or, with
-/// `master`, which two boundaries of two bodies of the mesh may touch each other (node to node,
-/// src/contact/node_pairing.hpp; the scene then has no [obstacle]).
-struct ContactSpec {
-  std::string boundary;                 ///< the body's contact boundary; with `master`, the slave's
-  std::string master;                   ///< empty: a rigid obstacle; else the other body's boundary
-  Eigen::VectorXd normal;               ///< with `master`: the common normal from the master into the
-                                        ///< slave along which nodes pair (unit), or empty: the nearest
-  /// With `master`: each slave node pairs with a master node (matching meshes) or, with `segment`, with
-  /// the point of a master facet (edge, triangle) on its line along `normal` (non-matching meshes).
-  bool to_segment = false;
-  double friction = 0.0;                ///< mu >= 0
-  std::optional<double> length_scale;  ///< L of the search direction k = kappa E l_i / L (> 0);
-                                        ///< default: the radius, or half the mesh's largest extent
-};
-
-/// [time]: uniform grid of `steps` instants on [0, end].
-struct TimeSpec {
-  int steps = 0;       ///< m >= 2
-  double end = 1.0;    ///< > 0
-};
-
-/// [[dirichlet]]: prescribed displacement component on every node of a boundary.
-struct DirichletSpec {
-  std::string boundary;
-  Component component = Component::X;
-  History history;
-};
-
-/// What a [[load]] entry's history gives (src/problem/distributed_loads.hpp).
-enum class LoadKind {
-  Force,     ///< the total force on a boundary along `component`, spread by edge length / face area
-  Pressure,  ///< a pressure on a boundary, per unit length (2D) or area (3D), along the inward normal
-  Body,      ///< a force per unit area (2D) or volume (3D) on the whole body, along `component`
-};
-
-/// [[load]]: total force on a boundary (per unit thickness in 2D), spread by edge length (2D) or
-/// face area (3D); or a pressure on a boundary; or a body force (`type`).
-struct LoadSpec {
-  std::string boundary;                ///< force, pressure
-  Component component = Component::X;  ///< force, body
-  History history;
-  LoadKind kind = LoadKind::Force;
-};
-
-/// Floating-point type of the .vtu arrays (src/io/vtu_writer.hpp).
-enum class VtuPrecision { Float32, Float64 };
-inline constexpr std::array<std::pair<std::string_view, VtuPrecision>, 2> kVtuPrecisions = {{
-    {"float32", VtuPrecision::Float32},
-    {"float64", VtuPrecision::Float64},
-}};
-
-/// [output]: what to write beside the CSV/JSON files. Each key declared, defaulted and checked in
-/// fields() (src/options/option_fields.hpp), which the scene reader walks.
-struct OutputSpec {
-  bool vtu = true;      ///< write solution.pvd + vtu/
-  int vtu_stride = 1;   ///< write every k-th instant (the last one always), >= 1
-  /// Float32 (ParaView renders in single precision; half the size of Float64 once compressed) or
-  /// Float64. The exact numbers are in the CSV and JSON outputs.
-  VtuPrecision vtu_precision = VtuPrecision::Float32;
-
-  template <class Self, class Visit>
-  static void fields(Self& o, Visit&& visit) {
-    visit("vtu", o.vtu, anyFlag());
-    visit("vtu_stride", o.vtu_stride, atLeast(1));
-    visit("vtu_precision", o.vtu_precision, Keywords<VtuPrecision>(kVtuPrecisions));
-  }
-};
-
-struct Scene {
-  std::string name;
-  std::filesystem::path source;  ///< the scene file, for messages and relative paths
-  int dimension = 2;             ///< 2 (plane, P1 triangles) or 3 (P1 tetrahedra)
-  PlaneModel plane = PlaneModel::Strain;  ///< 2D only
-  MeshSpec mesh;
-  MaterialSpec material;         ///< the body's; with two bodies, the slave body's (and the master's by default)
-  /// [master_material]: the master body's, with contact.master only (none: [material]).
-  std::optional<MaterialSpec> master_material;
-  ObstacleSpec obstacle;         ///< unused when contact.master names a second body
-  ContactSpec contact;
-  TimeSpec time;
-  std::vector<DirichletSpec> dirichlet;
-  std::vector<LoadSpec> loads;
+struct Scene : ModelSpec {
   SolverSpec solver;             ///< [solver]: the strategy and every strategy's options (src/options/)
   OutputSpec output;
   std::string parameters_json;  ///< the scene as read (overrides applied), as a JSON object
 };
+
+/// Every key of the scene's [solver] table, in the order the reader walks them: the search
+/// direction's (the model's, src/options/search_direction_options.hpp), then every strategy's
+/// (SolverSpec). `Self` is Scene or const Scene.
+template <class Self, class Visit>
+void solverTableFields(Self& scene, Visit&& visit) {
+  SearchDirectionOptions::fields(scene.search_direction, visit);
+  SolverSpec::fields(scene.solver, visit);
+}
+
+/// The [solver] table's fields against their ranges (what the reader checks, for a Scene built in
+/// code): InputError naming the first one out of its range.
+inline void validateSolverTable(const Scene& scene) {
+  scene.search_direction.validate();
+  scene.solver.validate();
+}
 
 }  // namespace stc

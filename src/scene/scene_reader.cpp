@@ -530,20 +530,20 @@ class SceneFieldReader {
   const TableView& table_;
 };
 
-SolverSpec readSolver(const TableView& root) {
-  SolverSpec spec;
+/// [solver] into scene.solver and scene.search_direction (solverTableFields: the search direction
+/// belongs to the model, the rest to the strategies).
+void readSolver(const TableView& root, Scene& scene) {
   SceneKeys keys;
-  keys("name", spec.strategy, Keywords<Strategy>(kStrategies));
-  SolverSpec::fields(spec, keys);
+  keys("name", scene.solver.strategy, Keywords<Strategy>(kStrategies));
+  solverTableFields(scene, keys);
   std::vector<std::string_view> allowed = keys.keys();
   allowed.insert(allowed.end(), kRemovedSolverKeys.begin(), kRemovedSolverKeys.end());
   const auto solver = root.optionalTable("solver", allowed);
-  if (!solver) return spec;
+  if (!solver) return;
   refuseRemoved(*solver);
   const SceneFieldReader read(*solver);
-  read("name", spec.strategy, Keywords<Strategy>(kStrategies));
-  SolverSpec::fields(spec, read);
-  return spec;
+  read("name", scene.solver.strategy, Keywords<Strategy>(kStrategies));
+  solverTableFields(scene, read);
 }
 
 OutputSpec readOutput(const TableView& root) {
@@ -588,7 +588,7 @@ Scene readTable(const toml::table& table, const std::filesystem::path& source,
                             "second body's boundary to touch");
   scene.dirichlet = readHistories<DirichletSpec>(root, "dirichlet", scene.dimension, scene.time);
   scene.loads = readHistories<LoadSpec>(root, "load", scene.dimension, scene.time);
-  scene.solver = readSolver(root);
+  readSolver(root, scene);
   scene.output = readOutput(root);
   scene.parameters_json = toJson(table);
   return scene;

@@ -21,7 +21,7 @@ std::string iterationLimitReason(int max_iterations, double indicator) {
 }
 
 IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const EquilibriumEnergy* energy,
-                                   const ErrorMeasure* reference, IterationCallback callback)
+                                   const ErrorMeasure* reference, IterationCallback callback, RecordOrigin origin)
     : rule_(rule),
       energy_(energy),
       estimator_(rule.estimate_period, rule.estimate_order, rule.estimate_safety, rule.estimate_window,
@@ -29,7 +29,8 @@ IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const 
       calibrated_(rule.calibration_safety),
       reference_(reference),
       callback_(std::move(callback)),
-      start_(std::chrono::steady_clock::now()) {
+      origin_(origin),
+      start_(origin.clock.value_or(std::chrono::steady_clock::now())) {
   summary_.solver = std::move(solver);
 }
 
@@ -37,7 +38,7 @@ IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const 
 // observation of the run, not part of the solver's work: an error run and a run without the
 // reference then tell the same time).
 double IterationMonitor::elapsed() const {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() - measure_s_;
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() - measure_s_ + origin_.wall_s;
 }
 
 std::optional<double> IterationMonitor::measureError(const Eigen::MatrixXd& lambda) {
@@ -63,7 +64,7 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
   r.rank = rank;
   r.sparse_solves = static_cast<int>(sparse_solves);
   r.wall_s = elapsed();
-  summary_.history.push_back(r);
+  summary_.history.push_back(origin_.applied(r));
   if (!std::isfinite(indicator) || !lambda.allFinite())
     return stop(Termination::NumericalIssue, "NaN or Inf in the iterate at iteration " + std::to_string(r.iteration));
   if (energy)
@@ -80,7 +81,7 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
         << best_indicator_ << ")";
     return stop(Termination::Stagnated, msg.str());
   }
-  if (callback_ && !callback_(r)) return stop(Termination::StoppedByCallback, "stopped by the callback");
+  if (callback_ && !callback_(origin_.applied(r))) return stop(Termination::StoppedByCallback, "stopped by the callback");
   if (r.iteration >= rule_.stop.max_iterations)
     return stop(Termination::MaxIterations, iterationLimitReason(rule_.stop.max_iterations, indicator));
   return false;
@@ -117,7 +118,7 @@ SolveSummary IterationMonitor::finish() {
   summary_.iterations = static_cast<int>(summary_.history.size());
   if (!summary_.history.empty()) {
     const auto& last = summary_.history.back();
-    summary_.relaxations = last.relaxations;
+    summary_.relaxations = last.relaxations - origin_.relaxations;
     summary_.indicator = last.indicator;
     summary_.error_estimate = last.error_estimate;
     summary_.error = last.error;

@@ -14,6 +14,7 @@
 #include "stcontact/solver/equilibrium_energy.hpp"
 #include "stcontact/solver/error_estimate.hpp"
 #include "stcontact/solver/error_measure.hpp"
+#include "stcontact/solver/record_origin.hpp"
 #include "stcontact/solver/solve_summary.hpp"
 
 namespace stc {
@@ -50,9 +51,11 @@ std::string iterationLimitReason(int max_iterations, double indicator);
 class IterationMonitor {
  public:
   /// `energy` normalises the error estimate; without it (unit tests of the bookkeeping) the
-  /// indicator stands in for the estimate.
+  /// indicator stands in for the estimate. The records stored and handed to `callback` count from
+  /// `origin` (record_origin.hpp); the stopping decisions, and the summary's iterations and
+  /// relaxations, are this solve's own.
   IterationMonitor(std::string solver, StoppingRule rule, const EquilibriumEnergy* energy,
-                   const ErrorMeasure* reference = nullptr, IterationCallback callback = {});
+                   const ErrorMeasure* reference = nullptr, IterationCallback callback = {}, RecordOrigin origin = {});
 
   /// Records one iteration whose equilibrated iterate is `s`; returns true when the solve must stop
   /// (the summary says why).
@@ -64,7 +67,8 @@ class IterationMonitor {
 
   /// Final summary (termination, message, totals); call once at the end.
   SolveSummary finish();
-  /// Seconds since construction, the true-error measure's time excluded.
+  /// Seconds on the origin's clock (since construction without one), the true-error measures' time
+  /// excluded.
   double elapsed() const;
 
  private:
@@ -81,6 +85,7 @@ class IterationMonitor {
   CalibratedIndicatorEstimator calibrated_;
   const ErrorMeasure* reference_;
   IterationCallback callback_;
+  RecordOrigin origin_;
   std::chrono::steady_clock::time_point start_;
   double measure_s_ = 0.0;  // seconds spent in the true-error measure
   double best_indicator_ = 0.0;

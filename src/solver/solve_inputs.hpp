@@ -1,11 +1,13 @@
 #pragma once
 // What a solve may be given beside its problem and options, the same for every strategy
 // (strategies/registry.hpp): a true-error measure, a per-iteration callback, a warm start, and for
-// `fas-aposteriori` the converged solution its basis comes from.
+// `fas-aposteriori` the converged solution its basis comes from, and the run's prepared operators.
 #include <Eigen/Core>
 
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/solver/error_measure.hpp"
+#include "stcontact/solver/record_origin.hpp"
 #include "stcontact/solver/solve_result.hpp"
 #include "stcontact/solver/solve_summary.hpp"
 #include "stcontact/spacetime/interface_history.hpp"
@@ -35,23 +37,15 @@ struct SolveInputs {
   /// nodes, 0.15 s of a 1.07 s solve), and, where the traces came from the factor's trailing block,
   /// the p responses' solves (pgd/response_basis.hpp): programs that do not read them turn this off.
   bool spatial_modes = true;
+  /// The run's operators (src/operators/prepared_operators.hpp): a solve takes its factors from
+  /// there, preparing each at most once, and leaves them for the run's other users (the reference,
+  /// the writer). Null: the solve prepares its own, each once within it.
+  PreparedOperators* operators = nullptr;
+  /// Where the records count from when this solve is a part of a larger one (record_origin.hpp):
+  /// the parts before it and the whole solve's clock. A strategy called on its own starts its clock
+  /// on entry (RecordOrigin::clocked), its set-up included.
+  RecordOrigin origin = {};
 };
-
-/// `solve(inputs)` for a solve that spent `solves` sparse solves before its iteration (a separated
-/// stage's load responses, a warm start's directions): its callback and its summary
-/// (SolveSummary::addSolvesBeforeIteration) count them in every record.
-template <class Solve>
-SolveResult countingSolvesBefore(long solves, const SolveInputs& inputs, Solve&& solve) {
-  SolveInputs counted = inputs;
-  if (inputs.callback)
-    counted.callback = [callback = inputs.callback, solves](IterationRecord r) {
-      r.sparse_solves += static_cast<int>(solves);
-      return callback(r);
-    };
-  SolveResult result = solve(counted);
-  result.summary.addSolvesBeforeIteration(solves);
-  return result;
-}
 
 /// Where an iterative solve starts: inputs.start, else s = 0 on `problem`'s interface.
 inline InterfaceHistory startingHistory(const Problem& problem, const SolveInputs& inputs) {

@@ -64,11 +64,6 @@ struct SolveSummary {
   /// last record's count, 0 without records. The a posteriori basis's incremental solve and SVD,
   /// made before fas-aposteriori's iteration, are not in it.
   int sparseSolves() const { return history.empty() ? 0 : history.back().sparse_solves; }
-  /// Counts `solves` made before the first iteration (a separated stage's load responses, a warm
-  /// start's seeded directions: pgd/response_basis.hpp) in every record, as they were spent first.
-  void addSolvesBeforeIteration(long solves) {
-    for (IterationRecord& r : history) r.sparse_solves += static_cast<int>(solves);
-  }
   /// Counts `solves` made after the last iteration (a lift to nodes left out, spatial modes'
   /// responses) in the last record, so that sparseSolves() has them.
   void addSolvesAfterIteration(long solves) {

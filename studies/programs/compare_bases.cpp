@@ -41,8 +41,9 @@
 #include "stcontact/incremental/error_reference.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/operators/displacement.hpp"
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/pgd/basis_verification.hpp"
-#include "stcontact/pgd/displacement_history.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/gnuplot_runner.hpp"
@@ -68,7 +69,7 @@ struct Setup {
   stc::Problem problem;
   stc::SolveResult incremental;
   double incremental_s = 0.0;
-  std::unique_ptr<stc::SpdFactor> K;
+  std::shared_ptr<const stc::SpdFactor> K;  ///< K_ff, prepared once for the measure and the SVD
   std::unique_ptr<stc::ErrorReference> reference;
 };
 
@@ -124,7 +125,7 @@ Verification verify(const Setup& st) {
   // The energy modes of the a priori expansion at the end of the solve (pgd/separated_history.hpp):
   // what the coarse space takes its leading modes from.
   const Eigen::MatrixXd apriori = stc::solve(stc::strategyNamed("fas-apriori"), st.problem, st.scene.solver).spatial_modes;
-  const Eigen::MatrixXd U = stc::displacementsFromForces(st.problem, *st.K, st.incremental.interface.lambda);
+  const Eigen::MatrixXd U = stc::freeDisplacements(st.problem, *st.K, st.incremental.interface.lambda);
   const Eigen::MatrixXd svd = stc::fas::aposterioriModes(st.problem, *st.K, st.incremental.interface.lambda, 20);
   const auto& M = st.problem.stiffness_free;
   Verification v;
@@ -165,7 +166,7 @@ void writeSummary(const fs::path& file, const Setup& st, const std::vector<Run>&
   const auto& p = st.problem;
   md << "# A posteriori vs a priori bases: " << p.name << "\n\n"
      << p.numDofs() << " dofs, " << p.contact.size() << " contact nodes, " << p.numSteps()
-     << " instants, κ = " << st.scene.solver.search_scale << ", tolerance " << st.scene.solver.tolerance()
+     << " instants, κ = " << st.scene.search_direction.scale << ", tolerance " << st.scene.solver.tolerance()
      << ", ν1 = ν2 = " << st.scene.solver.fas_aposteriori.fas.pre_relaxations
      << ", i_C = "
      << st.scene.solver.fas_aposteriori.fas.coarseIterationsIn(p.dimension)
@@ -253,7 +254,7 @@ Setup setUp(const Options& o) {
   std::vector<double> times;
   for (int i = 0; i < o.repeats; ++i) times.push_back(stc::study::secondsOf([&] { st.incremental = stc::solveIncremental(st.problem); }));
   st.incremental_s = stc::median(times);
-  st.K = std::make_unique<stc::SpdFactor>(st.problem.stiffness_free, "K_ff");
+  st.K = stc::PreparedOperators().stiffnessFree(st.problem);
   const auto condensed = stc::CondensedInterface::build(st.problem, *st.K);
   st.reference = std::make_unique<stc::ErrorReference>(st.problem, *st.K, condensed.delassus,
                                                        st.incremental.interface.lambda);

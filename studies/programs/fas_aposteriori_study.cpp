@@ -36,7 +36,7 @@
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/fas/aposteriori/aposteriori_basis.hpp"
-#include "stcontact/fas/basis_provider.hpp"
+#include "stcontact/fas/aposteriori/fixed_basis_provider.hpp"
 #include "stcontact/fas/coarse_step.hpp"
 #include "stcontact/fas/fas_solver.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
@@ -46,6 +46,7 @@
 #include "stcontact/latin/indicator.hpp"
 #include "stcontact/latin/latin_solver.hpp"
 #include "stcontact/latin/local_stage.hpp"
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/studies/gnuplot_runner.hpp"
@@ -294,7 +295,7 @@ void writeSummary(const fs::path& file, const Options& opt, const Study& st, con
   md << "# FAS a posteriori study (seed Figs. 4–5)\n\nScene `" << opt.scene.filename().string() << "`";
   for (const auto& s : opt.overrides) md << " `--set " << s << "`";
   md << ": " << st.problem.numDofs() << " dofs, " << st.problem.contact.size() << " contact nodes, "
-     << st.problem.numSteps() << " instants, kappa = " << st.scene.solver.search_scale << ". Relaxation cap "
+     << st.problem.numSteps() << " instants, kappa = " << st.scene.search_direction.scale << ". Relaxation cap "
      << opt.max_relaxations << ", runs stop at true error <= 1e-8 or indicator <= 1e-9, "
      << "stagnation window 150; i_C = 15; FAS cycle "
      << (!opt.safeguard   ? "plain (the seed's, no safeguard)"
@@ -421,12 +422,13 @@ Study prepare(const Options& opt) {
   st.problem = stc::buildProblem(st.scene);
   std::cout << "1. Scene " << opt.scene.string() << ": " << st.problem.numDofs() << " dofs, "
             << st.problem.contact.size() << " contact nodes, " << st.problem.numSteps()
-            << " instants, kappa = " << st.scene.solver.search_scale << "\n";
+            << " instants, kappa = " << st.scene.search_direction.scale << "\n";
   auto t0 = Clock::now();
   const stc::SolveResult ref = stc::solveIncremental(st.problem);
   st.incremental_s = secondsSince(t0);
   if (!ref.summary.converged()) throw std::runtime_error("incremental reference: " + ref.summary.message);
-  const stc::SpdFactor K(st.problem.stiffness_free, "K_ff");
+  const std::shared_ptr<const stc::SpdFactor> factor = stc::PreparedOperators().stiffnessFree(st.problem);
+  const stc::SpdFactor& K = *factor;
   const stc::CondensedInterface condensed = stc::CondensedInterface::build(st.problem, K);
   st.reference = std::make_unique<stc::ErrorReference>(st.problem, K, condensed.delassus, ref.interface.lambda);
   t0 = Clock::now();

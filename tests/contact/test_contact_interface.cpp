@@ -62,8 +62,8 @@ TEST(ContactInterface, BRestrictsAndRotatesTheNodalDisplacement) {
 
 TEST(ContactInterface, SearchDirectionScalesWithTributaryLength) {
   stc::Scene scene = stc::test::seedScene(31, 3);
-  scene.solver.search_scale = 2.5;
-  scene.solver.search_law = stc::SearchLaw::Tributary;
+  scene.search_direction.scale = 2.5;
+  scene.search_direction.law = stc::SearchLaw::Tributary;
   const stc::Problem p = stc::buildProblem(scene);
   for (int i = 0; i < p.contact.size(); ++i) {
     const double expected = 2.5 * 3000.0 * p.contact.tributary[i] / 1.0;  // κ E ℓ_i / L, L = radius
@@ -119,13 +119,13 @@ TEST(ContactInterface, RestrictedToNodesKeepsTheirDataAndRowsInTheGivenOrder) {
   EXPECT_THROW(stc::restrictToNodes(full, {full.size()}), std::out_of_range);
 }
 
-// The local law (src/options/search_law.hpp) is the tributary one where every facet has one size:
+// The local law (src/options/search_direction_options.hpp) is the tributary one where every facet has one size:
 // on the seed's uniform arc each interior node's k is the same to round-off, the two end nodes (half a
 // patch) keep half of it, as with the tributary law.
 TEST(ContactInterface, LocalSearchLawIsTheTributaryOneOnAUniformArc) {
   stc::Scene scene = stc::test::seedScene(31, 3);
   const stc::Problem tributary = stc::buildProblem(scene);
-  scene.solver.search_law = stc::SearchLaw::Local;
+  scene.search_direction.law = stc::SearchLaw::Local;
   const stc::Problem local = stc::buildProblem(scene);
   const Eigen::VectorXd& k = local.contact.search_direction;
   EXPECT_NEAR((k - tributary.contact.search_direction).norm(), 0.0, 1e-12 * k.norm());

@@ -7,6 +7,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/mesh/facet_measure.hpp"
 #include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene.hpp"
 
 namespace {
 

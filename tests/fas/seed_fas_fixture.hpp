@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 
 #include "fixtures/seed_scene.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/linalg/dense_decompositions.hpp"
@@ -17,11 +18,11 @@ struct SeedFas {
   Eigen::MatrixXd u_ref;  ///< converged free displacements, n_free × m
   SeedFas() : problem(make()), reference(solveIncremental(problem)) {
     const SpdFactor K(problem.stiffness_free, "K");
-    u_ref = displacementsFromForces(problem, K, reference.interface.lambda);
+    u_ref = freeDisplacements(problem, K, reference.interface.lambda);
   }
   static Problem make() {
     Scene scene = seedScene(31, 41);
-    scene.solver.search_scale = 3.0;
+    scene.search_direction.scale = 3.0;
     return buildProblem(scene);
   }
   /// The leading `count` left singular vectors of u_ref.

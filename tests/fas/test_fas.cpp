@@ -8,6 +8,7 @@
 #include "fas/seed_fas_fixture.hpp"
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/fas/aposteriori/fixed_basis_provider.hpp"
 #include "stcontact/fas/apriori/apriori_basis.hpp"
 #include "stcontact/fas/fas_solver.hpp"
 #include "stcontact/fas/residual_vectors.hpp"

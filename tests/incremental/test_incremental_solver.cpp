@@ -12,6 +12,7 @@
 #include <regex>
 
 #include "fixtures/seed_scene.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/contact/contact_state.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
@@ -116,7 +117,7 @@ TEST(IncrementalSolver, RebuiltDisplacementsSatisfyEquilibriumAndInterfaceKinema
   const Solved& s = solvedSeed(31, 41);
   const auto& h = s.result.interface;
   const stc::SpdFactor factor(s.problem.stiffness_free, "K_ff");
-  const Eigen::MatrixXd u = stc::displacementsFromForces(s.problem, factor, h.lambda);
+  const Eigen::MatrixXd u = stc::freeDisplacements(s.problem, factor, h.lambda);
   const Eigen::MatrixXd contact_force = s.problem.contact.B.transpose() * h.lambda;  // Bᵀλ, free dofs
   const double force_scale = contact_force.cwiseAbs().maxCoeff();
   ASSERT_GT(force_scale, 0.0);

@@ -30,7 +30,8 @@ TEST(RunWriter, FilesAreTheSameOnOneAndTwoThreads) {
   output.vtu_stride = 20;  // frames 0, 20, 40, 60, 80
   for (int threads : {1, 2}) {
     const stc::ThreadCountScope scope(threads);
-    stc::writeRunOutputs(scratch.path() / std::to_string(threads), problem, result, {}, output);
+    stc::PreparedOperators operators;
+    stc::writeRunOutputs(scratch.path() / std::to_string(threads), problem, result, {}, output, operators);
   }
   const fs::path one = scratch.path() / "1", two = scratch.path() / "2";
   int frames = 0;
@@ -55,7 +56,8 @@ TEST(RunWriter, FramesHoldTheStressTensorInVtkOrderAndTheStatesAsInt8) {
   stc::OutputSpec output;
   output.vtu_stride = 80;
   output.vtu_precision = stc::VtuPrecision::Float64;
-  stc::writeRunOutputs(scratch.path(), problem, result, {}, output);
+  stc::PreparedOperators operators;
+  stc::writeRunOutputs(scratch.path(), problem, result, {}, output, operators);
   const auto file = stc::iotest::readVtu(stc::iotest::readFile(scratch.path() / "vtu" / "step_00080.vtu"));
   const auto& u = file.array("PointData", "displacement").values;  // x, y, 0 per node
   Eigen::VectorXd dofs(2 * problem.numNodes());
@@ -104,7 +106,7 @@ TEST(RunWriter, HistoryAndSummaryCarryTheSparseSolvesSpent) {
     EXPECT_EQ(row.substr(row.rfind(',') + 1), std::to_string(spent)) << row;
   }
   EXPECT_EQ(rows, 11);
-  const std::string json = stc::summaryJson(problem, result.summary, {"{}", "test"});
+  const std::string json = stc::summaryJson(problem, result.summary, {"{}", "test"}, {});
   EXPECT_NE(json.find("\"relaxations\": 0,\n  \"sparse_solves\": " + std::to_string(spent) + ","), std::string::npos)
       << json;
   EXPECT_NE(json.find("\"sub_grid\": null,"), std::string::npos) << json;
@@ -123,10 +125,32 @@ TEST(RunWriter, SummaryCarriesTheSubGridSolve) {
   sub_grid.sparse_solves = 185;
   sub_grid.wall_s = 0.25;
   summary.stages = {sub_grid, zone};
-  const std::string json = stc::summaryJson(problem, summary, {"{}", "test"});
+  const std::string json = stc::summaryJson(problem, summary, {"{}", "test"}, {});
   EXPECT_NE(json.find("\"sub_grid\": {\n    \"relaxations\": 19,\n    \"sparse_solves\": 185,\n    \"wall_s\": 0.25\n  },"),
             std::string::npos)
       << json;
 }
 
 }  // namespace
+
+// The frames take K_ff from the run's operators: a factor prepared before (by the solve, the
+// reference) is used, not prepared again, and summary.json lists it once with both uses.
+TEST(RunWriter, FramesUseTheRunsFactorAndTheSummaryListsIt) {
+  const stc::Problem problem = stc::buildProblem(stc::test::seedScene(21, 11));
+  stc::PreparedOperators operators;
+  const stc::SolveResult result = stc::solveIncremental(problem, {}, {.operators = &operators});
+  const ScratchDir scratch;
+  stc::OutputSpec output;
+  output.vtu_stride = 5;
+  stc::writeRunOutputs(scratch.path(), problem, result, {}, output, operators);
+  const std::vector<stc::Preparation> prepared = operators.preparations();
+  ASSERT_EQ(prepared.size(), 1u);
+  EXPECT_EQ(prepared[0].name, "K_ff");
+  EXPECT_EQ(prepared[0].uses, 2);  // the incremental solve, then the frames
+  const std::string json = stc::iotest::readFile(scratch.path() / "summary.json");
+  EXPECT_NE(json.find("\"preparations\": [\n    {\n      \"operator\": \"K_ff\",\n      \"rows\": " +
+                      std::to_string(problem.numFreeDofs()) + ","),
+            std::string::npos)
+      << json;
+  EXPECT_NE(json.find("\"uses\": 2"), std::string::npos) << json;
+}

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "fixtures/seed_scene.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/error_reference.hpp"
@@ -16,7 +17,7 @@ namespace {
 
 stc::Problem smallSeed(double kappa = 3.0) {
   stc::Scene scene = stc::test::seedScene(31, 41);
-  scene.solver.search_scale = kappa;
+  scene.search_direction.scale = kappa;
   return stc::buildProblem(scene);
 }
 
@@ -34,7 +35,7 @@ TEST(GlobalStage, ResultIsInEquilibriumAndOnTheSearchDirection) {
   EXPECT_LE((s.lambda - hat.lambda + k.asDiagonal() * (s.v - hat.v)).cwiseAbs().maxCoeff(), 1e-12);
   // K_ff u = f + Bᵀλ with u = (K + BᵀkB)⁻¹(f + Bᵀ(λ̂ + k v̂)), and v = B u.
   const stc::SpdFactor K(problem.stiffness_free, "K");
-  const Eigen::MatrixXd u = stc::displacementsFromForces(problem, K, s.lambda);
+  const Eigen::MatrixXd u = stc::freeDisplacements(problem, K, s.lambda);
   EXPECT_LE((problem.contact.B * u - s.v).cwiseAbs().maxCoeff(), 1e-12 * s.v.cwiseAbs().maxCoeff());
   EXPECT_EQ(global.sparseSolves(), problem.numSteps());
 }

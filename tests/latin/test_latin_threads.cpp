@@ -16,7 +16,7 @@ namespace {
 const stc::Problem& problem() {
   static const stc::Problem p = [] {
     stc::Scene scene = stc::test::seedScene(31, 41);
-    scene.solver.search_scale = 3.0;
+    scene.search_direction.scale = 3.0;
     return stc::buildProblem(scene);
   }();
   return p;

@@ -100,9 +100,9 @@ struct SetKey {
 };
 
 std::vector<NumericKey> numericSceneKeys() {
-  stc::SolverSpec spec;
+  stc::Scene scene;
   NumericKeys keys;
-  stc::SolverSpec::fields(spec, keys);
+  stc::solverTableFields(scene, keys);
   return keys.keys;
 }
 
@@ -130,12 +130,12 @@ TEST(OptionFields, EveryNumericSceneKeyWithALowerBoundIsCheckedByTheReaderAndByV
     EXPECT_THAT(readerError(k.key + " = " + printed(k) + "\n"),
                 AllOf(HasSubstr("'solver." + k.key + "'"), HasSubstr("is out of range: " + k.rule)));
     // validate(): "<owner> option KEY = VALUE: RULE", the same rule.
-    stc::SolverSpec spec;
+    stc::Scene scene;
     SetKey set{k.key, k.below};
-    stc::SolverSpec::fields(spec, set);
+    stc::solverTableFields(scene, set);
     ASSERT_GE(set.set, 1);
     try {
-      spec.validate();
+      stc::validateSolverTable(scene);
       ADD_FAILURE() << "validate() accepted " << k.key << " = " << k.below;
     } catch (const stc::InputError& e) {
       EXPECT_THAT(e.what(), AllOf(HasSubstr(" option " + k.key + " = "), HasSubstr(": " + k.rule)));
@@ -144,13 +144,13 @@ TEST(OptionFields, EveryNumericSceneKeyWithALowerBoundIsCheckedByTheReaderAndByV
 }
 
 TEST(OptionFields, TheDefaultsAreValidAndEveryKeyIsReadIntoEveryStrategyThatHasIt) {
-  EXPECT_NO_THROW(stc::SolverSpec{}.validate());
+  EXPECT_NO_THROW(stc::validateSolverTable(stc::Scene{}));
   for (const NumericKey& k : numericSceneKeys()) {
     SCOPED_TRACE(k.key);
     // A value in range (the default, doubled where doubling stays in range, e.g. 2000 iterations).
-    stc::SolverSpec defaults;
+    stc::Scene defaults;
     double value = 0.0;
-    stc::SolverSpec::fields(defaults, [&](const char* name, const auto& field, const auto& range,
+    stc::solverTableFields(defaults, [&](const char* name, const auto& field, const auto& range,
                                           stc::Exposure e = stc::Exposure::SceneKey) {
       using T = std::decay_t<decltype(field)>;
       if (name != k.key || e != stc::Exposure::SceneKey) return;
@@ -166,9 +166,9 @@ TEST(OptionFields, TheDefaultsAreValidAndEveryKeyIsReadIntoEveryStrategyThatHasI
     if (k.integer) text << static_cast<long long>(value);
     else text << std::scientific << value;  // a float, exact with 17 digits
     text << "\n";
-    const stc::SolverSpec read = stc::parseScene(kSeed + "[solver]\n" + text.str(), "seed.toml").solver;
+    const stc::Scene read = stc::parseScene(kSeed + "[solver]\n" + text.str(), "seed.toml");
     int fields = 0, equal = 0;
-    stc::SolverSpec::fields(read, [&](const char* name, const auto& field, const auto&,
+    stc::solverTableFields(read, [&](const char* name, const auto& field, const auto&,
                                       stc::Exposure e = stc::Exposure::SceneKey) {
       using T = std::decay_t<decltype(field)>;
       if (name != k.key || e != stc::Exposure::SceneKey) return;
@@ -213,8 +213,8 @@ TEST(OptionFields, EverySolverKeyOfTheCodeIsDocumentedAndNoOther) {
   for (std::string line; std::getline(page, line);)
     if (std::smatch m; std::regex_search(line, m, row)) documented.insert(m[1]);
   std::set<std::string> code = {"name"};
-  stc::SolverSpec spec;
-  stc::SolverSpec::fields(spec, [&](const char* key, const auto&, const auto&, stc::Exposure e = stc::Exposure::SceneKey) {
+  stc::Scene scene;
+  stc::solverTableFields(scene, [&](const char* key, const auto&, const auto&, stc::Exposure e = stc::Exposure::SceneKey) {
     if (e == stc::Exposure::SceneKey) code.insert(key);
   });
   EXPECT_EQ(documented, code);

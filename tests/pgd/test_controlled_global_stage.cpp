@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fixtures/seed_scene.hpp"
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
 #include "stcontact/latin/global_stage.hpp"
@@ -85,7 +86,7 @@ TEST(ResponseBasis, StaysOrthonormalWhenCandidatesLieMostlyInItsSpan) {
 // have no responses, traces or energy columns.
 TEST(ResponseBasis, DirectionsSolvedInOneBlockAreThoseSolvedPassByPass) {
   const auto& f = fixture();
-  const stc::SpdFactor factor(stc::latin::searchDirectionOperator(f.problem), "K + B^T k B");
+  const stc::SpdFactor factor(stc::searchDirectionOperator(f.problem), "K + B^T k B");
   stc::pgd::ResponseBasis by_pass(f.problem, factor), in_block(f.problem, factor);
   std::srand(7);
   const Eigen::MatrixXd first = Eigen::MatrixXd::Random(f.problem.contact.rows(), 5);
@@ -114,7 +115,7 @@ TEST(ResponseBasis, DirectionsSolvedInOneBlockAreThoseSolvedPassByPass) {
 // history (at most its m instants), both as the solved basis gives them.
 TEST(ResponseBasis, TracesFromTheFactorsTrailingBlockAreThoseOfTheSolves) {
   const auto& f = fixture();
-  const Eigen::SparseMatrix<double> A = stc::latin::searchDirectionOperator(f.problem);
+  const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(f.problem);
   const stc::SpdFactor plain(A, "K + B^T k B"), last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
   stc::pgd::ResponseBasis solved(f.problem, plain), condensed(f.problem, last);
   EXPECT_FALSE(solved.condensesInterface());
@@ -145,7 +146,7 @@ TEST(ResponseBasis, TracesFromTheFactorsTrailingBlockAreThoseOfTheSolves) {
 // solve was made. A basis whose factor does not give D refuses.
 TEST(ResponseBasis, CompletedToEveryRowIsOrthonormalWithTheTracesOfD) {
   const auto& f = fixture();
-  const Eigen::SparseMatrix<double> A = stc::latin::searchDirectionOperator(f.problem);
+  const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(f.problem);
   const stc::SpdFactor plain(A, "K + B^T k B"), last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
   stc::pgd::ResponseBasis solved(f.problem, plain), condensed(f.problem, last);
   EXPECT_THROW(solved.completeToEveryRow(), std::logic_error);
@@ -174,7 +175,7 @@ TEST(ResponseBasis, CompletedToEveryRowIsOrthonormalWithTheTracesOfD) {
 // zero with no solve, and no row to lift to no solve at all. B_rows = I: the whole free field.
 TEST(ResponseBasis, DisplacementTruncatedInEnergyStaysWithinItsBudget) {
   const auto& f = fixture();
-  const Eigen::SparseMatrix<double> A = stc::latin::searchDirectionOperator(f.problem);
+  const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(f.problem);
   const stc::SpdFactor last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
   stc::pgd::ResponseBasis basis(f.problem, last);
   ASSERT_TRUE(basis.condensesInterface());

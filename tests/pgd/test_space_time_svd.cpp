@@ -11,7 +11,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
-#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 
 namespace {
@@ -154,7 +154,7 @@ TEST(EnergySvd, SeedSceneArpackAgreesWithDenseOnTheLeadingTenSingularValues) {
   const stc::SolveResult solved = stc::solveIncremental(problem);
   ASSERT_TRUE(solved.summary.converged()) << solved.summary.message;
   const stc::SpdFactor factor(problem.stiffness_free, "K_ff");
-  const Eigen::MatrixXd U = stc::pgd::fullDisplacementHistory(problem, factor, solved.interface.lambda);
+  const Eigen::MatrixXd U = stc::fullDisplacements(problem, factor, solved.interface.lambda);
   ASSERT_EQ(U.rows(), 1142);
   ASSERT_EQ(U.cols(), 201);
   const SpaceTimeSvd dense = stc::pgd::energySvd(U, problem.stiffness);

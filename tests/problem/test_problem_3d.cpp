@@ -100,9 +100,9 @@ TEST(Problem3d, LocalSearchLawOnAGradedHalfBallFollowsTheFacetSize) {
   const std::string scene_file = std::string(STC_SOURCE_DIR) + "/examples/scenes/half_ball_graded.toml";
   const std::vector<std::string> small = {"mesh.file=../meshes/half_ball_graded_small.msh"};
   stc::Scene scene = stc::readScene(scene_file, small);
-  scene.solver.search_law = stc::SearchLaw::Tributary;
+  scene.search_direction.law = stc::SearchLaw::Tributary;
   const stc::Problem tributary = stc::buildProblem(scene);
-  scene.solver.search_law = stc::SearchLaw::Local;
+  scene.search_direction.law = stc::SearchLaw::Local;
   const stc::Problem local = stc::buildProblem(scene);
   const stc::ContactInterface& c = local.contact;
   const Eigen::VectorXd k = Eigen::Map<const Eigen::MatrixXd>(c.search_direction.data(), 3, c.size()).row(0);

@@ -117,7 +117,7 @@ TEST(SceneReader, ExampleSeedSceneHasEveryValueOfInterfaceMd) {
   EXPECT_EQ(s.solver.strategy, stc::Strategy::FasApriori);
   EXPECT_EQ(s.solver.tolerance(), 1e-6);
   EXPECT_EQ(s.solver.latin.stop.max_iterations, 2000);
-  EXPECT_EQ(s.solver.search_scale, 4.0);
+  EXPECT_EQ(s.search_direction.scale, 4.0);
   EXPECT_EQ(s.solver.latin.relaxation, 1.0);
   EXPECT_TRUE(s.output.vtu);
   EXPECT_EQ(s.output.vtu_stride, 1);
@@ -161,7 +161,7 @@ TEST(SceneReader, OptionalKeysOverrideTheirDefaults) {
   EXPECT_EQ(s.time.end, 2.5);
   EXPECT_EQ(s.solver.tolerance(), 1e-8);
   EXPECT_EQ(s.solver.fas_apriori.fas.stop.max_iterations, 50);
-  EXPECT_EQ(s.solver.search_scale, 2.0);
+  EXPECT_EQ(s.search_direction.scale, 2.0);
   EXPECT_EQ(s.solver.latin.relaxation, 0.5);
   EXPECT_FALSE(s.output.vtu);
   EXPECT_EQ(s.output.vtu_stride, 5);

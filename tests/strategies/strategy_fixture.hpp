@@ -6,6 +6,7 @@
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/error_reference.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/scene/scene.hpp"
 #include "stcontact/strategies/registry.hpp"
 
 namespace stc::test {

@@ -82,7 +82,7 @@ TEST(FasApriori, ReachesTheIncrementalSolutionWithFewerRelaxationsThanLatin) {
 // 4.7e-7 in 294 (docs/hard_cases.md, the full-size case kappa_100).
 TEST(FasApriori, MeetsTheToleranceAtAnExtremeSearchScale) {
   stc::Scene scene = stc::test::seedScene(51, 101);
-  scene.solver.search_scale = 100.0;
+  scene.search_direction.scale = 100.0;
   const stc::test::StrategyFixture f(scene);
   const auto r = f.solve("fas-apriori", 1e-6);
   ASSERT_TRUE(r.summary.converged()) << r.summary.message;

@@ -72,7 +72,7 @@ TEST_P(StoppingScan, ConvergedMeansATrueErrorWithinTheTolerance) {
   const ScanCase& c = GetParam();
   const stc::test::StrategyFixture& base = reference(c.dimension);
   stc::Scene scene = base.scene;
-  scene.solver.search_scale = c.search_scale;
+  scene.search_direction.scale = c.search_scale;
   scene.contact.length_scale = c.length_scale;
   scene.solver.latin.relaxation = scene.solver.latin_pgd.latin.relaxation = c.relaxation;
   scene.solver.setTolerance(kTolerance);

@@ -9,6 +9,7 @@
 #include "fixtures/hemisphere_scene.hpp"
 #include "fixtures/slab_scene.hpp"
 #include "stcontact/options/fas_options.hpp"
+#include "stcontact/scene/scene.hpp"
 #include "stcontact/solver/contact_law_check.hpp"
 #include "strategies/strategy_fixture.hpp"
 

@@ -10,7 +10,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
-#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 #include "stcontact/studies/mode_localisation.hpp"
 
@@ -117,7 +117,7 @@ TEST(ModeLocalisation, SeedContactZoneIsTheClosedArcSegment) {
 TEST(ModeLocalisation, SeedHigherModesLocaliseAtTheContact) {
   const Solved& s = seed();
   const stc::SpdFactor factor(s.problem.stiffness_free, "K_ff");
-  const Eigen::MatrixXd U = stc::pgd::fullDisplacementHistory(s.problem, factor, s.result.interface.lambda);
+  const Eigen::MatrixXd U = stc::fullDisplacements(s.problem, factor, s.result.interface.lambda);
   const stc::pgd::SpaceTimeSvd svd = stc::pgd::energySvd(U, s.problem.stiffness, {stc::pgd::SvdMethod::Dense, 10});
   const ModeLocalisation loc = seedLocalisation();
   double previous_distance = 1.0, first_share = 0.0;

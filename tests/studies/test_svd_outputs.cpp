@@ -14,7 +14,7 @@
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
-#include "stcontact/pgd/displacement_history.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/studies/svd_figures.hpp"
 #include "stcontact/studies/svd_tables.hpp"
 #include "studies/text_lines.hpp"
@@ -35,7 +35,7 @@ const Case& smallCase() {
     Case c{stc::buildProblem(stc::test::seedScene(21, 21)), {}, nullptr};
     const stc::SolveResult solved = stc::solveIncremental(c.problem);
     const stc::SpdFactor factor(c.problem.stiffness_free, "K_ff");
-    const Eigen::MatrixXd U = stc::pgd::fullDisplacementHistory(c.problem, factor, solved.interface.lambda);
+    const Eigen::MatrixXd U = stc::fullDisplacements(c.problem, factor, solved.interface.lambda);
     c.svd = stc::pgd::energySvd(U, c.problem.stiffness);
     c.localisation = std::make_unique<stc::ModeLocalisation>(
         c.problem, stc::ContactZone::everClosed(c.problem, solved.admissible()), std::vector<double>{0.1, 0.2});

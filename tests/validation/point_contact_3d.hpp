@@ -8,6 +8,7 @@
 
 #include "stcontact/contact/contact_state.hpp"
 #include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene.hpp"
 #include "stcontact/solver/solve_result.hpp"
 
 namespace stc::validation {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/scene/scene.hpp"
 #include "validation/point_contact_3d.hpp"
 
 namespace stc::validation {

@@ -51,7 +51,7 @@ Scene hertzScene(int arc_nodes, const Support& support = {}) {
   Scene scene = test::seedScene(arc_nodes, 2);
   scene.contact.friction = 0.0;
   scene.mesh.grading = kGrading;
-  scene.solver.search_scale = kSeedSearchScale;
+  scene.search_direction.scale = kSeedSearchScale;
   const double g0 = -(scene.obstacle.point.y() + scene.mesh.radius);  // the flat's gap below the disc
   if (support.radius > 0.0) {
     scene.obstacle.type = ObstacleType::Cylinder;

@@ -25,6 +25,7 @@
 
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/mesh/half_ball.hpp"
+#include "stcontact/scene/scene.hpp"
 #include "validation/msh_writer.hpp"
 #include "validation/point_contact_3d.hpp"
 

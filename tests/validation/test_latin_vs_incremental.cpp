@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/error_reference.hpp"
 #include "validation/validation_support.hpp"
@@ -32,8 +33,8 @@ double reactionDifference(const Eigen::MatrixXd& lambda, const Eigen::MatrixXd& 
 // histories: largest nodal difference relative to the largest |u| of the reference.
 double displacementDifference(const SeedSolutions& s) {
   const Problem& p = s.problem;
-  const Eigen::MatrixXd u = displacementsFromForces(p, *s.stiffness_free, s.latin.interface.lambda);
-  const Eigen::MatrixXd u_ref = displacementsFromForces(p, *s.stiffness_free, s.incremental.interface.lambda);
+  const Eigen::MatrixXd u = freeDisplacements(p, *s.stiffness_free, s.latin.interface.lambda);
+  const Eigen::MatrixXd u_ref = freeDisplacements(p, *s.stiffness_free, s.incremental.interface.lambda);
   double scale = 0.0, difference = 0.0;
   for (int k = 0; k < p.numSteps(); ++k) {
     const Eigen::VectorXd full = p.fullDisplacement(u.col(k), k), full_ref = p.fullDisplacement(u_ref.col(k), k);

@@ -20,6 +20,7 @@
 
 #include "fixtures/two_bodies_scene.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/scene/scene.hpp"
 #include "validation/hysteresis_loop.hpp"
 #include "validation/point_contact_3d.hpp"
 

@@ -12,6 +12,7 @@
 
 #include "fixtures/slab_scene.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/scene/scene.hpp"
 #include "validation/validation_support.hpp"
 
 namespace stc::validation {

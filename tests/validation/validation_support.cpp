@@ -12,7 +12,7 @@ namespace stc::validation {
 const SeedSolutions& seedSolutions() {
   static const std::unique_ptr<SeedSolutions> solved = [] {
     Scene scene = test::seedScene(101, 201);
-    scene.solver.search_scale = kSeedSearchScale;
+    scene.search_direction.scale = kSeedSearchScale;
     auto s = std::make_unique<SeedSolutions>();
     s->problem = buildProblem(scene);
     s->incremental = solveIncremental(s->problem);

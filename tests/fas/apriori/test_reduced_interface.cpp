@@ -13,6 +13,7 @@
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/contact/contact_interface.hpp"
 #include "stcontact/fas/apriori/reduced_interface.hpp"
+#include "stcontact/fas/apriori/zone_rounds.hpp"
 #include "stcontact/problem/prescribed_reach.hpp"
 #include "strategies/strategy_fixture.hpp"
 

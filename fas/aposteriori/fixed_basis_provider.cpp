@@ -1,4 +1,4 @@
-#include "stcontact/fas/basis_provider.hpp"
+#include "stcontact/fas/aposteriori/fixed_basis_provider.hpp"
 
 #include "stcontact/fas/residual_vectors.hpp"
 

@@ -1,0 +1,47 @@
+#include "stcontact/fas/apriori/single_solve.hpp"
+
+#include <memory>
+
+#include "stcontact/fas/apriori/nested_in_time.hpp"
+#include "stcontact/pgd/controlled_global_stage.hpp"
+#include "stcontact/pgd/separated_history.hpp"
+
+namespace stc::fas {
+namespace {
+
+// The energy the far nodes' lift may drop (ResponseBasis::displacementOn): what the converged
+// estimate leaves of the tolerance, (τ − ε_est)² E, E the last iterate's energy. With ε_est bounding
+// the true error e, the lifted field is within e + (τ − ε_est) ≤ τ of the reference in the true
+// error's measure (triangle inequality). Nothing (the exact lift) when the solve did not converge.
+double liftBudget(const SolveSummary& summary, double tolerance) {
+  if (!summary.converged() || summary.history.empty()) return 0.0;
+  const IterationRecord& last = summary.history.back();
+  if (!last.energy || !(last.error_estimate < tolerance)) return 0.0;
+  const double slack = tolerance - last.error_estimate;
+  return slack * slack * *last.energy;
+}
+
+}  // namespace
+
+SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
+                           const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v,
+                           const SeparatedCoarseBasis& coarse_basis) {
+  SolveInputs counted = inputs;
+  counted.origin = inputs.origin.clocked();  // the stage's set-up on the solve's clock
+  std::unique_ptr<PreparedOperators> own;
+  pgd::ControlledGlobalStage stage(problem, options.stage, operatorsOr(inputs.operators, own));
+  if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
+  // The loads' responses and a warm start's directions, solved before the iteration.
+  counted.origin.sparse_solves += stage.sparseSolves();
+  SolveResult result = solveFasNestedInTime(problem, stage, options, counted, coarse_basis);
+  result.interface_directions = stage.basis().directions();
+  // What follows the iteration may solve: the responses of the spatial modes, the far nodes' lift
+  // (response_basis.hpp); the last record counts those solves.
+  const long before = stage.sparseSolves();
+  if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
+  far_v = stage.basis().displacementOn(B_far, stage.coordinates(), liftBudget(result.summary, options.fas.stop.tolerance));
+  result.summary.addSolvesAfterIteration(stage.sparseSolves() - before);
+  return result;
+}
+
+}  // namespace stc::fas

@@ -1,0 +1,101 @@
+#include "stcontact/operators/prepared_operators.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+namespace stc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// FNV-1a over the bytes of `count` values at `data`.
+template <class T>
+std::uint64_t hashBytes(std::uint64_t h, const T* data, Eigen::Index count) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count) * sizeof(T); ++i) {
+    h ^= bytes[i];
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+// A fingerprint of a compressed sparse matrix: its size, pattern and values. Two copies of one
+// problem's K_ff (a problem restricted to some contact nodes keeps its body) have the same.
+std::uint64_t fingerprint(const Eigen::SparseMatrix<double>& A) {
+  if (!A.isCompressed()) throw std::logic_error("PreparedOperators: K_ff must be compressed");
+  std::uint64_t h = 14695981039346656037ull;
+  const Eigen::Index sizes[] = {A.rows(), A.cols(), A.nonZeros()};
+  h = hashBytes(h, sizes, 3);
+  h = hashBytes(h, A.outerIndexPtr(), A.outerSize() + 1);
+  h = hashBytes(h, A.innerIndexPtr(), A.nonZeros());
+  return hashBytes(h, A.valuePtr(), A.nonZeros());
+}
+
+bool sameEntries(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols() || a.nonZeros() != b.nonZeros()) return false;
+  const auto n = static_cast<std::size_t>(a.nonZeros());
+  return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + n, b.innerIndexPtr()) &&
+         std::equal(a.valuePtr(), a.valuePtr() + n, b.valuePtr());
+}
+
+}  // namespace
+
+Eigen::SparseMatrix<double> searchDirectionOperator(const Problem& problem) {
+  const auto& B = problem.contact.B;
+  const Eigen::SparseMatrix<double> kB = problem.contact.search_direction.asDiagonal() * B;
+  return Eigen::SparseMatrix<double>(problem.stiffness_free + Eigen::SparseMatrix<double>(B.transpose()) * kB);
+}
+
+std::shared_ptr<const SpdFactor> PreparedOperators::stiffnessFree(const Problem& problem, const Ordering& ordering) {
+  const std::uint64_t print = fingerprint(problem.stiffness_free);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (stiffness_free_) {
+    if (print != stiffness_fingerprint_)
+      throw std::invalid_argument("PreparedOperators: another K_ff than the one prepared (one owner per body)");
+    ++records_[stiffness_record_].uses;
+    return stiffness_free_;
+  }
+  const auto start = Clock::now();
+  stiffness_free_ = std::make_shared<const SpdFactor>(problem.stiffness_free, "the free-dof stiffness K_ff",
+                                                      ordering.trailing, ordering.min_work);
+  stiffness_fingerprint_ = print;
+  Preparation record{"K_ff", problem.numFreeDofs(), 0, stiffness_free_->factorNonZeros(), secondsSince(start), 1};
+  records_.push_back(record);
+  stiffness_record_ = records_.size() - 1;
+  return stiffness_free_;
+}
+
+std::shared_ptr<const SearchOperator> PreparedOperators::searchOperator(const Problem& problem,
+                                                                        const Ordering& ordering) {
+  Eigen::SparseMatrix<double> matrix = searchDirectionOperator(problem);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  for (Search& s : search_)
+    if (s.ordering == ordering && sameEntries(s.op->matrix, matrix)) {
+      ++records_[s.record].uses;
+      return s.op;
+    }
+  const auto start = Clock::now();
+  SpdFactor factor(matrix, "K + B^T k B", ordering.trailing, ordering.min_work);
+  auto op = std::make_shared<const SearchOperator>(SearchOperator{std::move(matrix), std::move(factor)});
+  records_.push_back({"K_ff + B^T k B", problem.numFreeDofs(), problem.contact.size(), op->factor.factorNonZeros(),
+                      secondsSince(start), 1});
+  search_.push_back({ordering, op, records_.size() - 1});
+  return op;
+}
+
+std::vector<Preparation> PreparedOperators::preparations() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return records_;
+}
+
+PreparedOperators& operatorsOr(PreparedOperators* operators, std::unique_ptr<PreparedOperators>& own) {
+  if (operators) return *operators;
+  if (!own) own = std::make_unique<PreparedOperators>();
+  return *own;
+}
+
+}  // namespace stc
