@@ -27,6 +27,13 @@ std::string_view searchLawFormula(SearchLaw law) {
 
 }  // namespace
 
+CLI::App* addCheckCommand(CLI::App& app, CheckArgs& args) {
+  auto* cmd = app.add_subcommand("check", "validate a scene and print the model's sizes");
+  cmd->add_option("scene", args.scene, "scene file (TOML)")->required();
+  cmd->add_option("--set", args.overrides, "override a scene value: section.key=value")->take_all();
+  return cmd;
+}
+
 int runCheck(const CheckArgs& args) {
   const Scene scene = readScene(args.scene, args.overrides);
   const Problem p = buildProblem(scene);

@@ -1,5 +1,6 @@
 #pragma once
 // Sub-commands of the stcontact program (docs/interface.md "Command line").
+#include <CLI/CLI.hpp>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,6 +35,14 @@ struct SvdArgs {
   int modes = 10;                       ///< pairs written to the per-mode files and tables
   std::string solver = "incremental";   ///< the only one accepted: the analysis of the exact solution
 };
+
+// Each sub-command is declared on the program by its addXCommand, which fills its arguments, and run
+// by its runX, which returns the exit status (docs/interface.md "Exit status"); cli/main.cpp lists
+// them. The commands that solve also take --threads and --progress-interval.
+
+CLI::App* addCheckCommand(CLI::App& app, CheckArgs& args);
+CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args);
+CLI::App* addSvdCommand(CLI::App& app, SvdArgs& args);
 
 /// Prints the model's sizes; returns the exit status.
 int runCheck(const CheckArgs& args);

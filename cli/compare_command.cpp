@@ -12,6 +12,7 @@
 
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
+#include "stcontact/cli/threads_option.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/interruption.hpp"
 #include "stcontact/io/run_folder.hpp"
@@ -53,6 +54,8 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args) {
   cmd->add_option("--set", args.overrides, "override a scene value: section.key=value")->take_all();
   cmd->add_option("--tol", args.tolerance, toleranceHelp());
   cmd->add_flag("--quiet", args.quiet, "no progress, no final report");
+  addThreadsOption(*cmd);
+  addProgressIntervalOption(*cmd);
   return cmd;
 }
 

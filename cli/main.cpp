@@ -5,19 +5,20 @@
 #include <malloc.h>
 
 #include <csignal>
+#include <functional>
 #include <iostream>
 #include <new>
+#include <utility>
+#include <vector>
 
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/compare_command.hpp"
 #include "stcontact/cli/scaling_command.hpp"
-#include "stcontact/cli/stopping_help.hpp"
 #include "stcontact/cli/sweep_command.hpp"
-#include "stcontact/cli/terminal_progress.hpp"
-#include "stcontact/cli/threads_option.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/interruption.hpp"
 #include "stcontact/core/memory.hpp"
+#include "stcontact/core/threads.hpp"
 #include "stcontact/io/output_error.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/version.hpp"
@@ -65,50 +66,21 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("stcontact ") + STC_VERSION);
   app.require_subcommand(1);
 
+  // Every sub-command, declared by its addXCommand and run by its runX (cli/commands.hpp).
   stc::cli::CheckArgs check;
-  auto* check_cmd = app.add_subcommand("check", "validate a scene and print the model's sizes");
-  check_cmd->add_option("scene", check.scene, "scene file (TOML)")->required();
-  check_cmd->add_option("--set", check.overrides, "override a scene value: section.key=value")->take_all();
-
   stc::cli::SolveArgs solve;
-  auto* solve_cmd = app.add_subcommand("solve", "solve a scene and write the results");
-  solve_cmd->add_option("scene", solve.scene, "scene file (TOML)")->required();
-  solve_cmd->add_option("--solver", solve.solver,
-                        "latin | latin-pgd | fas-aposteriori | fas-apriori | incremental (default: the scene's "
-                        "[solver] name, else fas-apriori)");
-  solve_cmd->add_option("--out", solve.out, "output folder (default results/<scene name>/<solver>)");
-  solve_cmd->add_option("--tol", solve.tolerance, stc::cli::toleranceHelp());
-  solve_cmd->add_option("--max-iterations", solve.max_iterations, stc::cli::maxIterationsHelp());
-  solve_cmd->add_option("--set", solve.overrides, "override a scene value: section.key=value")->take_all();
-  solve_cmd->add_flag("--quiet", solve.quiet, "no progress, no final report");
-  solve_cmd->add_flag("--no-reference", solve.no_reference,
-                      "do not compute the incremental reference (no true error in history.csv)");
-  stc::cli::addThreadsOption(*solve_cmd);
-  stc::cli::addProgressIntervalOption(*solve_cmd);
-
   stc::cli::SvdArgs svd;
-  auto* svd_cmd = app.add_subcommand("svd", "space-time SVD of the solution in the energy product (verification)");
-  svd_cmd->add_option("scene", svd.scene, "scene file (TOML)")->required();
-  svd_cmd->add_option("--set", svd.overrides, "override a scene value: section.key=value")->take_all();
-  svd_cmd->add_option("--out", svd.out, "output folder (default results/<scene name>/svd)");
-  svd_cmd->add_option("--modes", svd.modes, "pairs written to time_functions.csv, modes.vtu, localisation.csv")
-      ->capture_default_str();
-  svd_cmd->add_option("--solver", svd.solver, "solver of the analysed solution (incremental only)")
-      ->capture_default_str();
-
   stc::cli::CompareArgs compare;
-  auto* compare_cmd = stc::cli::addCompareCommand(app, compare);
-  stc::cli::addThreadsOption(*compare_cmd);
-  stc::cli::addProgressIntervalOption(*compare_cmd);
-
   stc::cli::SweepArgs sweep;
-  auto* sweep_cmd = stc::cli::addSweepCommand(app, sweep);
-  stc::cli::addThreadsOption(*sweep_cmd);
-  stc::cli::addProgressIntervalOption(*sweep_cmd);
   stc::cli::ScalingArgs scaling;
-  auto* scaling_cmd = stc::cli::addScalingCommand(app, scaling);
-  stc::cli::addThreadsOption(*scaling_cmd);
-  stc::cli::addProgressIntervalOption(*scaling_cmd);
+  const std::vector<std::pair<CLI::App*, std::function<int()>>> commands = {
+      {stc::cli::addCheckCommand(app, check), [&] { return stc::cli::runCheck(check); }},
+      {stc::cli::addSolveCommand(app, solve), [&] { return stc::cli::runSolve(solve); }},
+      {stc::cli::addSvdCommand(app, svd), [&] { return stc::cli::runSvd(svd); }},
+      {stc::cli::addCompareCommand(app, compare), [&] { return stc::cli::runCompare(compare); }},
+      {stc::cli::addSweepCommand(app, sweep), [&] { return stc::cli::runSweep(sweep); }},
+      {stc::cli::addScalingCommand(app, scaling), [&] { return stc::cli::runScaling(scaling); }},
+  };
 
   try {
     app.parse(argc, argv);
@@ -121,12 +93,9 @@ int main(int argc, char** argv) {
   }
   try {
     stc::threadCount();  // a bad STC_THREADS is refused before anything is read or written
-    if (check_cmd->parsed()) return stc::cli::runCheck(check);
-    if (svd_cmd->parsed()) return stc::cli::runSvd(svd);
-    if (compare_cmd->parsed()) return stc::cli::runCompare(compare);
-    if (sweep_cmd->parsed()) return stc::cli::runSweep(sweep);
-    if (scaling_cmd->parsed()) return stc::cli::runScaling(scaling);
-    return stc::cli::runSolve(solve);
+    for (const auto& [command, run] : commands)
+      if (command->parsed()) return run();
+    return fail(3, "internal failure: no sub-command parsed");  // require_subcommand(1) rules it out
   } catch (const stc::Interrupted&) {
     return interrupted();
   } catch (const stc::InputError& e) {

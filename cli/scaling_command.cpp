@@ -14,6 +14,7 @@
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/compare_command.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
+#include "stcontact/cli/threads_option.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/interruption.hpp"
 #include "stcontact/io/run_folder.hpp"
@@ -166,6 +167,8 @@ CLI::App* addScalingCommand(CLI::App& app, ScalingArgs& a) {
                   "stops: \"not reached\" (default: none)");
   cmd->add_option("--set", a.overrides, "override a scene value for every size: section.key=value")->take_all();
   cmd->add_flag("--quiet", a.quiet, "no progress, no final report");
+  addThreadsOption(*cmd);
+  addProgressIntervalOption(*cmd);
   return cmd;
 }
 

@@ -4,7 +4,9 @@
 #include <memory>
 
 #include "stcontact/cli/commands.hpp"
+#include "stcontact/cli/stopping_help.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
+#include "stcontact/cli/threads_option.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/interruption.hpp"
 #include "stcontact/io/run_folder.hpp"
@@ -43,6 +45,24 @@ SolveResult runSolver(const Problem& problem, const Scene& scene, const ErrorRef
 }
 
 }  // namespace
+
+CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
+  auto* cmd = app.add_subcommand("solve", "solve a scene and write the results");
+  cmd->add_option("scene", args.scene, "scene file (TOML)")->required();
+  cmd->add_option("--solver", args.solver,
+                  "latin | latin-pgd | fas-aposteriori | fas-apriori | incremental (default: the scene's "
+                  "[solver] name, else fas-apriori)");
+  cmd->add_option("--out", args.out, "output folder (default results/<scene name>/<solver>)");
+  cmd->add_option("--tol", args.tolerance, toleranceHelp());
+  cmd->add_option("--max-iterations", args.max_iterations, maxIterationsHelp());
+  cmd->add_option("--set", args.overrides, "override a scene value: section.key=value")->take_all();
+  cmd->add_flag("--quiet", args.quiet, "no progress, no final report");
+  cmd->add_flag("--no-reference", args.no_reference,
+                "do not compute the incremental reference (no true error in history.csv)");
+  addThreadsOption(*cmd);
+  addProgressIntervalOption(*cmd);
+  return cmd;
+}
 
 int runSolve(const SolveArgs& args) {
   const Scene scene = readScene(args.scene, withSolverOptions(args.overrides, args.solver, args.tolerance, args.max_iterations));

@@ -176,6 +176,18 @@ void report(const std::filesystem::path& out, const Problem& problem, const Anal
 
 }  // namespace
 
+CLI::App* addSvdCommand(CLI::App& app, SvdArgs& args) {
+  auto* cmd = app.add_subcommand("svd", "space-time SVD of the solution in the energy product (verification)");
+  cmd->add_option("scene", args.scene, "scene file (TOML)")->required();
+  cmd->add_option("--set", args.overrides, "override a scene value: section.key=value")->take_all();
+  cmd->add_option("--out", args.out, "output folder (default results/<scene name>/svd)");
+  cmd->add_option("--modes", args.modes, "pairs written to time_functions.csv, modes.vtu, localisation.csv")
+      ->capture_default_str();
+  cmd->add_option("--solver", args.solver, "solver of the analysed solution (incremental only)")
+      ->capture_default_str();
+  return cmd;
+}
+
 int runSvd(const SvdArgs& args) {
   const Scene scene = readScene(args.scene, args.overrides);
   if (args.solver != "incremental")

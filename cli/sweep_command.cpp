@@ -10,6 +10,7 @@
 
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
+#include "stcontact/cli/threads_option.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/interruption.hpp"
 #include "stcontact/io/run_folder.hpp"
@@ -116,6 +117,8 @@ CLI::App* addSweepCommand(CLI::App& app, SweepArgs& args) {
   cmd->add_flag("--no-independent", args.no_independent, "warm solves only: no cold solve of each value");
   cmd->add_flag("--write-solutions", args.write_solutions, "write each value's solution into --out/value_<VALUE>/");
   cmd->add_flag("--quiet", args.quiet, "no progress, no per-value lines");
+  addThreadsOption(*cmd);
+  addProgressIntervalOption(*cmd);
   return cmd;
 }
 

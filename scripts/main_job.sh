@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The main job: install the dependencies, build in Release, solve the seed scene
+# The main job: install the dependencies, build the program in Release (the test command,
+# scripts/run_tests.sh, builds the rest: tests, examples, the Python module), solve the seed scene
 # (examples/scenes/hemicylinder.toml), draw the figures, then compare every available strategy
 # (work against precision, docs/compare.md).
 # Results: results/hemicylinder/<solver>/, results/hemicylinder/figures/*.png and the report
@@ -9,7 +10,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${STC_BUILD_DIR:-$root/build}
 cd "$root"
 [ "$(id -u)" -eq 0 ] && scripts/install_deps.sh || echo "not root: skipping apt-get (see scripts/install_deps.sh)"
-scripts/build.sh
+scripts/build.sh stcontact_cli
+echo "== the program built, $SECONDS s after the start"
 stc="$build/bin/stcontact"
 scene=examples/scenes/hemicylinder.toml
 out=results/hemicylinder

@@ -17,9 +17,7 @@ SolveResult solveOnSeparated(const Problem& problem, const FasAposterioriOptions
                              const Eigen::MatrixXd& modes) {
   FasAprioriOptions fine;
   fine.fas = options.fas;
-  fine.stage = options.stage;
-  fine.zone = options.zone;
-  fine.nested = options.nested;
+  static_cast<SeparatedFineLevelOptions&>(fine) = options;
   SeparatedCoarseBasis coarse{"fas-aposteriori", [&](pgd::ControlledGlobalStage& stage, const Problem& on) {
                                 return std::make_unique<SeparatedAposterioriProvider>(
                                     modes, options.basis.residual_vectors, stage, on.contact.B);

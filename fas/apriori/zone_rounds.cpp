@@ -74,7 +74,9 @@ class ZoneRounds {
         first_hat_(from.hat), measure_s_(from.measure_s) {
     if (from.first) {
       history_.push_back(*from.first);
-      done_ = {from.first->iteration, from.first->relaxations, from.first->sparse_solves};
+      done_.iterations = from.first->iteration;
+      done_.relaxations = from.first->relaxations;
+      done_.sparse_solves = from.first->sparse_solves;
     }
     if (inputs.basis_seed) seed_ = *inputs.basis_seed;
   }

@@ -195,7 +195,7 @@ SolveResult march(const Problem& problem, const IterationCallback& callback, Clo
     v = o.v;
     result.interface.lambda.col(k) = o.lambda;
     result.interface.v.col(k) = o.v;
-    summary.history.push_back({k + 1, 0, o.residual, 0.0, std::nullopt, 0, sparse_solves(), elapsed()});
+    summary.history.push_back({k + 1, 0, o.residual, 0.0, std::nullopt, 0, sparse_solves(), elapsed(), std::nullopt});
     summary.indicator = std::max(summary.indicator, o.residual);
     if (callback && !callback(summary.history.back())) {
       summary.termination = Termination::StoppedByCallback;

@@ -9,7 +9,7 @@
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/threads.hpp"
-#include "stcontact/linalg/cholmod_trailing.hpp"
+#include "stcontact/linalg/detail/cholmod_trailing.hpp"
 
 namespace stc {
 

@@ -38,7 +38,7 @@ class SpdFactor {
   /// (the |J| solves that condensed() saves cost about 4 |J| lnz flops), the dense trailing block
   /// costs at most kTrailingFlopShare times the plain factorisation (|J|³ / 3 ≤ share · fl) and
   /// holds at most kTrailingBytes; else the plain factor. The trailing block of L is the Cholesky
-  /// factor of the Schur complement of A on J (linalg/cholmod_trailing.hpp), kept dense, and
+  /// factor of the Schur complement of A on J (linalg/detail/cholmod_trailing.hpp), kept dense, and
   /// condensed() uses it.
   SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& what, const std::vector<int>& trailing,
             double min_work = kTrailingWork);

@@ -30,31 +30,25 @@ inline constexpr std::array<std::pair<std::string_view, AposterioriFineLevel>, 2
     {"separated", AposterioriFineLevel::Separated},
 }};
 
-struct FasAposterioriOptions {
+/// The options of the separated fine level (its base, SeparatedFineLevelOptions) act on it only.
+struct FasAposterioriOptions : SeparatedFineLevelOptions {
   FasOptions fas;
   AposterioriBasisOptions basis;
-  /// Full: the seed paper's FAS. Separated: the same fine level as `fas-apriori` (the options below,
+  /// Full: the seed paper's FAS. Separated: the same fine level as `fas-apriori` (the base's options,
   /// shared with it), so that the two differ by their basis alone (docs/compare_bases.md).
   AposterioriFineLevel fine_level = AposterioriFineLevel::Full;
-  pgd::ControlledStageOptions stage;  ///< on the separated fine level only
-  ReducedInterfaceOptions zone;       ///< on the separated fine level only
-  NestedInTimeOptions nested;         ///< on the separated fine level only
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
     FasOptions::fields(o.fas, visit);
     AposterioriBasisOptions::fields(o.basis, visit);
     visit("aposteriori_fine_level", o.fine_level, Keywords<AposterioriFineLevel>(kAposterioriFineLevels));
-    pgd::ControlledStageOptions::fields(o.stage, visit);
-    ReducedInterfaceOptions::fields(o.zone, visit);
-    NestedInTimeOptions::fields(o.nested, visit);
+    SeparatedFineLevelOptions::fields(o, visit);
   }
   void validate() const {
     fas.validate();
     basis.validate();
-    stage.validate();
-    zone.validate();
-    nested.validate();
+    SeparatedFineLevelOptions::validate();
   }
 };
 

@@ -99,27 +99,41 @@ struct NestedInTimeOptions {
   void validate() const { validateFields(*this, "nested iteration"); }
 };
 
-struct FasAprioriOptions {
-  FasOptions fas;
-  AprioriBasisOptions basis;
+/// The separated fine level (docs/method.md §5): the separated global stage, the reduced interface
+/// and nested iteration in time. `fas-apriori`'s, and `fas-aposteriori`'s when it runs on it
+/// (fas_aposteriori_options.hpp), so that the two differ by their basis alone: one struct for both.
+struct SeparatedFineLevelOptions {
   pgd::ControlledStageOptions stage;
   ReducedInterfaceOptions zone;
   NestedInTimeOptions nested;
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
-    FasOptions::fields(o.fas, visit);
-    AprioriBasisOptions::fields(o.basis, visit);
     pgd::ControlledStageOptions::fields(o.stage, visit);
     ReducedInterfaceOptions::fields(o.zone, visit);
     NestedInTimeOptions::fields(o.nested, visit);
   }
   void validate() const {
-    fas.validate();
-    basis.validate();
     stage.validate();
     zone.validate();
     nested.validate();
+  }
+};
+
+struct FasAprioriOptions : SeparatedFineLevelOptions {
+  FasOptions fas;
+  AprioriBasisOptions basis;
+
+  template <class Self, class Visit>
+  static void fields(Self& o, Visit&& visit) {
+    FasOptions::fields(o.fas, visit);
+    AprioriBasisOptions::fields(o.basis, visit);
+    SeparatedFineLevelOptions::fields(o, visit);
+  }
+  void validate() const {
+    fas.validate();
+    basis.validate();
+    SeparatedFineLevelOptions::validate();
   }
 };
 

@@ -60,10 +60,6 @@ class IterationMonitor {
   /// Records one iteration whose equilibrated iterate is `s`; returns true when the solve must stop
   /// (the summary says why).
   bool record(int relaxations, double indicator, const InterfaceHistory& s, int rank, long sparse_solves);
-  /// Starts the extrapolation's history afresh: the next iterates follow another map (e.g. after a
-  /// rejected FAS correction), so the rates measured so far do not describe them (the calibrated
-  /// estimate keeps its checkpoints: it assumes no map).
-  void restartEstimate() { estimator_.reset(); }
 
   /// Final summary (termination, message, totals); call once at the end.
   SolveSummary finish();

@@ -1,4 +1,4 @@
-#include "stcontact/linalg/cholmod_trailing.hpp"
+#include "stcontact/linalg/detail/cholmod_trailing.hpp"
 
 #include <stdexcept>
 
