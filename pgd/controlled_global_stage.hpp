@@ -36,11 +36,8 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// direction, response_basis.hpp, and the stage spans every row from its full_share on), and
   /// computes the load responses. At any size, not from a work as the incremental solver's factor:
   /// that one saves the |J| solves of one Delassus operator, this one a solve for every direction
-  /// and, once it spans every row, the enrichment. `stcontact solve SCENE --tol 1e-6 --no-reference`
-  /// against |J| · lnz ≥ 1e8 (the former threshold), alternated, medians of 5 (AMD EPYC,
-  /// 2026-11-29): the seed 58 → 22 solves, 10 → 8 relaxations, 0.75 of the time; fretting.toml 42 →
-  /// 31 solves, 0.93; 401 arc nodes 214 → 77 solves, 0.77; 401 × 2001 219 → 83, 0.78; punch_seat.toml
-  /// 34 → 46 relaxations, 1.19 (docs/threads.md, "The Delassus operator from the factorisation").
+  /// and, once it spans every row, the enrichment (faster on every example scene but one, measured
+  /// in docs/threads.md, "The Delassus operator from the factorisation").
   ControlledGlobalStage(const Problem& problem, ControlledStageOptions options);
   /// The same operator taken from `operators` (prepared there once for the run).
   ControlledGlobalStage(const Problem& problem, ControlledStageOptions options, PreparedOperators& operators);

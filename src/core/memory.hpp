@@ -3,7 +3,7 @@
 // limit (`ulimit -v`). A run whose estimated need exceeds it is refused before anything is written
 // (src/problem/size_estimate.hpp), and a limit too low for any run is refused at once: under
 // `ulimit -v` of 100-200 MB, Debian 12's OpenBLAS 0.3.21 spins forever in its buffer allocator when a
-// mapping fails (OpenBLAS issue 5289, fixed after that version).
+// mapping fails (github.com/OpenMathLib/OpenBLAS/issues/5289, fixed after that version).
 #include <string>
 
 namespace stc {

@@ -116,17 +116,11 @@ SpdFactor::SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& wh
 
 // Trailing dofs: CHOLMOD's own analysis first (its ordering, and lnz to weigh the solves the
 // trailing block saves), then, when that is worth it, the same ordering with the trailing dofs moved
-// last, given to CHOLMOD as is (no postordering, which could move them). The incremental solver's
-// zone (K_ff with the zone's dofs last, against d |Z| solves; stcontact compare … --solvers
-// incremental, medians of 3, 2026-11-28): half-ball divisions 12, |J| · lnz = 4.8e9, 2.50 → 1.55 s;
-// divisions 8, 4.3e8, 0.41 → 0.32 s; 1601 arc nodes, 8.2e8, 1.08 → 0.90 s; 801 arc nodes, 1.8e8,
-// 0.220 → 0.214 s; 401 arc nodes × 2001 instants, 3.8e7, 0.127 → 0.170 s. Again on 2026-11-29 on
-// the machine whose OpenBLAS picks its Cooperlake kernels (`stcontact solve … --solver incremental
-// --no-reference`, the bound at 3e8 and 1e8 alternated, medians of 7 or 5 of wall_s): 801 arc nodes
-// 0.364 → 0.240 s, the same forces to 4e-14; 401 × 2001 0.154 → 0.209 s and the seed 0.0043 →
-// 0.0060 s ordered last (a bound at 0), so the bound sits between 3.8e7 and 1.8e8. In 2D the trailing
-// block makes L 1.75 times larger (801 arc nodes: 394 749 → 693 501 entries; 11 % on the half-ball),
-// and every later solve dearer (docs/threads.md, "The Delassus operator from the factorisation").
+// last, given to CHOLMOD as is (no postordering, which could move them). Ordered last, the
+// incremental solver's zone saves its d |Z| solves from |J| · lnz ≈ 1e8 on and costs more below
+// (the trailing block makes L larger, 1.75 times in 2D, and every later solve dearer): the
+// measurements behind kTrailingWork are in docs/threads.md, "The Delassus operator from the
+// factorisation".
 void SpdFactor::factorise(const Eigen::SparseMatrix<double>& A, const std::string& what,
                           const std::vector<int>& trailing, double min_work) {
   Impl& f = *impl_;

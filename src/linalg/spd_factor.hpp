@@ -97,10 +97,8 @@ class SpdFactor {
   /// (spd_factor.cpp).
   static constexpr double kSupernodalSolveSwitch = 100.0;
   /// |trailing| · lnz from which the trailing dofs are ordered last: the incremental solver's zone
-  /// measured faster so from 4.3e8 on (the hemisphere, 1601 arc nodes, the graded half-ball) and at
-  /// 1.8e8 (801 arc nodes: 0.66 of its time on the machine with OpenBLAS's Cooperlake kernels, level
-  /// on the one with its Zen kernels), slower at 3.8e7 (401 arc nodes × 2001 instants) and on the
-  /// seed (1.3e6) (spd_factor.cpp).
+  /// is faster so from 1.8e8 on, slower at 3.8e7 and below (docs/threads.md, "The Delassus operator
+  /// from the factorisation").
   static constexpr double kTrailingWork = 1e8;
   /// Bounds on the dense trailing block: its flops against the plain factorisation's (1601 arc
   /// nodes' zone: 4.8 times, and faster; their whole interface: 205 times), and its memory (the

@@ -697,7 +697,7 @@ TEST(SceneReaderErrors, NonAsciiOutsideStringsAndCommentsIsASyntaxErrorWithLineA
               HasSubstr(":2:3: TOML syntax error: a line continued with a backslash"));
 }
 
-// Found by fuzzing (CI, 2026-11-23): the scan sees a string after "5.", toml++ a number whose end it
+// Found by fuzzing (CI): the scan sees a string after "5.", toml++ a number whose end it
 // looks for, asking of 'é' whether it is whitespace. The all-ASCII stand-in is parsed first.
 TEST(SceneReaderErrors, NonAsciiInALineThatDoesNotParseNeverReachesTheParser) {
   const std::string finding = "nae = 5.\\\"\u00e9\\\nt\nt = ";
@@ -709,7 +709,7 @@ TEST(SceneReaderErrors, NonAsciiInALineThatDoesNotParseNeverReachesTheParser) {
   EXPECT_THAT(errorOf(seedWith("young = 3000.0", "young = 3000.\\\"\u00b0\"")), HasSubstr(":9:"));
 }
 
-// Found by fuzzing (2026-11-23): toml++ 3.3.0 assumes a value, never '}', where an array expects one
+// Found by fuzzing: toml++ 3.3.0 assumes a value, never '}', where an array expects one
 // (src/scene/detail/array_value_guard.hpp); the reader refuses it first.
 TEST(SceneReaderErrors, BraceWhereAnArrayExpectsAValueIsASyntaxErrorWithLineAndColumn) {
   const std::string times = "times  = [0.0, 0.2, 1.0]";
@@ -733,7 +733,7 @@ TEST(SceneReader, BracesInStringsAndCommentsOfArraysAreText) {
   EXPECT_EQ(scene.dirichlet[0].history.times, (std::vector<double>{0.0, 0.2, 1.0}));
 }
 
-// Found by fuzzing (2026-11-23): a --set value is TOML too, and goes through the same guards; what
+// Found by fuzzing: a --set value is TOML too, and goes through the same guards; what
 // they refuse is read as a string, so the key's type check names it.
 TEST(SceneReaderErrors, OverrideValuesMeetTheParserBehindItsGuards) {
   EXPECT_THAT(errorOf(kSeed, {"dirichlet[0].values=[\u03a9"}),

@@ -175,7 +175,7 @@ TEST(CattaneoMindlin, CattaneoMindlinStickZoneShrinksButFasterThanTheoryWhenDund
 // Two identical elastic cylinders (node to node, tests/fixtures/two_bodies_scene.hpp) at ν = 0.3:
 // β = 0, so Cattaneo–Mindlin is exact for the pair where it was off by 0.16–0.28 a for one body on
 // the rigid flat (the test above). The stick zone's half-width c from the traction deficit must lie
-// within one node spacing h of a √(1 − Q/μP) (issue 37; h/a = 0.057 here), centred within h, and no
+// within one node spacing h of a √(1 − Q/μP) (h/a = 0.057 here), centred within h, and no
 // node may return to stick under the monotone drive.
 TEST(CattaneoMindlin, TwoIdenticalCylindersStickZoneMatchesTheoryWithinOneNodeSpacing) {
   const double poisson = 0.3;

@@ -129,7 +129,7 @@ TEST(CattaneoMindlin3d, StickRadiusWithinTwoNodeSpacings) {
 }
 
 // Two identical half-balls (node to node, β = 0: Mindlin exact) at ν = 0.3, the same drive doubled
-// (each body takes half): the stick radius within one node spacing (issue 37).
+// (each body takes half): the stick radius within one node spacing.
 TEST(CattaneoMindlin3d, TwoIdenticalSpheresStickRadiusWithinOneNodeSpacing) {
   std::printf("[ measured ] pair, nu 0.30, divisions 4\n");
   expectMindlinStickZone(runPartialSlip(4, 0.3, 40, 0.004, true), 1.0);

@@ -1,6 +1,6 @@
 #pragma once
 // Guard for a defect of toml++ 3.3.0 (Debian 12's libtomlplusplus-dev), found by fuzzing
-// (tests/fuzz/fuzz_scene.cpp, 2026-11-23): in an array, where a value must come (after '[' or ','
+// (tests/fuzz/fuzz_scene.cpp): in an array, where a value must come (after '[' or ','
 // and any blanks, line ends and comments), a '}' is handed to parse_value(), which assumes it is
 // given no value terminator (TOML_ASSERT_ASSUME): an assertion failure with assertions on,
 // __builtin_assume of a false condition (undefined behaviour) in a clang release build; GCC 12

@@ -11,7 +11,7 @@
 // The scan knows TOML's strings and comments, not toml++'s view of a malformed line (in
 // `a = 5.\"é` it sees a string, toml++ a number whose end it looks for), so the reader also parses
 // asciiStandIn(text) first: a text that fails there never reaches the parser with its non-ASCII
-// characters (fuzzing finding of 2026-11-23, tests/fuzz/seeds/scene/number_then_quote.toml).
+// characters (a fuzzing finding, tests/fuzz/seeds/scene/number_then_quote.toml).
 #include <string>
 #include <string_view>
 
