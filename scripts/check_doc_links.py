@@ -18,7 +18,7 @@ ROOT = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.dirname(os
 SOURCES = ('.cpp', '.hpp', '.py', '.sh', '.md', '.toml', '.cmake', '.txt', '.gp', '.pyi')
 SKIP = {'build', '.git', 'results', 'node_modules'}
 # docs/PAGE.md, "Section" — or PAGE.md, "Section" — with or without the comma.
-CITATION = re.compile(r'(?:docs/)?([a-z0-9_]+\.md),? ["“]([^"”]+)["”]')
+CITATION = re.compile(r'(?:docs/)?([a-z0-9_]+\.md)\)?,? ["“]([^"”]+)["”]')
 LINK = re.compile(r'\]\(([^)#\s]+)(?:#[^)]*)?\)')
 SECTION = re.compile(r'method\.md §(\d+)')
 
