@@ -1,5 +1,5 @@
 // Cost of one LATIN iteration against the bare multi-right-hand-side CHOLMOD solve it contains
-// (the goal of docs/latin_iteration_cost.md: "overhead of at most 30% over that solve"), on the seed
+// (docs/latin_iteration_cost.md measures the overhead over that solve), on the seed
 // scene (1088 free dofs, 101 contact nodes, 201 instants), κ = 3, on one thread (threads: bench_stages).
 //   cmake -B build -DSTC_BUILD_BENCHMARKS=ON && cmake --build build --target bench_latin
 //   build/bench/bench_latin --benchmark_repetitions=10 --benchmark_report_aggregates_only=true

@@ -65,7 +65,7 @@ struct FasOptions {
   /// `safeguard_growth` times the one before the coarse step is rejected (the pre-coarse local stage
   /// is restored) and the next coarse steps are skipped for 1, 2, 4, … up to max_skip cycles while
   /// rejections repeat. Without it a poor coarse space (e.g. 10 modes + 5 residual vectors on the
-  /// seed scene) can lock FAS in a 2-cycle at true error 0.1-0.2 (docs/compare_bases.md). Off: the
+  /// seed scene) can lock FAS in a 2-cycle at true error 0.1-0.2 (docs/fas_aposteriori.md). Off: the
   /// seed's plain cycle.
   bool safeguard = true;
   /// θ ≥ 1 of the safeguard; unset: defaultSafeguardGrowth(dimension, the provider anticipates). The

@@ -79,7 +79,7 @@ TEST(FasApriori, ReachesTheIncrementalSolutionWithFewerRelaxationsThanLatin) {
 // At κ = 100 the map from the separated stage's projection error to the fixed point is large: with
 // 0.2.0's floor on that error (γ · tolerance · ‖w‖) this scene stopped at true error 1.16e-6 for
 // tolerance 1e-6 (measured, 290 relaxations); with the bound γ · gap alone (the default since), at
-// 4.7e-7 in 294 (docs/hard_cases.md, the full-size case kappa_100).
+// 4.7e-7 in 294 (measured on the full-size case kappa_100 of docs/hard_cases.md).
 TEST(FasApriori, MeetsTheToleranceAtAnExtremeSearchScale) {
   stc::Scene scene = stc::test::seedScene(51, 101);
   scene.search_direction.scale = 100.0;
