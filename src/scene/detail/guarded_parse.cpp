@@ -28,10 +28,10 @@ toml::table parseOrFail(std::string_view text, const ErrorReporter& errors, cons
 // comes last because it parses prefixes of the text: they must meet none of the other defects
 // (fuzz finding: a prefix holding "[0.0, 2.7,}" reached toml++ from the header guard). A text with
 // non-ASCII characters reaches the parser only once its stand-in has parsed.
-// STC_TOML_GUARDS = 0 (set by src/CMakeLists.txt for toml++ >= 3.4, whose parser has these defects
-// fixed): the text goes to the parser directly.
+// From toml++ 3.4 on (its version macros, toml++/impl/version.h), whose parser has these defects
+// fixed, the text goes to the parser directly.
 toml::table parseGuarded(std::string_view text, const ErrorReporter& errors) {
-#if defined(STC_TOML_GUARDS) && !STC_TOML_GUARDS
+#if TOML_LIB_MAJOR > 3 || (TOML_LIB_MAJOR == 3 && TOML_LIB_MINOR >= 4)
   return parseOrFail(text, errors, "");
 #else
   refuseMisplacedNonAscii(text, errors);
