@@ -33,13 +33,17 @@ CoarseSpace AprioriBasisProvider::coarseSpace(const InterfaceHistory& hat) {
     // ũ − ũ_previous in Φ̂: R only gains columns, and rows that start at them, so R [G; c_prev; 0] is
     // the previous whitened history with zero rows below (energy_factor.hpp).
     // Beside it the sketched step of the next relaxation, ũ − ũ_last (anticipateWhitened).
+    // (Blocks assigned one by one: an empty step is 0 × 0, which Eigen's comma initializer reads as
+    // a row of its own and asserts on.)
     Eigen::MatrixXd d(whitened.rows(), whitened.cols() + next.step.cols());
-    d << whitened, next.step;
+    d.leftCols(whitened.cols()) = whitened;
+    if (next.step.cols() > 0) d.rightCols(next.step.cols()) = next.step;
     d.topLeftCorner(previous_.rows(), previous_.cols()) -= previous_;
     d -= U * (U.transpose() * d);
     const Eigen::MatrixXd V = pgd::leadingSingularVectors(d, options_.increment_modes, 1e-10);
     Eigen::MatrixXd all(U.rows(), U.cols() + V.cols());
-    all << U, V;
+    all.leftCols(U.cols()) = U;
+    all.rightCols(V.cols()) = V;
     U = linalg::orthonormalColumns(all);
   }
   previous_ = whitened;
