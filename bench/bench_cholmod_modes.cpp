@@ -16,8 +16,8 @@
 #include <Eigen/CholmodSupport>
 #include <thread>
 
-#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/latin/global_stage.hpp"
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 
 namespace {

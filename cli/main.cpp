@@ -1,6 +1,6 @@
 // stcontact: the command line (docs/interface.md). Exit status: 0 converged / ok; 1 bad input or usage
-// (one "error: ..." line on stderr); 2 ran but did not converge; 3 internal failure; 130 / 143
-// stopped by SIGINT / SIGTERM (the output folder as it was before the run).
+// (one "error: ..." line on stderr); 2 ran but did not converge; 3 internal failure; 130 / 143 / 129
+// stopped by SIGINT / SIGTERM / SIGHUP (the output folder as it was before the run).
 #include <CLI/CLI.hpp>
 #include <malloc.h>
 
@@ -38,12 +38,7 @@ int fail(int status, const std::string& message) {
 }
 
 /// A run stopped by a signal: whatever it threw on the way out, it wrote nothing (src/io/run_folder.hpp).
-int interrupted() {
-  const int signal = stc::interruptionSignal();
-  std::cerr << "stopped by " << (signal == SIGTERM ? "SIGTERM" : "SIGINT")
-            << ": nothing written, the output folder is as it was before the run" << std::endl;
-  return 128 + (signal ? signal : SIGINT);
-}
+int interrupted() { return stc::reportStopAndExitStatus(); }
 
 // The solvers allocate interface fields (d n_C × m doubles, 0.3 MB on the seed scene) at every stage.
 // glibc serves blocks above its mmap threshold (128 kB, raised on the fly up to 32 MB) by mmap and
@@ -59,7 +54,7 @@ void keepFreedFieldsInTheHeap() {
 
 int main(int argc, char** argv) {
   keepFreedFieldsInTheHeap();
-  stc::stopOnSignals();  // SIGINT, SIGTERM: the solve stops at its next iteration, nothing is written
+  stc::stopOnSignals();  // SIGINT, SIGTERM, SIGHUP: the run stops, nothing is written (first: no thread yet)
   stc::linalg::preferFastBlasKernels();
   CLI::App app{"stcontact " STC_VERSION
                ": quasi-static frictional contact over the whole space-time grid (LATIN, FAS, PGD)"};
@@ -82,6 +77,17 @@ int main(int argc, char** argv) {
       {stc::cli::addScalingCommand(app, scaling), [&] { return stc::cli::runScaling(scaling); }},
   };
 
+  // CLI11 says only "A subcommand is required" for a word it does not know: name it and the commands.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string known;
+    bool found = false;
+    for (const auto& [command, run] : commands) {
+      known += (known.empty() ? "" : ", ") + command->get_name();
+      found = found || command->get_name() == argv[1];
+    }
+    if (!found)
+      return fail(1, "unknown command '" + std::string(argv[1]) + "' (the commands: " + known + "; see stcontact --help)");
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -29,6 +29,11 @@ class LinearStage {
   virtual bool changesItsMap() const { return false; }
   /// The factor of A = K_ff + Bᵀ k B.
   virtual const SpdFactor& factor() const = 0;
+  /// ‖r‖_{k⁻¹} of the last solve: how far its iterate may lie from the exact global stage's (a
+  /// controlled stage's projection error; 0 for the exact stage). Both are in equilibrium and differ
+  /// by δs with ‖δs‖²_K = Σ δv·δλ ≤ ‖r‖²_{k⁻¹} / 4 (pgd/controlled_global_stage.hpp), which the error
+  /// estimate adds (IterationMonitor::record): the iteration's own estimate cannot see it.
+  virtual double projectionError() const { return 0.0; }
 };
 
 }  // namespace stc::latin

@@ -65,7 +65,7 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// Whether the directions span every interface row (the exact stage of the header's "Every row").
   bool spansEveryRow() const { return every_row_; }
   /// ‖r‖_{k⁻¹} of the last solve, and the bound it was held to.
-  double projectionError() const { return error_; }
+  double projectionError() const override { return error_; }
   /// The coordinates c (p × m) that a solve from `hat` would have, the directions enriched as that
   /// solve would enrich them (the same bound): the projection of the next right-hand side, without
   /// forming s (two products with the directions where a solve has three; fas/apriori/apriori_basis.hpp

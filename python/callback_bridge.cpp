@@ -1,5 +1,8 @@
 #include "stcontact/python/callback_bridge.hpp"
 
+#include <cmath>
+#include <string>
+
 #include <utility>
 
 namespace stc::python {
@@ -25,6 +28,13 @@ bool CallbackBridge::keepGoing(const IterationRecord& record, bool call_user) {
     if (!call_user || callback_.is_none()) return true;
     const py::object answer = callback_(record);
     if (answer.is_none()) return true;
+    // NaN is true to Python: a callback whose test went NaN would go on silently.
+    if (PyFloat_Check(answer.ptr()) && !std::isfinite(PyFloat_AsDouble(answer.ptr()))) {
+      const std::string message = "callback returned " + std::string(py::str(answer)) +
+                                  ": return True to go on, False to stop (or None)";
+      PyErr_SetString(PyExc_ValueError, message.c_str());
+      throw py::error_already_set();
+    }
     const int truth = PyObject_IsTrue(answer.ptr());
     if (truth < 0) throw py::error_already_set();
     return truth == 1;

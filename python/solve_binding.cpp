@@ -64,6 +64,10 @@ void applyWarmStart(WarmStart& warm, const Problem& problem, std::optional<Inter
                     SolveInputs& inputs) {
   if (warm.forces.has_value() != warm.displacements.has_value())
     throw std::invalid_argument("a warm start needs both the interface forces and the interface displacements");
+  // Named as the caller wrote them (a SolveResult's arrays, edited in place: NaN reached every file).
+  if (warm.forces) requireFinite(*warm.forces, "start.interface_forces");
+  if (warm.displacements) requireFinite(*warm.displacements, "start.interface_displacements");
+  if (warm.basis_seed) requireFinite(*warm.basis_seed, "start.interface_directions");
   if (warm.forces) {
     start = InterfaceHistory{std::move(*warm.displacements), std::move(*warm.forces)};
     requireFits(*start, problem);

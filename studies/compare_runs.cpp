@@ -214,6 +214,7 @@ std::vector<Strategy> solverList(const std::optional<std::string>& given) {
   const std::string& list = *given;
   if (trimmed(list).empty())
     throw InputError("--solvers: the list is empty (leave the option out to run every strategy)");
+  if (trimmed(list).back() == ',') throw InputError("--solvers: empty name in '" + list + "'");  // getline drops it
   std::stringstream items(list);
   std::string item;
   while (std::getline(items, item, ',')) {

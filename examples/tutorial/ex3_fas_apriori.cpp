@@ -41,6 +41,30 @@ struct Variant {
   std::function<void(stc::fas::FasAprioriOptions&)> change;
 };
 
+// Step 2 as a program of one's own would write it: the solve of `stcontact solve` (the strategy the
+// scene names, with its options, and the incremental solution as the reference of the true error),
+// and a bad scene reported: stc::InputError names the file, the key and the rule in one line.
+// [readme-begin]
+int solveAsTheProgram(const std::string& scene_file, const std::vector<std::string>& sets) try {
+  const stc::Scene scene = stc::readScene(scene_file, sets);              // read and validate
+  const stc::Problem problem = stc::buildProblem(scene);                  // K, loads, contact interface
+  const stc::ReferenceSolution reference = stc::computeReference(problem, nullptr);  // incremental
+  const stc::SolveInputs inputs{.reference = reference.reference.get()};  // true errors in the history
+  const stc::SolveResult result = stc::solve(problem, scene.solver, inputs);  // the scene's strategy
+  const stc::SolveSummary& summary = result.summary;
+  std::cout << summary.solver << ": " << stc::toString(summary.termination) << " (" << summary.message << ")\n  "
+            << problem.numDofs() << " dofs, " << problem.contact.size() << " contact nodes, "
+            << problem.numSteps() << " instants; " << summary.relaxations << " relaxations, true error "
+            << summary.error.value_or(-1.0) << ", " << summary.wall_s << " s\n";
+  for (const stc::SolveStage& stage : summary.stages)  // the sub-grid solve, the contact zone
+    std::cout << "  stage: " << stage.description << '\n';
+  return summary.converged() && summary.error && *summary.error <= scene.solver.tolerance() ? 0 : 2;
+} catch (const stc::InputError& e) {  // a bad scene or option: one line, exit status 1
+  std::cerr << "error: " << e.what() << '\n';
+  return 1;
+}
+// [readme-end]
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -51,24 +75,14 @@ int main(int argc, char** argv) {
   app.add_option("scene", scene_file, "scene file (TOML)")->capture_default_str();
   app.add_option("--set", sets, "override a scene value: section.key=value")->take_all();
   CLI11_PARSE(app, argc, argv);
+  stc::linalg::preferFastBlasKernels();
+  // 2. The solve of `stcontact solve` (solveAsTheProgram above).
+  if (const int status = solveAsTheProgram(scene_file, sets); status != 0) return status;
   try {
-    stc::linalg::preferFastBlasKernels();
-    // 2. The solve of `stcontact solve`: the strategy the scene names, with its options, and the
-    //    incremental solution as the reference of the true error.
-    // [readme-begin]
-    const stc::Scene scene = stc::readScene(scene_file, sets);              // read and validate
-    const stc::Problem problem = stc::buildProblem(scene);                  // K, loads, contact interface
-    const stc::ReferenceSolution reference = stc::computeReference(problem, nullptr);  // incremental
-    const stc::SolveInputs inputs{.reference = reference.reference.get()};  // true errors in the history
-    const stc::SolveResult result = stc::solve(problem, scene.solver, inputs);  // the scene's strategy
-    const stc::SolveSummary& summary = result.summary;
-    std::cout << summary.solver << ": " << stc::toString(summary.termination) << " (" << summary.message << ")\n  "
-              << problem.numDofs() << " dofs, " << problem.contact.size() << " contact nodes, "
-              << problem.numSteps() << " instants; " << summary.relaxations << " relaxations, true error "
-              << summary.error.value_or(-1.0) << ", " << summary.wall_s << " s\n";
-    for (const stc::SolveStage& stage : summary.stages)  // the sub-grid solve, the contact zone
-      std::cout << "  stage: " << stage.description << '\n';
-    // [readme-end]
+    const stc::Scene scene = stc::readScene(scene_file, sets);
+    const stc::Problem problem = stc::buildProblem(scene);
+    const stc::ReferenceSolution reference = stc::computeReference(problem, nullptr);
+    const stc::SolveInputs inputs{.reference = reference.reference.get()};
 
     // 3. One option changed at a time (src/options/fas_apriori_options.hpp lists them all).
     const std::vector<Variant> variants = {
@@ -83,7 +97,7 @@ int main(int argc, char** argv) {
     };
     std::printf("\n%-34s %12s %14s %12s %10s\n", "fas-apriori", "relaxations", "sparse solves", "true error",
                 "time (s)");
-    bool all_agree = summary.converged() && summary.error && *summary.error <= scene.solver.tolerance();
+    bool all_agree = true;
     for (const Variant& v : variants) {
       stc::fas::FasAprioriOptions options = scene.solver.fas_apriori;
       v.change(options);

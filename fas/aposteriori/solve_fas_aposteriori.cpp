@@ -1,9 +1,9 @@
 #include "stcontact/fas/aposteriori/solve_fas_aposteriori.hpp"
 
 #include "stcontact/fas/aposteriori/aposteriori_basis.hpp"
+#include "stcontact/fas/aposteriori/fixed_basis_provider.hpp"
 #include "stcontact/fas/aposteriori/separated_aposteriori_basis.hpp"
 #include "stcontact/fas/apriori/solve_fas_apriori.hpp"
-#include "stcontact/fas/aposteriori/fixed_basis_provider.hpp"
 #include "stcontact/fas/fas_solver.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/latin/global_stage.hpp"

@@ -110,7 +110,7 @@ class SolveResult:
 
     def __repr__(self):
         return "<SolveResult %s: %s after %d iterations, %d contact nodes x %d instants>" % (
-            self.solver, self.termination, self.iterations, self.interface_forces.shape[0] // 2,
+            self.solver, self.termination, self.iterations, self.interface_forces.shape[0] // self.dimension,
             self.interface_forces.shape[1])
 
 

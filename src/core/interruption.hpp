@@ -1,10 +1,17 @@
 #pragma once
-// A request to stop the run, from a signal (SIGINT, SIGTERM: the program installs the handlers,
-// cli/main.cpp) or from a caller: solves stop at their next iteration through their progress
+// A request to stop the run, from a signal (SIGINT, SIGTERM, SIGHUP: the program asks for them,
+// stopOnSignals) or from a caller: solves stop at their next iteration through their progress
 // callback, the run folder is not committed (src/io/run_folder.hpp), and the program exits
-// 128 + the signal's number (130, 143) with a message. A flag set from a signal handler: lock-free.
+// 128 + the signal's number (130, 143, 129) with a message.
+// What runs no iteration (reading a scene or a mesh, assembling, factorising, writing) sees the
+// request too: a thread of the program waits for the signals and, when the run has not ended within
+// kStopGrace of one, removes what the run registered (its temporary folder, its lock: StopCleanup)
+// and ends the process with the same status and message. So a run stops at any moment, and leaves
+// its output folder as it was.
+#include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace stc {
 
@@ -27,7 +34,31 @@ bool interruptionRequested() noexcept;
 /// The signal of the request (0: a caller's, or none).
 int interruptionSignal() noexcept;
 
-/// Installs requestInterruption as the handler of SIGINT and SIGTERM.
+/// Seconds a run has, after a signal, to stop on its own before the process ends it.
+inline constexpr double kStopGrace = 1.0;
+
+/// Takes SIGINT, SIGTERM and SIGHUP for the process: blocked in every thread, and waited for by a
+/// thread of their own that requests the stop and, after kStopGrace, ends the process (header).
+/// Call first in main, before any other thread starts (they inherit the blocked signals).
 void stopOnSignals();
+
+/// The one message and exit status of a run stopped by a signal: prints "stopped by SIG...: nothing
+/// written, ..." and returns 128 + the signal. Called by whichever comes first, the run that saw the
+/// request or the signals' thread; the other waits for the process to end.
+int reportStopAndExitStatus();
+
+/// Paths removed if the process is ended after a signal (StopCleanup's lifetime: registered while
+/// the object lives). A run folder registers its temporary folder and its lock.
+class StopCleanup {
+ public:
+  StopCleanup() = default;
+  explicit StopCleanup(std::vector<std::filesystem::path> paths);
+  ~StopCleanup();
+  StopCleanup(const StopCleanup&) = delete;
+  StopCleanup& operator=(const StopCleanup&) = delete;
+
+ private:
+  long id_ = -1;
+};
 
 }  // namespace stc

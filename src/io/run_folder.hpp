@@ -6,12 +6,20 @@
 // the previous one (a VTU series of 41 frames under a .pvd of 11, a finite old solution beside a new
 // numerical_issue summary). A run that stops early (bad input found late, an interruption, an
 // exception) removes its temporary and leaves the target as it was. While it runs, a lock on
-// ".<name>.lock" beside the target (flock) refuses a second writer. The target must be absent, an
-// empty folder or a previous run's (its marker ".stcontact-run", or the summary.json, summary.md
-// or svd_summary.json of a version before the marker): anything else is refused rather than replaced. Temporaries of
-// runs that were killed (SIGKILL: their process is gone) are removed by the next run into the target.
+// ".<name>.lock" beside the target (flock) refuses a second writer; a run that is refused removes
+// the lock it made. A run replaces only what a run wrote: its marker ".stcontact-run" lists the
+// run's files, and the target must be absent, an empty folder, or hold nothing but the files its
+// marker lists (and their folders). Anything else, a file of one's own beside them, a nested run's
+// folder, a marker without a list (an older version's, one made by hand), is refused, naming the
+// first such file, before anything is computed. A symbolic link given as the target is followed;
+// a folder without write permission is refused. Temporaries of runs that were killed (SIGKILL:
+// their process is gone) are removed by the next run into the target.
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
+
+#include "stcontact/core/interruption.hpp"
 
 namespace stc {
 
@@ -29,16 +37,28 @@ class RunFolder {
   const std::filesystem::path& target() const { return target_; }
   /// `text` with the temporary folder's path written as the target's (messages that name a file).
   std::string named(std::string text) const;
-  /// Writes the marker, then replaces the target by the temporary folder as a whole. Throws
+  /// Writes the marker (the list of the files the run wrote), then replaces the target by the
+  /// temporary folder as a whole. Throws
   /// Interrupted when a stop was requested (src/core/interruption.hpp), OutputError when the
   /// exchange fails: either way the target is unchanged and the destructor removes the temporary.
   void commit();
 
  private:
-  std::filesystem::path target_, temporary_, lock_path_;
-  int lock_fd_ = -1;
+  /// The lock beside the target: closed, and its file removed, when the run ends or is refused.
+  struct Lock {
+    std::filesystem::path path;
+    int fd = -1;
+    ~Lock();
+  };
+  std::filesystem::path target_, temporary_;
+  Lock lock_;
+  std::optional<StopCleanup> cleanup_;  ///< the temporary and the lock, for a process ended by a signal
   bool committed_ = false;
 };
+
+/// The files of a run folder `dir` its marker lists, relative to it (empty: no marker, or one
+/// without a list).
+std::vector<std::string> listedFiles(const std::filesystem::path& dir);
 
 /// The file every run folder holds, which marks it as one the next run may replace.
 inline constexpr const char* kRunMarker = ".stcontact-run";

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <set>
@@ -41,7 +42,17 @@ Tokens split(std::string_view line) {
 std::string quote(std::string_view text) {
   constexpr std::size_t kMax = 40;
   std::string out = "'";  // appended step by step: GCC 12 warns (-Wrestrict, falsely) on a + chain here
-  out.append(text.substr(0, kMax));
+  // A binary file's bytes would reach the terminal as they are: each byte outside printable ASCII
+  // is shown as \xNN.
+  for (const unsigned char c : text.substr(0, kMax)) {
+    if (c >= 0x20 && c < 0x7f) {
+      out.push_back(static_cast<char>(c));
+      continue;
+    }
+    char code[8];
+    std::snprintf(code, sizeof code, "\\x%02x", c);
+    out.append(code);
+  }
   out.append(text.size() > kMax ? "...'" : "'");
   return out;
 }
@@ -127,8 +138,8 @@ void readMeshFormat(LineReader& r) {
   const bool ascii = t[1] == "0";
   if (version != "4.1" || !ascii)
     r.failFile("unsupported mesh format: version " + version + (ascii ? " ASCII" : " binary") +
-               " (only MSH 4.1 ASCII is read; in Gmsh set TriMesh.MshFileVersion = 4.1 and " +
-               "TriMesh.Binary = 0)");
+               " (only MSH 4.1 ASCII is read; in Gmsh set Mesh.MshFileVersion = 4.1 and " +
+               "Mesh.Binary = 0)");
   r.expectEnd();
 }
 
@@ -294,7 +305,7 @@ long long readElementBlock(LineReader& r, GmshData& data) {
   if (accepted == kAccepted.end())
     r.fail(elementTypeName(type) + " is not supported: the reader takes " +
            (data.dimension == 3 ? "4-node tetrahedra, 3-node triangles, " : "3-node triangles, ") +
-           "2-node lines and points (set TriMesh.ElementOrder = 1 and do not recombine)");
+           "2-node lines and points (set Mesh.ElementOrder = 1 and do not recombine)");
   const auto [expected_dim, per] = accepted->second;
   if (dim != expected_dim)
     r.fail(elementTypeName(type) + " in a block of dimension " + std::to_string(dim));
@@ -353,16 +364,20 @@ GmshData readSections(std::istream& in, const std::string& source_name, int dime
   if (!seen["$Nodes"]) r.failFile("no $Nodes section (truncated file?)");
   if (!seen["$Elements"]) r.failFile("no $Elements section (truncated file?)");
   if (dimension == 2 && data.triangles.empty())
-    r.failFile("no triangles (with TriMesh.SaveAll = 0, Gmsh saves only the elements of physical "
+    r.failFile("no triangles (with Mesh.SaveAll = 0, Gmsh saves only the elements of physical "
                "groups: is there a Physical Surface?)");
   if (dimension == 3 && body_required && data.tets.empty())
-    r.failFile("no tetrahedra (with TriMesh.SaveAll = 0, Gmsh saves only the elements of physical "
+    r.failFile("no tetrahedra (with Mesh.SaveAll = 0, Gmsh saves only the elements of physical "
                "groups: is there a Physical Volume?)");
   return data;
 }
 
 std::ifstream openMeshFile(const std::filesystem::path& file) {
   std::error_code ec;
+  // A device (/dev/zero) or a pipe would be read without end.
+  if (std::filesystem::exists(file, ec) && !std::filesystem::is_directory(file, ec) &&
+      !std::filesystem::is_regular_file(file, ec))
+    throw InputError("mesh file '" + file.string() + "' is not a regular file (a device, a pipe or a socket)");
   std::ifstream in(file);
   if (!in || std::filesystem::is_directory(file, ec)) {
     const std::string message = "cannot open mesh file '" + file.string() + "'";

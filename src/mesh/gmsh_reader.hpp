@@ -1,6 +1,6 @@
 #pragma once
 // Reader for 2D and 3D meshes in Gmsh's MSH 4.1 ASCII format ("4.1 0 8"), the format written by
-// `TriMesh.MshFileVersion = 4.1;` (Gmsh reference manual, §"MSH file format", version 4.1).
+// `Mesh.MshFileVersion = 4.1;` (Gmsh reference manual, §"MSH file format", version 4.1).
 //
 // What is read:
 //  - $MeshFormat: must be 4.1 ASCII; any other version or the binary form is an InputError.

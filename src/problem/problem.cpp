@@ -264,6 +264,15 @@ ContactInterface contactInterfaceOf(const ModelSpec& scene, const Problem& p, co
                     p.body);
 }
 
+// ν within [kPoissonLow, kPoissonHigh] (src/scene/model_spec.hpp), worded as the scene reader words it.
+void requirePoissonInRange(const MaterialSpec& material, const char* key) {
+  if (material.poisson >= kPoissonLow && material.poisson <= kPoissonHigh) return;
+  std::ostringstream msg;
+  msg << "key '" << key << "' = " << material.poisson
+      << " is out of range: must be in [-0.999999, 0.4999995] (1 + ν and 1 - 2ν at least 1e-6)";
+  throw InputError(msg.str());
+}
+
 }  // namespace
 
 BodyMesh buildBodyMesh(const MeshSpec& spec, int dimension) {
@@ -293,6 +302,8 @@ Problem buildProblem(const ModelSpec& scene) {
   const std::string mesh_key = scene.mesh.file.empty() ? "mesh.generator" : "";
   p.body = withContext(scene, mesh_key, [&] { return buildBodyMesh(scene.mesh, p.dimension); });
   p.material = scene.material;
+  requirePoissonInRange(scene.material, "material.poisson");  // a scene built in code skips the reader
+  if (scene.master_material) requirePoissonInRange(*scene.master_material, "master_material.poisson");
   if (!scene.contact.master.empty())  // before the master body's elements are looked up
     withContext(scene, "contact.master", [&] { requireGroup(p.body, scene.contact.master); });
   if (scene.master_material) {

@@ -40,7 +40,8 @@ void requireIncreasingInstants(const std::vector<double>& times) {
       std::ostringstream msg;
       msg << "key 'time.end': instant t_" << k << " = " << times[k]
           << (std::isfinite(times[k]) ? " does not follow t_" + std::to_string(k - 1) : " is not finite")
-          << " (t_k = time.end · k / (time.steps − 1) in double precision): choose a smaller time.end";
+          << " (t_k = time.end · k / (time.steps − 1) in double precision): choose a "
+          << (std::isfinite(times[k]) ? "larger" : "smaller") << " time.end";
       throw InputError(msg.str());
     }
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <initializer_list>
 #include <span>
@@ -76,8 +77,10 @@ Eigen::VectorXd readVector(const TableView& table, std::string_view key, int dim
   const std::vector<double> x = table.requiredNumbers(key);
   if (static_cast<int>(x.size()) != dimension) {
     const std::string path = table.keyPath(key);
+    // Three entries in a scene that says no dimension: most likely a 3D scene without `dimension = 3`.
+    const std::string hint = dimension == 2 && x.size() == 3 ? " (a 3D scene needs 'dimension = 3' at its top)" : "";
     table.errors().fail(path, "key '" + path + "' must have " + std::to_string(dimension) + " entries " +
-                                  (dimension == 3 ? "[x, y, z]" : "[x, y]") + ", got " + std::to_string(x.size()));
+                                  (dimension == 3 ? "[x, y, z]" : "[x, y]") + ", got " + std::to_string(x.size()) + hint);
   }
   return Eigen::Map<const Eigen::VectorXd>(x.data(), dimension);
 }
@@ -90,11 +93,30 @@ int readDimension(const TableView& root) {
 }
 
 /// The scene name becomes a folder of the default output path, so it must be a plain name.
+// The name's characters as the message shows them: control characters (a NUL cut the message and
+// the folder name) as \xNN.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const unsigned char c : text) {
+    if (c >= 0x20 && c != 0x7f) {
+      out += static_cast<char>(c);
+      continue;
+    }
+    char code[8];
+    std::snprintf(code, sizeof code, "\\x%02x", c);
+    out += code;
+  }
+  return out;
+}
+
+// The name names the default output folder (results/<name>/...): a plain file name without
+// control characters, refused before anything is created.
 std::string readName(const TableView& root) {
   std::string name = requiredName(root, "name");
-  if (name.find_first_of("/\\") != std::string::npos || name == "." || name == "..") {
-    root.errors().fail("name", "key 'name' = \"" + name +
-                                   "\" must be a plain file name (no '/', '\\', '.' or '..')");
+  const bool control = std::any_of(name.begin(), name.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; });
+  if (name.find_first_of("/\\") != std::string::npos || name == "." || name == ".." || control) {
+    root.errors().fail("name", "key 'name' = \"" + printable(name) +
+                                   "\" must be a plain file name (no '/', '\\', control character, '.' or '..')");
   }
   return name;
 }
@@ -184,6 +206,10 @@ MeshSpec readMesh(const TableView& root, const std::filesystem::path& source, in
     requireRange(mesh, "mirror_gap", *spec.mirror_gap, *spec.mirror_gap >= 0.0 && std::isfinite(*spec.mirror_gap),
                  "must be >= 0");
   if (hasGenerator) {
+    const std::optional<std::string> named = mesh.optionalString("generator");
+    if (dimension == 2 && named && (*named == "half_ball" || *named == "half_disc_slab"))
+      errors.fail(mesh.keyPath("generator"), "key '" + mesh.keyPath("generator") + "' = \"" + *named +
+                                                 "\" makes a 3D body: a 3D scene needs 'dimension = 3' at its top");
     spec.generator = dimension == 3 ? readKeyword(mesh, "generator", {"half_ball", "half_disc_slab"})
                                     : readKeyword(mesh, "generator", {"half_disc"});
     readGenerator(mesh, spec);
@@ -200,8 +226,9 @@ MaterialSpec readMaterial(const TableView& material) {
   spec.young = material.requiredNumber("young");
   requireRange(material, "young", spec.young, spec.young > 0.0, "must be > 0");
   spec.poisson = material.requiredNumber("poisson");
-  requireRange(material, "poisson", spec.poisson, spec.poisson > -1.0 && spec.poisson < 0.5,
-               "must be in (-1, 0.5)");
+  // kPoissonLow, kPoissonHigh (model_spec.hpp: where double precision resolves the stiffness).
+  requireRange(material, "poisson", spec.poisson, spec.poisson >= kPoissonLow && spec.poisson <= kPoissonHigh,
+               "must be in [-0.999999, 0.4999995] (1 + ν and 1 - 2ν at least 1e-6)");
   return spec;
 }
 
@@ -422,8 +449,13 @@ History periodicHistory(const TableView& entry, History one, const TimeSpec& tim
                                              formatNumber(one.values.front()) + ", not " +
                                              formatNumber(one.values.back()) + ") to repeat");
   const bool whole_period = std::abs(span - period) <= 1e-12 * period;
+  // Only the cycles that begin within the time grid are written out: the grid samples nothing of the
+  // others (after the last cycle its last value, the first, holds), and `cycles` may be any count
+  // (2e9 held 2e9 copies of the period in memory before any size was checked).
+  const double begins = std::floor((time.end - one.times.front()) / period) + 1.0;
+  const int written = static_cast<int>(std::clamp(begins, 1.0, static_cast<double>(cycles)));
   History all;
-  for (int j = 0; j < cycles; ++j)
+  for (int j = 0; j < written; ++j)
     for (std::size_t i = (j > 0 && whole_period) ? 1 : 0; i < one.times.size(); ++i) {
       all.times.push_back(one.times[i] + j * period);
       all.values.push_back(one.values[i]);
@@ -608,6 +640,12 @@ Scene readScene(const std::filesystem::path& file, const std::vector<std::string
   const ErrorReporter errors(file.string());
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) errors.failFile("is a folder, not a scene file");
+  // A device (/dev/zero, /dev/urandom) or a pipe would be read without end into memory.
+  if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
+    errors.failFile("is not a regular file (a device, a pipe or a socket): give a scene file");
+  if (std::filesystem::exists(file, ec) && std::filesystem::file_size(file, ec) > kMaxSceneBytes)
+    errors.failFile("holds " + std::to_string(std::filesystem::file_size(file, ec)) +
+                    " bytes: a scene is a few kB of TOML (give a large mesh as mesh.file)");
   std::ifstream in(file, std::ios::binary);
   if (!in) {
     const std::string message = "cannot open the scene file (missing or unreadable)";

@@ -34,6 +34,10 @@ double energyProduct(const InterfaceHistory& d1, const InterfaceHistory& d2) {
   return 0.5 * (d1.v.cwiseProduct(d2.lambda).sum() + d2.v.cwiseProduct(d1.lambda).sum());
 }
 
+double energyOfDifference(const InterfaceHistory& a, const InterfaceHistory& b) {
+  return ((a.v - b.v).array() * (a.lambda - b.lambda).array()).sum();
+}
+
 ErrorEstimator::ErrorEstimator(int period, int order, double safety, int window, double min_rate)
     : period_(std::max(1, period)),
       order_(std::max(1, order)),
@@ -58,7 +62,8 @@ double ErrorEstimator::extrapolatedError(const Eigen::MatrixXd& gram) const {
   return std::sqrt(std::max(0.0, beta.dot(gram * beta)));
 }
 
-double ErrorEstimator::extend(Sequence& q, const InterfaceHistory& s, double energy) const {
+double ErrorEstimator::extend(Sequence& q, const InterfaceHistory& s, double energy,
+                              std::optional<double> unrelaxed, double stage_error) const {
   double estimate = kInfinity;
   if (q.last) {
     q.differences.push_back({s.v - q.last->v, s.lambda - q.last->lambda});
@@ -70,34 +75,37 @@ double ErrorEstimator::extend(Sequence& q, const InterfaceHistory& s, double ene
     for (Eigen::Index i = 0; i < n; ++i) gram(i, n - 1) = gram(n - 1, i) = energyProduct(q.differences[i], q.differences.back());
     q.gram = std::move(gram);
     const InterfaceHistory& w = q.differences.back();
-    const bool stands_still = w.v.isZero(0.0) && w.lambda.isZero(0.0);
+    // The map's own step: the difference itself, or the relaxed step's unrelaxed one.
+    const bool stands_still = unrelaxed ? *unrelaxed == 0.0 : w.v.isZero(0.0) && w.lambda.isZero(0.0);
     // The energy of a difference of two iterates in equilibrium is Σ δv·δλ ≥ 0; a negative one (beyond
     // round-off) says the iterates are not both in equilibrium, and the products mean nothing.
     const double squared = q.gram(n - 1, n - 1);
     const double scale = std::sqrt(w.v.squaredNorm() * w.lambda.squaredNorm());
     const bool not_an_energy = squared < -kRoundOff * scale;
     const double size = std::sqrt(std::max(0.0, squared));
+    const double step = unrelaxed.value_or(size);
     // A difference larger than every earlier one of the sequence: no contraction (yet).
     const bool growing = n > 1 && q.gram.diagonal().head(n - 1).maxCoeff() <= q.gram(n - 1, n - 1);
     if (stands_still) {
       estimate = 0.0;  // the iteration stands still: a fixed point
     } else if (not_an_energy || size == 0.0) {
       estimate = kInfinity;  // no energy to extrapolate from: the estimate cannot tell
-    } else if (energy > 0.0 && size <= kRoundOff * std::sqrt(energy)) {
-      estimate = size / std::sqrt(energy);  // a fixed point to round-off: the error is not resolved below it
+    } else if (energy > 0.0 && step <= kRoundOff * std::sqrt(energy)) {
+      estimate = step / std::sqrt(energy);  // a fixed point to round-off: the error is not resolved below it
     } else if (n == order_ + 1 && !growing && energy > 0.0) {
       q.factors.push_back(std::max(extrapolatedError(q.gram) / size, smallest_share_));
       if (static_cast<int>(q.factors.size()) > window_) q.factors.pop_front();
       const double factor = *std::max_element(q.factors.begin(), q.factors.end());
-      if (std::isfinite(factor)) estimate = safety_ * factor * size / std::sqrt(energy);
+      if (std::isfinite(factor)) estimate = safety_ * (factor * size + stage_error) / std::sqrt(energy);
     }
   }
   q.last = s;
   return estimate;
 }
 
-double ErrorEstimator::record(const InterfaceHistory& s, double energy) {
-  return extend(sequences_[count_++ % period_], s, energy);
+double ErrorEstimator::record(const InterfaceHistory& s, double energy, std::optional<double> unrelaxed_step,
+                              double stage_error) {
+  return extend(sequences_[count_++ % period_], s, energy, unrelaxed_step, stage_error);
 }
 
 }  // namespace stc

@@ -42,7 +42,18 @@ class ErrorEstimator {
                           double min_rate = 0.1);
 
   /// Records the equilibrated iterate s_n and E(u_n); returns the estimate of its relative error.
-  double record(const InterfaceHistory& s, double energy);
+  /// `unrelaxed_step`: ‖T(s_{n−1}) − s_{n−1}‖_K, the step the iteration's own map T made from the
+  /// last iterate, when the iteration relaxes it (s_n = s_{n−1} + ω (T(s_{n−1}) − s_{n−1}), ω < 1);
+  /// none: the step is the difference of the iterates itself. Whether the iteration stands at a
+  /// fixed point (exactly, or to round-off) is judged on it: a relaxed step of ω = 1e-12 times a
+  /// large one is not round-off.
+  /// `stage_error`: a bound δ, in energy, on how far s_n lies from the iterate of the exact map (a
+  /// controlled global stage's ½ ‖r‖_{k⁻¹}, latin/linear_stage.hpp), which the differences of the
+  /// iterates do not show: it is added to the extrapolated error before the safety factor,
+  /// safety · (f ‖w‖ + δ) / √E. Without it `latin-pgd` at solver.pgd_gap_share = 0.9 stopped at a
+  /// true error 1.4 times its estimate and above the tolerance (docs/reliability.md).
+  double record(const InterfaceHistory& s, double energy, std::optional<double> unrelaxed_step = std::nullopt,
+                double stage_error = 0.0);
   /// Forgets the iterates and differences: the next records start a new sequence (the phase within
   /// the period is kept).
   void reset();
@@ -56,7 +67,8 @@ class ErrorEstimator {
     std::deque<double> factors;                ///< extrapolated error / ‖w_K‖ of the last periods
   };
   /// Appends s to `sequence`; returns its extrapolated error relative to √energy, or +∞.
-  double extend(Sequence& sequence, const InterfaceHistory& s, double energy) const;
+  double extend(Sequence& sequence, const InterfaceHistory& s, double energy, std::optional<double> unrelaxed,
+                double stage_error) const;
   /// ‖x_{K+1} − s‖_K of the extrapolation over the differences held, or +∞.
   double extrapolatedError(const Eigen::MatrixXd& gram) const;
 
@@ -71,5 +83,8 @@ class ErrorEstimator {
 /// ⟨u_a − u_b, u_c − u_d⟩_K of equilibrated iterates, given the differences (δv, δλ) of both pairs:
 /// Σ_k δv_k · δλ'_k.
 double energyProduct(const InterfaceHistory& d1, const InterfaceHistory& d2);
+/// ‖u_a − u_b‖²_K of two equilibrated iterates a and b: Σ_k (v_a − v_b)_k · (λ_a − λ_b)_k, without
+/// forming the difference.
+double energyOfDifference(const InterfaceHistory& a, const InterfaceHistory& b);
 
 }  // namespace stc

@@ -14,6 +14,13 @@ std::string convergedReason(const IterationRecord& last, double tolerance) {
   return reason.str();
 }
 
+std::string fixedPointReason(const IterationRecord& last) {
+  std::ostringstream reason;
+  reason << "a fixed point after " << last.iteration << " iterations: indicator " << last.indicator
+         << " (the global stage returns the local stage's iterate to rounding, which is the solution)";
+  return reason.str();
+}
+
 std::string iterationLimitReason(int max_iterations, double indicator) {
   std::ostringstream reason;
   reason << "iteration limit " << max_iterations << " reached with indicator " << indicator;
@@ -50,7 +57,7 @@ std::optional<double> IterationMonitor::measureError(const Eigen::MatrixXd& lamb
 }
 
 bool IterationMonitor::record(int relaxations, double indicator, const InterfaceHistory& s, int rank,
-                              long sparse_solves) {
+                              long sparse_solves, std::optional<double> unrelaxed_step, double stage_error) {
   const Eigen::MatrixXd& lambda = s.lambda;
   IterationRecord r;
   r.iteration = static_cast<int>(summary_.history.size()) + 1;
@@ -58,7 +65,7 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
   r.indicator = indicator;
   if (!summary_.history.empty() && rank != summary_.history.back().rank) rank_changed_ = r.iteration;
   const std::optional<double> energy = energy_ ? std::optional<double>((*energy_)(s)) : std::nullopt;
-  r.error_estimate = energy ? estimate(s, indicator, *energy) : indicator;
+  r.error_estimate = energy ? estimate(s, indicator, *energy, unrelaxed_step, stage_error) : indicator;
   r.energy = energy;
   r.error = measureError(lambda);
   r.rank = rank;
@@ -67,6 +74,8 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
   summary_.history.push_back(origin_.applied(r));
   if (!std::isfinite(indicator) || !lambda.allFinite())
     return stop(Termination::NumericalIssue, "NaN or Inf in the iterate at iteration " + std::to_string(r.iteration));
+  if (indicator <= kFixedPointIndicator && rule_.stop.tolerance >= kFixedPointError)
+    return stop(Termination::Converged, fixedPointReason(r));
   if (energy)
     if (auto reason = contactFreeSolution(energy_->problem().contact, s, *energy, rule_.stop.tolerance))
       return stop(Termination::Converged, *reason);
@@ -101,10 +110,11 @@ bool IterationMonitor::confirmed(const IterationRecord& r) const {
 
 // The estimate of the relative error; +∞ when the iterate stores no strain energy (a rigid motion:
 // the relative error is 0/0 and the estimate rounding noise; contact_free_certificate.hpp).
-double IterationMonitor::estimate(const InterfaceHistory& s, double indicator, double energy) {
+double IterationMonitor::estimate(const InterfaceHistory& s, double indicator, double energy,
+                                  std::optional<double> unrelaxed_step, double stage_error) {
   const double estimate = rule_.estimate_kind == EstimateKind::CalibratedIndicator
                               ? calibrated_.record(s, indicator, energy)
-                              : estimator_.record(s, energy);
+                              : estimator_.record(s, energy, unrelaxed_step, stage_error);
   return storesNoStrainEnergy(energy_->problem().contact, s, energy) ? INFINITY : estimate;
 }
 

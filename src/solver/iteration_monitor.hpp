@@ -45,6 +45,19 @@ struct StoppingRule {
 /// The reason of a converged solve whose last record is `last` ("error estimate E <= tolerance T after
 /// N iterations (indicator I)").
 std::string convergedReason(const IterationRecord& last, double tolerance);
+/// An indicator η at most this (64 ε) says the iterate is LATIN's fixed point to rounding: the
+/// global stage of its local stage returns it, so it lies in both A_d and Γ and is the solution
+/// (docs/method.md §2). Such a solve is converged, for a tolerance of at least kFixedPointError,
+/// whatever its estimate can tell: a solution that stores no strain energy (nothing moves, a body
+/// lifted rigidly) has no relative error to estimate, and its estimate is +∞ or rounding noise.
+inline constexpr double kFixedPointIndicator = 64.0 * 2.220446049250313e-16;
+/// The true error such a fixed point is certified to: rounding (1e-14 measured on the seed scene),
+/// held to 1e-12, the estimate's own round-off floor (src/solver/error_estimate.cpp). A tolerance
+/// below it is not met by a fixed point to rounding (the solve runs on, honestly, to its cap).
+inline constexpr double kFixedPointError = 1e-12;
+
+/// The reason of a solve stopped at a fixed point (kFixedPointIndicator).
+std::string fixedPointReason(const IterationRecord& last);
 /// The reason of a solve stopped by its iteration cap `max_iterations`, its last indicator `indicator`.
 std::string iterationLimitReason(int max_iterations, double indicator);
 
@@ -58,8 +71,12 @@ class IterationMonitor {
                    const ErrorMeasure* reference = nullptr, IterationCallback callback = {}, RecordOrigin origin = {});
 
   /// Records one iteration whose equilibrated iterate is `s`; returns true when the solve must stop
-  /// (the summary says why).
-  bool record(int relaxations, double indicator, const InterfaceHistory& s, int rank, long sparse_solves);
+  /// (the summary says why). `unrelaxed_step`: the energy norm of the unrelaxed map's step, when the
+  /// iteration relaxes it (ErrorEstimator::record). `stage_error`: a bound, in energy, on the
+  /// distance of `s` from the iterate an exact global stage would have given (a controlled stage's
+  /// ½ ‖r‖_{k⁻¹}), which the extrapolation of the iterates cannot see (ErrorEstimator::record).
+  bool record(int relaxations, double indicator, const InterfaceHistory& s, int rank, long sparse_solves,
+              std::optional<double> unrelaxed_step = std::nullopt, double stage_error = 0.0);
 
   /// Final summary (termination, message, totals); call once at the end.
   SolveSummary finish();
@@ -69,7 +86,9 @@ class IterationMonitor {
 
  private:
   bool stop(Termination termination, std::string reason);
-  double estimate(const InterfaceHistory& s, double indicator, double energy);  ///< by rule_.estimate_kind
+  /// by rule_.estimate_kind
+  double estimate(const InterfaceHistory& s, double indicator, double energy, std::optional<double> unrelaxed_step,
+                  double stage_error);
   std::optional<double> measureError(const Eigen::MatrixXd& lambda);  // and adds its time to measure_s_
   bool confirmed(const IterationRecord& r) const;  // an estimate below the tolerance stands (a map change)
 

@@ -8,6 +8,7 @@
 // docs/method.md §5). Only the sizes must match: a change of mesh or time grid (n_C, m) leaves
 // nothing to reuse.
 #include <Eigen/Core>
+#include <string>
 
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/spacetime/interface_history.hpp"
@@ -19,8 +20,12 @@ bool fitsProblem(const InterfaceHistory& history, const Problem& problem);
 /// True when the interface directions have d n_C rows (pgd/response_basis.hpp).
 bool fitsProblem(const Eigen::MatrixXd& directions, const Problem& problem);
 
-/// Throw std::invalid_argument naming both sizes when the start does not fit (a caller's error).
+/// Throw std::invalid_argument naming both sizes when the start does not fit, or the first value
+/// that is not finite (a caller's error: NaN would reach every output and pass for a solution).
 void requireFits(const InterfaceHistory& start, const Problem& problem);
 void requireFits(const Eigen::MatrixXd& directions, const Problem& problem);
+/// Throws std::invalid_argument "<what> holds <value> at row r, column k: ..." for the first entry
+/// of `values` that is not finite.
+void requireFinite(const Eigen::MatrixXd& values, const std::string& what);
 
 }  // namespace stc

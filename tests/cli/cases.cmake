@@ -108,7 +108,7 @@ set(trunc ${bad}/truncated.toml)
 string(REPLACE ";" "|" small_fields "${small}")
 set(stc_refusals
   "bad_unknown_key|unknown key 'material.youngs'|check|${seed}|--set|material.youngs=1.0"
-  "bad_poisson_half|material.poisson.*\\(-1, 0\\.5\\)|check|${seed}|--set|material.poisson=0.5"
+  "bad_poisson_half|material.poisson.*\\[-0\\.999999, 0\\.4999995\\]|check|${seed}|--set|material.poisson=0.5"
   "bad_missing_boundary|boundary 'rim' is not in the mesh|check|${seed}|--set|contact.boundary=rim"
   "bad_penetrating_node|starts inside the obstacle|check|${seed}|--set|obstacle.point=[0.0, -0.99]"
   "bad_truncated_msh|truncated\\.msh|check|${bad}/truncated.toml"
@@ -132,7 +132,7 @@ set(stc_refusals
   "refuse_nan_in_history|key 'dirichlet\\[0\\]\\.values\\[1\\]' = nan is not a finite number|${seed}|--set|dirichlet[0].values=[0.0, nan, 0.05]"
   "refuse_young_zero|key 'material\\.young' = 0 is out of range: must be > 0|${seed}|--set|material.young=0"
   "refuse_young_negative|key 'material\\.young' = -3000 is out of range: must be > 0|${seed}|--set|material.young=-3000"
-  "refuse_poisson_half|key 'material\\.poisson' = 0\\.5 is out of range: must be in \\(-1, 0\\.5\\)|${seed}|--set|material.poisson=0.5"
+  "refuse_poisson_half|key 'material\\.poisson' = 0\\.5 is out of range: must be in \\[-0\\.999999, 0\\.4999995\\]|${seed}|--set|material.poisson=0.5"
   "refuse_poisson_above_half|key 'material\\.poisson' = 0\\.6 is out of range|${seed}|--set|material.poisson=0.6"
   "refuse_friction_negative|key 'contact\\.friction' = -0\\.1 is out of range: must be >= 0|${seed}|--set|contact.friction=-0.1"
   "refuse_one_step|key 'time\\.steps' = 1 is out of range: must be >= 2|${seed}|--set|time.steps=1"
@@ -276,3 +276,11 @@ add_test(NAME cli.bad_stc_threads
          COMMAND bash ${expect} --absent ${refused}/bad_stc_threads 1 "STC_THREADS = 'two'"
                  env STC_THREADS=two ${cli} solve ${seed} ${small} --out ${refused}/bad_stc_threads)
 set_tests_properties(cli.bad_stc_threads PROPERTIES LABELS cli)
+
+# Trust where users abuse the program (tests/cli/trust_checks.sh): a run folder replaces only what a
+# run wrote, every run stops on a signal also in its set-up, devices and pipes are refused, and the
+# messages name what is wrong.
+add_test(NAME cli.trust_checks
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/trust_checks.sh ${cli} ${PROJECT_SOURCE_DIR}
+                 ${CMAKE_CURRENT_BINARY_DIR}/trust)
+set_tests_properties(cli.trust_checks PROPERTIES LABELS cli TIMEOUT 300)

@@ -4,11 +4,11 @@
 #include <Eigen/Core>
 
 #include "fixtures/seed_scene.hpp"
-#include "stcontact/operators/displacement.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/operators/displacement.hpp"
 
 namespace stc::test {
 

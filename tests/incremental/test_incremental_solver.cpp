@@ -12,13 +12,13 @@
 #include <regex>
 
 #include "fixtures/seed_scene.hpp"
-#include "stcontact/operators/displacement.hpp"
 #include "stcontact/contact/contact_state.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/solver/contact_law_check.hpp"
 
 namespace {

@@ -97,3 +97,45 @@ TEST(RunFolder, TemporariesOfKilledRunsAreRemoved) {
   EXPECT_FALSE(fs::exists(stale));
   EXPECT_THAT(dir.names(), ElementsAre("out"));
 }
+
+// The marker lists the run's files; a file the run did not write, at the top or in a folder of the
+// run, keeps the folder from being replaced, named, and is kept.
+TEST(RunFolder, OnlyTheFilesTheMarkerListsAreReplaced) {
+  const ScratchDir dir;
+  {
+    stc::RunFolder folder(dir / "out");
+    stc::iotest::writePlainFile(folder.path() / "a.csv", "first");
+    fs::create_directories(folder.path() / "vtu");
+    stc::iotest::writePlainFile(folder.path() / "vtu" / "f.vtu", "frame");
+    folder.commit();
+  }
+  EXPECT_THAT(stc::listedFiles(dir / "out"), ElementsAre("a.csv", "vtu/f.vtu"));
+  stc::iotest::writePlainFile(dir / "out" / "vtu" / "mine.vtu", "keep");
+  EXPECT_THAT(refusal(dir / "out"), HasSubstr("holds 'vtu/mine.vtu', which its run did not write"));
+  EXPECT_EQ(stc::iotest::readFile(dir / "out" / "vtu" / "mine.vtu"), "keep");
+  fs::remove(dir / "out" / "vtu" / "mine.vtu");
+  run(dir / "out", "b.csv", "second");  // its own files alone: replaced
+  EXPECT_EQ(stc::iotest::readFile(dir / "out" / "b.csv"), "second");
+  EXPECT_THAT(dir.names(), ElementsAre("out"));  // a refused run left no lock
+}
+
+// A marker without the list (an older version's, or one made by hand) is no licence.
+TEST(RunFolder, AMarkerWithoutItsListIsRefused) {
+  const ScratchDir dir;
+  fs::create_directories(dir / "old");
+  stc::iotest::writePlainFile(dir / "old" / stc::kRunMarker, "written by stcontact; the next run replaces it\n");
+  stc::iotest::writePlainFile(dir / "old" / "summary.json", "{}");
+  EXPECT_THAT(refusal(dir / "old"), HasSubstr("holds a run marker without the list of the run's files"));
+  EXPECT_TRUE(fs::exists(dir / "old" / "summary.json"));
+  EXPECT_THAT(dir.names(), ElementsAre("old"));
+}
+
+// A symbolic link given as the target is followed: the folder it names gets the run, the link stays.
+TEST(RunFolder, ASymbolicLinkIsFollowedNotReplaced) {
+  const ScratchDir dir;
+  fs::create_directories(dir / "real");
+  fs::create_directory_symlink(dir / "real", dir / "link");
+  run(dir / "link", "a.csv", "through the link");
+  EXPECT_TRUE(fs::is_symlink(dir / "link"));
+  EXPECT_EQ(stc::iotest::readFile(dir / "real" / "a.csv"), "through the link");
+}

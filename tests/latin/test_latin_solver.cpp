@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include "fixtures/seed_scene.hpp"
-#include "stcontact/operators/displacement.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/error_reference.hpp"
@@ -12,6 +11,7 @@
 #include "stcontact/latin/indicator.hpp"
 #include "stcontact/latin/latin_solver.hpp"
 #include "stcontact/latin/local_stage.hpp"
+#include "stcontact/operators/displacement.hpp"
 
 namespace {
 

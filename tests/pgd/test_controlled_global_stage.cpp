@@ -12,13 +12,13 @@
 #include <vector>
 
 #include "fixtures/seed_scene.hpp"
-#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
 #include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/indicator.hpp"
 #include "stcontact/latin/local_stage.hpp"
 #include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/pgd/separated_history.hpp"
 #include "stcontact/problem/time_subgrid.hpp"

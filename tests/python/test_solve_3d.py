@@ -26,6 +26,7 @@ def test_solve_has_three_rows_per_contact_node():
     assert result.interface_forces.shape == (3 * n_c, m)
     assert result.tangential_forces_2.shape == (n_c, m)
     np.testing.assert_array_equal(result.tangential_forces_2, result.interface_forces[2::3])
+    assert "%d contact nodes x %d instants" % (n_c, m) in repr(result)  # not 3 n_c / 2
     # The scene is symmetric about y = 0 and slides along x: no resultant along tau_2 = e_y.
     assert np.abs(result.reactions["tangential_force_2"]).max() < 1e-10 * result.reactions["normal_force"].max()
     # On the plane z = const the global resultant is (tangential, tangential_2, normal).

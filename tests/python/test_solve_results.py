@@ -149,6 +149,21 @@ def test_a_warm_start_of_other_sizes_is_refused(small_scene, latin):
         stcontact.solve(other, "latin", start=latin)
 
 
+def test_a_warm_start_with_nan_is_refused_naming_the_array(small_scene):
+    # A result's arrays edited in place: NaN reached contact.csv and the true error read 0.0.
+    for name in ["interface_forces", "interface_displacements", "interface_directions"]:
+        start = stcontact.solve(small_scene, "latin-pgd", max_iterations=3, reference=False)
+        getattr(start, name)[0, 0] = np.nan
+        with pytest.raises(ValueError, match=r"start\.%s holds nan at row 0, column 0" % name):
+            stcontact.solve(small_scene, "fas-apriori", start=start)
+
+
+def test_a_callback_returning_nan_is_refused(small_scene):
+    # NaN is true to Python: the solve went on as if the callback had said so.
+    with pytest.raises(ValueError, match="callback returned nan"):
+        stcontact.solve(small_scene, "latin", max_iterations=5, callback=lambda record: float("nan"))
+
+
 def test_no_reference_means_no_true_error(small_scene):
     result = stcontact.solve(small_scene, "latin", max_iterations=3, reference=False)
     assert result.error is None and np.isnan(result.history["error"]).all()

@@ -97,7 +97,7 @@ TEST(SceneOverrides, UnknownSectionIsAnErrorThatMentionsSet) {
 
 TEST(SceneOverrides, OverriddenValueIsValidatedAndMentionsSet) {
   EXPECT_EQ(errorOf({"material.poisson=0.5"}),
-            "key 'material.poisson' = 0.5 is out of range: must be in (-1, 0.5) "
+            "key 'material.poisson' = 0.5 is out of range: must be in [-0.999999, 0.4999995] (1 + ν and 1 - 2ν at least 1e-6) "
             "(from --set material.poisson=0.5)");
   EXPECT_THAT(errorOf({"time.steps=2.5"}),
               StartsWith("key 'time.steps' must be an integer, got a float (from --set"));

@@ -5,12 +5,12 @@
 #include <cmath>
 
 #include "fixtures/seed_scene.hpp"
-#include "stcontact/operators/displacement.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/error_reference.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/local_stage.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "stcontact/solver/equilibrium_energy.hpp"
 #include "stcontact/solver/error_estimate.hpp"
 

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <iostream>
 
-#include "stcontact/operators/displacement.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/error_reference.hpp"
+#include "stcontact/operators/displacement.hpp"
 #include "validation/validation_support.hpp"
 
 namespace stc::validation {
