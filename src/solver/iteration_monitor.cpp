@@ -74,11 +74,11 @@ bool IterationMonitor::record(int relaxations, double indicator, const Interface
   summary_.history.push_back(origin_.applied(r));
   if (!std::isfinite(indicator) || !lambda.allFinite())
     return stop(Termination::NumericalIssue, "NaN or Inf in the iterate at iteration " + std::to_string(r.iteration));
-  if (indicator <= kFixedPointIndicator && rule_.stop.tolerance >= kFixedPointError)
-    return stop(Termination::Converged, fixedPointReason(r));
   if (energy)
     if (auto reason = contactFreeSolution(energy_->problem().contact, s, *energy, rule_.stop.tolerance))
       return stop(Termination::Converged, *reason);
+  if (indicator <= kFixedPointIndicator && rule_.stop.tolerance >= kFixedPointError)
+    return stop(Termination::Converged, fixedPointReason(r));
   if (r.error_estimate <= rule_.stop.tolerance && confirmed(r))
     return stop(Termination::Converged, convergedReason(r, rule_.stop.tolerance));
   if (r.iteration == 1 || indicator < 0.99 * best_indicator_) {

@@ -529,7 +529,8 @@ TEST(SceneReaderErrors, ZeroNormalIsRejected) {
 
 TEST(SceneReaderErrors, PointWithThreeEntriesIsRejected) {
   EXPECT_EQ(errorOf(seedWith("point = [0.0, -1.01]", "point = [0.0, -1.01, 0.0]")),
-            "hemicylinder.toml: key 'obstacle.point' must have 2 entries [x, y], got 3");
+            "hemicylinder.toml: key 'obstacle.point' must have 2 entries [x, y], got 3 (a 3D scene needs "
+            "'dimension = 3' at its top)");
 }
 
 // A cylinder obstacle (the 2D section of a ball) in place of the seed's plane.
@@ -551,7 +552,8 @@ TEST(SceneReaderErrors, BadCurvedObstaclesAreRejectedWithTheKey) {
   EXPECT_EQ(errorOf(seedOnCylinder("centre = [0.0, -2.01]\nradius = -1.0")),
             "hemicylinder.toml: key 'obstacle.radius' = -1 is out of range: must be > 0");
   EXPECT_EQ(errorOf(seedOnCylinder("centre = [0.0, -2.01, 0.0]\nradius = 1.0")),
-            "hemicylinder.toml: key 'obstacle.centre' must have 2 entries [x, y], got 3");
+            "hemicylinder.toml: key 'obstacle.centre' must have 2 entries [x, y], got 3 (a 3D scene needs "
+            "'dimension = 3' at its top)");
   EXPECT_EQ(errorOf(seedOnCylinder("centre = [0.0, -2.01]\nradius = 1.0\nside = \"above\"")),
             "hemicylinder.toml: key 'obstacle.side' = \"above\" is not one of \"outside\", \"inside\"");
   EXPECT_EQ(errorOf(seedOnCylinder("centre = [0.0, -2.01]\nradius = 1.0\nnormal = [0.0, 1.0]")),
