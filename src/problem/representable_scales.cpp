@@ -34,7 +34,17 @@ void requireBelowLargest(const std::string& key, const std::string& what, double
   if (!(value <= kLargestScale)) refuse(key, what, value, "above 1e150");
 }
 
+// The instants, increasing and finite, and the time span within [kSmallestScale, kLargestScale]:
+// below it the instants are subnormal numbers whose ratios (the histories' interpolation) have lost
+// their digits (time.end = 1e-320 gave a run without contact, exit 0).
 void requireIncreasingInstants(const std::vector<double>& times) {
+  const double span = times.empty() ? 0.0 : times.back() - times.front();
+  if (times.size() > 1 && std::isfinite(span) && !(span >= kSmallestScale && span <= kLargestScale)) {
+    std::ostringstream msg;
+    msg << "key 'time.end': the time span " << span << " is outside [1e-150, 1e150], where a double keeps the "
+        << "ratios of its instants: choose a " << (span < kSmallestScale ? "larger" : "smaller") << " time.end";
+    throw InputError(msg.str());
+  }
   for (std::size_t k = 0; k < times.size(); ++k)
     if (!std::isfinite(times[k]) || (k > 0 && !(times[k] > times[k - 1]))) {
       std::ostringstream msg;

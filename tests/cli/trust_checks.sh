@@ -94,6 +94,7 @@ refuses "unknown command" "unknown command 'frobnicate' \\(the commands: check, 
 refuses "--solvers with a trailing comma" "--solvers: empty name in 'latin,'" \
   "$program" compare "$seed" --solvers 'latin,' --out "$work/trailing"
 refuses "time.end too small" "choose a larger time.end" "$program" check "$seed" --set time.end=5e-324
+refuses "subnormal time.end" "choose a larger time.end" "$program" check "$seed" --set time.end=1e-320
 sed '/^dimension = 3/d; s|"../meshes/|"'"$source"'/examples/meshes/|' "$source/examples/scenes/half_ball_graded.toml" \
   > "$work/no_dimension.toml"
 refuses "3D scene without dimension" "a 3D scene needs 'dimension = 3'" "$program" check "$work/no_dimension.toml"

@@ -47,6 +47,15 @@ TEST(RepresentableScales, InstantsThatOverflowAreRefused) {
               HasSubstr("key 'time.end': instant t_2 = inf is not finite"));
 }
 
+TEST(RepresentableScales, SubnormalInstantsAreRefused) {
+  // time.end = 1e-320: instants 5e-323 apart, subnormal, whose ratios keep one or two digits (a run
+  // without contact, exit 0, before the check).
+  EXPECT_THAT(refusal([](stc::Scene& s) { s.time.end = 1e-320; }),
+              HasSubstr("key 'time.end': the time span 9.99989e-321 is outside [1e-150, 1e150]"));
+  EXPECT_THAT(refusal([](stc::Scene& s) { s.time.end = 1e-320; }), HasSubstr("choose a larger time.end"));
+  EXPECT_EQ(refusal([](stc::Scene& s) { s.time.end = 1e-140; }), "");
+}
+
 TEST(RepresentableScales, HugeDisplacementsForcesAndGapsAreRefused) {
   EXPECT_THAT(refusal([](stc::Scene& s) { s.dirichlet[1].history.values = {0.0, 1e308, 1e308}; }),
               HasSubstr("key 'dirichlet[1].values': the largest prescribed displacement is 1e+308, above 1e150"));
