@@ -1,4 +1,4 @@
-// Why SpdFactor is a simplicial CHOLMOD factor (src/linalg/spd_factor.cpp, docs/threads.md):
+// Why CholmodFactor is a simplicial CHOLMOD factor (src/linalg/spd_factor.cpp, docs/threads.md):
 //   Solve/<mode>/<arc_nodes>         201 right-hand sides of the global-stage operator K + BᵀkB in
 //                                    chunks of 16, supernodal (mode 0, the BLAS) or simplicial LLᵀ
 //                                    (mode 1, plain C); the CPU time column is this thread's
@@ -8,7 +8,7 @@
 //                                    serial one (Debian's serial OpenBLAS is not safe for
 //                                    concurrent calls: the supernodal rows are not 0)
 //   Solve3d/<mode>/<divisions>/<chunk>  288 right-hand sides of the half-ball's K + BᵀkB (3D) in
-//                                    chunks of <chunk>, one thread: why SpdFactor keeps a 3D factor
+//                                    chunks of <chunk>, one thread: why CholmodFactor keeps a 3D factor
 //                                    supernodal and solves it on one thread (src/linalg/spd_factor.cpp)
 //   cmake --build build --target bench_cholmod_modes && build/bench/bench_cholmod_modes
 #include <benchmark/benchmark.h>

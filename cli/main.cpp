@@ -21,6 +21,7 @@
 #include "stcontact/core/threads.hpp"
 #include "stcontact/io/output_error.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/version.hpp"
 
 namespace {
@@ -109,6 +110,9 @@ int main(int argc, char** argv) {
     return fail(1, e.what());
   } catch (const stc::OutputError& e) {
     return fail(1, e.what());
+  } catch (const stc::LinearSolveFailure& e) {
+    // An iterative backend's solve outside a strategy (the frames of the writer): no output.
+    return fail(2, std::string("numerical issue: ") + e.what());
   } catch (const std::bad_alloc&) {
     // The scene's estimate fit (src/problem/size_estimate.hpp), the run needed more: say so, as bad
     // input (its sizes), not as an internal failure.

@@ -73,7 +73,8 @@ int runSolve(const SolveArgs& args) {
   RunFolder folder(out);                         // checked and locked before the solve, written after
 
   TerminalProgress progress(args.quiet);
-  PreparedOperators operators;  // each operator prepared once: the reference, the solve, the frames
+  // each operator prepared once, by the scene's backend: the reference, the solve, the frames
+  PreparedOperators operators(scene.solver.linearAtTolerance());
   std::unique_ptr<ErrorReference> reference;
   if (scene.solver.strategy != Strategy::Incremental && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes)
     reference = referenceOrWarning(problem, progress, operators);

@@ -46,3 +46,23 @@ if(STC_BUILD_BENCHMARKS)
   find_package(benchmark QUIET)
   stc_require(benchmark_FOUND libbenchmark-dev "Google Benchmark")
 endif()
+
+# Optional: the PETSc backends of the linear-solver seam (src/linalg/backends/petsc/: MUMPS's
+# Cholesky, CG + GAMG), when PETSc (Debian: libpetsc-real-dev, which sets the /usr/lib/petsc link
+# pkg-config reads) and an MPI (Open MPI) are found. Without them the build has the cholmod backend
+# alone and says so; a scene asking for another backend is refused by name.
+option(STC_WITH_PETSC "Build the PETSc backends (mumps, cg-gamg) when PETSc is found" ON)
+set(STC_HAVE_PETSC OFF)
+if(STC_WITH_PETSC)
+  find_package(PkgConfig QUIET)
+  if(PkgConfig_FOUND)
+    pkg_check_modules(PETSC QUIET IMPORTED_TARGET PETSc)
+  endif()
+  find_package(MPI QUIET COMPONENTS CXX)  # mpi.h, through the C++ compiler
+  if(PETSC_FOUND AND MPI_CXX_FOUND)
+    set(STC_HAVE_PETSC ON)
+    message(STATUS "PETSc ${PETSC_VERSION} with MPI ${MPI_CXX_VERSION}: linear backends cholmod, mumps, cg-gamg")
+  else()
+    message(STATUS "PETSc or MPI not found: linear backend cholmod only (libpetsc-real-dev adds mumps, cg-gamg)")
+  endif()
+endif()

@@ -22,6 +22,8 @@ function(stc_stage_include_root)
   endforeach()
   configure_file(${PROJECT_SOURCE_DIR}/cmake/version.hpp.in ${STC_INCLUDE_ROOT}/stcontact/version.hpp @ONLY)
   install(FILES ${STC_INCLUDE_ROOT}/stcontact/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/stcontact)
+  configure_file(${PROJECT_SOURCE_DIR}/cmake/build_config.hpp.in ${STC_INCLUDE_ROOT}/stcontact/build_config.hpp)
+  install(FILES ${STC_INCLUDE_ROOT}/stcontact/build_config.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/stcontact)
 endfunction()
 
 # stc_add_library(NAME DEPS ... [EXCLUDE subfolder...]): one library per folder (src/ for the core,

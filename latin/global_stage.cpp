@@ -33,14 +33,14 @@ void GlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s, Eigen:
 
 // Writes only the block's columns of s and u: blocks never share a column.
 void GlobalStage::solveBlock(int k0, int count, const InterfaceHistory& hat, InterfaceHistory& s,
-                             Eigen::MatrixXd* u_out, SpdFactor::Workspace& workspace) const {
+                             Eigen::MatrixXd* u_out, SpdSolver::Workspace& workspace) const {
   const auto& B = problem_.contact.B;
   const Eigen::VectorXd& k = problem_.contact.search_direction;
   const auto v_hat = hat.v.middleCols(k0, count);
   const auto l_hat = hat.lambda.middleCols(k0, count);
   Eigen::MatrixXd rhs = problem_.loadBlock(k0, count);
   rhs.noalias() += B.transpose() * (l_hat + k.asDiagonal() * v_hat);
-  const Eigen::MatrixXd u = operator_->factor.solve(rhs, workspace);
+  const Eigen::MatrixXd u = operator_->factor->solve(rhs, workspace);
   s.v.middleCols(k0, count).noalias() = B_rows_ * u;
   s.lambda.middleCols(k0, count) = l_hat - k.asDiagonal() * (s.v.middleCols(k0, count) - v_hat);
   if (u_out) u_out->middleCols(k0, count) = u;

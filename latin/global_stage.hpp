@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "stcontact/latin/linear_stage.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/options/latin_options.hpp"
 #include "stcontact/problem/problem.hpp"
@@ -38,19 +38,19 @@ class GlobalStage : public LinearStage {
 
   /// The operator K_ff + Bᵀ k B and its factor (the FAS coarse space and PGD use them).
   const Eigen::SparseMatrix<double>& matrix() const { return operator_->matrix; }
-  const SpdFactor& factor() const override { return operator_->factor; }
+  const SpdSolver& factor() const override { return *operator_->factor; }
   long sparseSolves() const override { return sparse_solves_; }
 
  private:
   /// One block of instants k0 … k0 + count − 1, solved with `workspace`.
   void solveBlock(int k0, int count, const InterfaceHistory& hat, InterfaceHistory& s, Eigen::MatrixXd* u,
-                  SpdFactor::Workspace& workspace) const;
+                  SpdSolver::Workspace& workspace) const;
 
   const Problem& problem_;
   std::shared_ptr<const SearchOperator> operator_;
   Eigen::SparseMatrix<double, Eigen::RowMajor> B_rows_;  ///< B by rows: v = B u 4x faster (measured)
   int block_size_;
-  std::vector<SpdFactor::Workspace> workspaces_;  ///< one per thread, grown on demand
+  std::vector<SpdSolver::Workspace> workspaces_;  ///< one per thread, grown on demand
   long sparse_solves_ = 0;
   bool keep_ = false;
   Eigen::MatrixXd u_;

@@ -7,7 +7,7 @@
 //     of the last iteration's gap ‖s − ŝ‖ (docs/method.md §5).
 // Both return an s that is exactly in equilibrium (K_ff u = f + Bᵀ λ): the error estimate and the
 // true error of src/solver/ are exact functions of it.
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc::latin {
@@ -28,7 +28,7 @@ class LinearStage {
   /// directions), which the error estimate must allow for (latin_solver.cpp).
   virtual bool changesItsMap() const { return false; }
   /// The factor of A = K_ff + Bᵀ k B.
-  virtual const SpdFactor& factor() const = 0;
+  virtual const SpdSolver& factor() const = 0;
   /// ‖r‖_{k⁻¹} of the last solve: how far its iterate may lie from the exact global stage's (a
   /// controlled stage's projection error; 0 for the exact stage). Both are in equilibrium and differ
   /// by δs with ‖δs‖²_K = Σ δv·δλ ≤ ‖r‖²_{k⁻¹} / 4 (pgd/controlled_global_stage.hpp), which the error

@@ -41,7 +41,7 @@ ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledS
       options_(options),
       // the interface's dofs last at any size (header)
       operator_(operators.searchOperator(problem, {dofsReadBy(problem.contact.B), /*min_work=*/0.0})),
-      basis_(problem, operator_->factor) {
+      basis_(problem, *operator_->factor) {
   options_.validate();
 }
 

@@ -32,7 +32,7 @@ namespace stc::pgd {
 class ControlledGlobalStage : public latin::LinearStage {
  public:
   /// Factorises A = K_ff + Bᵀ k B (k = problem.contact.search_direction), the interface's dofs
-  /// ordered last wherever SpdFactor's bounds on the dense trailing block allow (then no solve per
+  /// ordered last wherever SpdSolver's bounds on the dense trailing block allow (then no solve per
   /// direction, response_basis.hpp, and the stage spans every row from its full_share on), and
   /// computes the load responses. At any size, not from a work as the incremental solver's factor:
   /// that one saves the |J| solves of one Delassus operator, this one a solve for every direction
@@ -47,7 +47,7 @@ class ControlledGlobalStage : public latin::LinearStage {
   long sparseSolves() const override { return basis_.sparseSolves(); }
   int rank() const override { return basis_.size(); }
   bool changesItsMap() const override { return true; }
-  const SpdFactor& factor() const override { return operator_->factor; }
+  const SpdSolver& factor() const override { return *operator_->factor; }
 
   /// Starts the directions from `directions` (d n_C × p, e.g. a neighbouring problem's: a warm
   /// start), k⁻¹-orthonormalised in order, dependent ones dropped. Returns the number kept.

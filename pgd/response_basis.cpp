@@ -14,7 +14,7 @@ constexpr double kReorthogonalise = 0.70710678118654752;  ///< 1/√2: a second 
 
 }  // namespace
 
-ResponseBasis::ResponseBasis(const Problem& problem, const SpdFactor& factor)
+ResponseBasis::ResponseBasis(const Problem& problem, const SpdSolver& factor)
     : problem_(problem),
       factor_(factor),
       Z_(problem.contact.rows()),

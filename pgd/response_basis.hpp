@@ -10,7 +10,7 @@
 //   U_Fᵀ A U_F = U_Fᵀ F,   U_Fᵀ A X = U_Fᵀ Bᵀ Z = V_Fᵀ Z,   Xᵀ A X = Xᵀ Bᵀ Z = Tᵀ Z.
 // Nothing here is n_free × m: memory O((q + p) n_free + (q + p + m) n_C). Columns are appended to
 // storage with spare capacity (pgd/column_store.hpp): the accessors are views.
-// When the factor ordered the interface's dofs last (SpdFactor::condenses B), the operator
+// When the factor ordered the interface's dofs last (SpdSolver::condenses B), the operator
 // D = B A⁻¹ Bᵀ comes from its trailing block with no solve, and a new direction's trace is T = D Z:
 // the iteration then makes no sparse solve, and the responses X are solved only when asked for
 // (responses(): the spatial modes of a verification), the displacements of other rows through the
@@ -18,7 +18,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/pgd/column_store.hpp"
 #include "stcontact/pgd/energy_factor.hpp"
 #include "stcontact/problem/problem.hpp"
@@ -29,7 +29,7 @@ class ResponseBasis {
  public:
   using View = ColumnStore::View;
   /// `factor` factorises A = K_ff + Bᵀ k B, k = problem.contact.search_direction.
-  ResponseBasis(const Problem& problem, const SpdFactor& factor);
+  ResponseBasis(const Problem& problem, const SpdSolver& factor);
 
   int size() const { return static_cast<int>(Z_.cols()); }       ///< p
   int maxSize() const { return static_cast<int>(Z_.rows()); }    ///< d n_C: Z then spans every w
@@ -57,7 +57,7 @@ class ResponseBasis {
   /// append's directions without their responses, which stay pending until solvePending(): the
   /// enrichment passes of one separated stage append a few directions each and solve them in one
   /// block, since a supernodal (3D) solve costs less per column the more columns it takes at once
-  /// (src/linalg/spd_factor.cpp). Until then responses(), traces() and energyFactor() lack them.
+  /// (src/linalg/backends/cholmod_factor.cpp). Until then responses(), traces() and energyFactor() lack them.
   int appendDirections(const Eigen::MatrixXd& candidates, double drop = 1e-8);
   /// Completes the directions to span every interface row (size() becomes maxSize()): the pending
   /// ones solved, then an orthonormal complement of Zs appended (linalg::orthonormalComplement),
@@ -104,14 +104,14 @@ class ResponseBasis {
   Eigen::MatrixXd liftedInterface(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& M) const;
 
   const Problem& problem_;
-  const SpdFactor& factor_;
+  const SpdSolver& factor_;
   Eigen::VectorXd sqrt_k_, inv_sqrt_k_;
   Eigen::MatrixXd condensed_;  ///< D = B A⁻¹ Bᵀ from the factor's trailing block, or empty
   ColumnStore Z_, Zs_, T_;
   mutable ColumnStore X_;      ///< behind Z_ when D gives the traces: solved by responses()
   Eigen::MatrixXd UF_, VF_, G_, v0_;
   EnergyFactor energy_;
-  mutable std::vector<SpdFactor::Workspace> workspaces_;
+  mutable std::vector<SpdSolver::Workspace> workspaces_;
   mutable long sparse_solves_ = 0;
   Eigen::Index pending_ = 0;
 };

@@ -181,7 +181,8 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   std::optional<RunFolder> folder;  // checked and locked before the solve, written whole after it
   if (options.out) folder.emplace(*options.out);
   std::optional<InterfaceHistory> start;
-  PreparedOperators operators;  // each operator prepared once: the reference, the solve, the frames
+  // each operator prepared once, by the scene's backend: the reference, the solve, the frames
+  PreparedOperators operators(scene.solver.linearAtTolerance());
   SolveInputs inputs;
   inputs.spatial_modes = options.spatial_modes;
   inputs.operators = &operators;

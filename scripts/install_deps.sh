@@ -10,6 +10,8 @@
 # it bundles), setuptools and wheel: `pip install .` offline (test python.pip_install). zlib
 # compresses the .vtu frames; python3-meshio reads them back in the tests, as a reader that shares
 # no code with the writer. python3-gmsh: the mesh scripts of examples/meshes/ (docs/meshing.md).
+# PETSc (with MUMPS, GAMG, hypre) and Open MPI: the linear backends mumps and cg-gamg
+# (docs/linear_solvers.md); a build without them has the cholmod backend alone.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
@@ -19,5 +21,6 @@ apt-get install -y -qq --no-install-recommends \
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev zlib1g-dev \
   gnuplot-nox clang-14 libclang-rt-14-dev llvm-14 \
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-meshio \
-  python3-venv python3-setuptools python3-wheel python3-gmsh >/dev/null
+  python3-venv python3-setuptools python3-wheel python3-gmsh \
+  libpetsc-real3.18-dev openmpi-bin >/dev/null
 echo "dependencies installed"

@@ -6,6 +6,7 @@
 #include "stcontact/fas/apriori/solve_fas_apriori.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/pgd/latin_pgd_solver.hpp"
 
 namespace stc {
@@ -24,9 +25,26 @@ const std::array<StrategyRegistration, kStrategies.size()>& strategyRegistry() {
   return registry;
 }
 
+namespace {
+// A run whose linear solve failed (an iterative backend that did not reach its tolerance): a
+// numerical issue that names the backend and its reason, with zero fields (never a wrong answer).
+SolveResult linearSolveFailed(Strategy strategy, const Problem& problem, const LinearSolveFailure& failure) {
+  SolveResult out;
+  out.interface = InterfaceHistory::zeros(problem.contact, problem.numSteps());
+  out.summary.solver = std::string(nameOf(strategy));
+  out.summary.termination = Termination::NumericalIssue;
+  out.summary.reason = out.summary.message = failure.what();
+  return out;
+}
+}  // namespace
+
 SolveResult solve(Strategy strategy, const Problem& problem, const SolverSpec& spec, const SolveInputs& inputs) {
   for (const StrategyRegistration& r : strategyRegistry())
-    if (r.strategy == strategy) return r.solve(problem, spec, inputs);
+    if (r.strategy == strategy) try {
+        return r.solve(problem, spec, inputs);
+      } catch (const LinearSolveFailure& failure) {
+        return linearSolveFailed(strategy, problem, failure);
+      }
   throw std::logic_error("strategy without a registration: " + std::string(nameOf(strategy)));
 }
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 
 namespace stc {
 namespace {
@@ -27,7 +28,7 @@ ReferenceSolution computeReference(const Problem& problem, ProgressReporter* pro
   out.solve_s = secondsSince(start);
   if (!ref.summary.converged())
     throw std::runtime_error("the incremental reference did not converge: " + ref.summary.message);
-  std::shared_ptr<const SpdFactor> factor = prepared.stiffnessFree(problem);
+  std::shared_ptr<const SpdSolver> factor = prepared.stiffnessFree(problem);
   out.factor_nonzeros = factor->factorNonZeros();
   out.reference = std::make_unique<ErrorReference>(problem, std::move(factor), std::move(ref.interface.lambda));
   out.total_s = secondsSince(start);
@@ -38,12 +39,17 @@ ReferenceSolution computeReference(const Problem& problem, ProgressReporter* pro
 // goes on without a true error, and the warning says why.
 std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
                                                std::string& warning, PreparedOperators& operators) {
-  SolveResult ref = solveIncremental(problem, {}, {.callback = callback, .operators = &operators});
-  if (!ref.summary.converged()) {
-    warning = "no true error: the incremental reference did not converge (" + ref.summary.message + ")";
+  try {
+    SolveResult ref = solveIncremental(problem, {}, {.callback = callback, .operators = &operators});
+    if (!ref.summary.converged()) {
+      warning = "no true error: the incremental reference did not converge (" + ref.summary.message + ")";
+      return nullptr;
+    }
+    return std::make_unique<ErrorReference>(problem, operators.stiffnessFree(problem), std::move(ref.interface.lambda));
+  } catch (const LinearSolveFailure& failure) {  // an iterative backend that did not reach its tolerance
+    warning = std::string("no true error: the incremental reference's linear solve failed (") + failure.what() + ")";
     return nullptr;
   }
-  return std::make_unique<ErrorReference>(problem, operators.stiffnessFree(problem), std::move(ref.interface.lambda));
 }
 
 }  // namespace stc

@@ -20,7 +20,7 @@ struct ReferenceSolution {
   std::unique_ptr<ErrorReference> reference;
   double solve_s = 0.0;  ///< the incremental solve alone
   double total_s = 0.0;  ///< with the error measure's set-up (its reference energy)
-  double factor_nonzeros = 0.0;  ///< entries of the Cholesky factor of K_ff (SpdFactor::factorNonZeros)
+  double factor_nonzeros = 0.0;  ///< entries of the Cholesky factor of K_ff (SpdSolver::factorNonZeros)
 };
 
 /// A study's reference: solves `problem` with the incremental solver and builds the true-error

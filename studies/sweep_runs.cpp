@@ -64,7 +64,7 @@ void writeSolution(const std::filesystem::path& dir, const Problem& problem, con
 SweepPoint WarmChain::solveValue(const Scene& scene, const SweepRange& range, std::size_t index,
                                  const SweepSettings& settings) {
   const Problem problem = buildProblem(scene);  // K + BᵀkB and its factor may depend on the value
-  PreparedOperators operators;
+  PreparedOperators operators(scene.solver.linearAtTolerance());
   const ReferenceSolution reference = computeReference(problem, settings.progress, &operators);
   const std::string label = range.override(index) + " (" + std::to_string(index + 1) + "/" +
                             std::to_string(range.values.size()) + ") ";

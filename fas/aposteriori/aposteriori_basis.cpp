@@ -7,7 +7,7 @@
 
 namespace stc::fas {
 
-Eigen::MatrixXd aposterioriModes(const Problem& problem, const SpdFactor& stiffness_free,
+Eigen::MatrixXd aposterioriModes(const Problem& problem, const SpdSolver& stiffness_free,
                                  const Eigen::MatrixXd& converged_lambda, int count) {
   const Eigen::MatrixXd U = fullDisplacements(problem, stiffness_free, converged_lambda);
   const pgd::SpaceTimeSvd svd = pgd::energySvd(U, problem.stiffness);

@@ -5,14 +5,14 @@
 // yardstick the a priori basis is measured against.
 #include <Eigen/Core>
 
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/problem/problem.hpp"
 
 namespace stc::fas {
 
 /// n_free × count: rows `problem.free_dofs` of the first `count` energy-SVD spatial modes of the
 /// full displacement history rebuilt from `converged_lambda` (d n_C × m).
-Eigen::MatrixXd aposterioriModes(const Problem& problem, const SpdFactor& stiffness_free,
+Eigen::MatrixXd aposterioriModes(const Problem& problem, const SpdSolver& stiffness_free,
                                  const Eigen::MatrixXd& converged_lambda, int count);
 
 }  // namespace stc::fas

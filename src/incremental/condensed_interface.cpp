@@ -4,7 +4,7 @@
 
 namespace stc {
 
-CondensedInterface CondensedInterface::build(const Problem& problem, const SpdFactor& stiffness_free) {
+CondensedInterface CondensedInterface::build(const Problem& problem, const SpdSolver& stiffness_free) {
   const auto& B = problem.contact.B;
   CondensedInterface c;
   const Eigen::MatrixXd Bt = Eigen::MatrixXd(B.transpose());

@@ -5,7 +5,7 @@
 // true errors on the interface alone (δuᵀ K δu = δλᵀ W δλ when K δu = Bᵀ δλ).
 #include <Eigen/Core>
 
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/problem/problem.hpp"
 
 namespace stc {
@@ -15,7 +15,7 @@ struct CondensedInterface {
   Eigen::MatrixXd free_response;  ///< v_0 (d n_C × m)
   int sparse_solves = 0;          ///< right-hand sides it took (d n_C + number of load terms)
 
-  static CondensedInterface build(const Problem& problem, const SpdFactor& stiffness_free);
+  static CondensedInterface build(const Problem& problem, const SpdSolver& stiffness_free);
 };
 
 /// W = B K⁻¹ Bᵀ from the responses K⁻¹ Bᵀ, made symmetric to round-off.

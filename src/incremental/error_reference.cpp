@@ -31,13 +31,13 @@ double absoluteEnergyScale(const Problem& problem, const Eigen::MatrixXd& u_free
 
 }  // namespace
 
-ErrorReference::ErrorReference(const Problem& problem, const SpdFactor& stiffness_free, Eigen::MatrixXd delassus,
+ErrorReference::ErrorReference(const Problem& problem, const SpdSolver& stiffness_free, Eigen::MatrixXd delassus,
                                Eigen::MatrixXd lambda_ref)
     : delassus_(std::move(delassus)), lambda_ref_(std::move(lambda_ref)) {
   setReferenceEnergy(problem, stiffness_free);
 }
 
-ErrorReference::ErrorReference(const Problem& problem, std::shared_ptr<const SpdFactor> stiffness_free,
+ErrorReference::ErrorReference(const Problem& problem, std::shared_ptr<const SpdSolver> stiffness_free,
                                Eigen::MatrixXd lambda_ref)
     : factor_(std::move(stiffness_free)),
       lazy_(std::make_unique<LazyDelassus>(problem, *factor_)),
@@ -48,7 +48,7 @@ ErrorReference::ErrorReference(const Problem& problem, std::shared_ptr<const Spd
 
 ErrorReference::~ErrorReference() = default;
 
-void ErrorReference::setReferenceEnergy(const Problem& problem, const SpdFactor& stiffness_free) {
+void ErrorReference::setReferenceEnergy(const Problem& problem, const SpdSolver& stiffness_free) {
   const Eigen::MatrixXd u_free = freeDisplacements(problem, stiffness_free, lambda_ref_);
   reference_energy_ = spaceTimeEnergy(problem, u_free);
   const double gamma = problem.numDofs() * std::numeric_limits<double>::epsilon();  // γ_n (header)

@@ -24,11 +24,11 @@ namespace stc {
 class ErrorReference : public ErrorMeasure {
  public:
   /// `lambda_ref` (d n_C × m): the reference contact forces, e.g. from solveIncremental.
-  ErrorReference(const Problem& problem, const SpdFactor& stiffness_free, Eigen::MatrixXd delassus,
+  ErrorReference(const Problem& problem, const SpdSolver& stiffness_free, Eigen::MatrixXd delassus,
                  Eigen::MatrixXd lambda_ref);
   /// The same with W computed lazily (header); keeps the factor and refers to `problem`, which must
   /// outlive it. relativeError may then be called from several threads (the columns are guarded).
-  ErrorReference(const Problem& problem, std::shared_ptr<const SpdFactor> stiffness_free, Eigen::MatrixXd lambda_ref);
+  ErrorReference(const Problem& problem, std::shared_ptr<const SpdSolver> stiffness_free, Eigen::MatrixXd lambda_ref);
   ~ErrorReference() override;
 
   /// Relative energy error of an equilibrated iterate given by its contact forces; NaN when
@@ -46,11 +46,11 @@ class ErrorReference : public ErrorMeasure {
   int nodesComputed() const;
 
  private:
-  void setReferenceEnergy(const Problem& problem, const SpdFactor& stiffness_free);
+  void setReferenceEnergy(const Problem& problem, const SpdSolver& stiffness_free);
   double lazyEnergy(Eigen::MatrixXd d) const;  // Σ_k d_kᵀ W d_k on the support of d
 
   Eigen::MatrixXd delassus_;  // empty when lazy
-  std::shared_ptr<const SpdFactor> factor_;
+  std::shared_ptr<const SpdSolver> factor_;
   std::unique_ptr<LazyDelassus> lazy_;
   const ContactInterface* contact_ = nullptr;
   mutable std::mutex lazy_mutex_;

@@ -17,7 +17,7 @@
 #include "stcontact/incremental/lazy_delassus.hpp"
 #include "stcontact/incremental/newton_instant.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 
 namespace stc {
 namespace {
@@ -227,7 +227,7 @@ SolveResult solvePlaneOn(const Problem& problem, CondensedInterface& condensed, 
 }
 
 SolveResult solvePlaneOnEveryNode(const Problem& problem, const IncrementalOptions& options,
-                                  const IterationCallback& callback, Clock::time_point start, const SpdFactor& factor) {
+                                  const IterationCallback& callback, Clock::time_point start, const SpdSolver& factor) {
   CondensedInterface condensed = CondensedInterface::build(problem, factor);
   return solvePlaneOn(problem, condensed, options, callback, start);
 }
@@ -244,7 +244,7 @@ std::string nodesText(std::size_t count, int n) {
 // counted in its last record) when no node left out penetrates; else `on_every_node()`, its record
 // counting the zone's solves too.
 template <class OnEveryNode>
-SolveResult liftedOrWhole(const Problem& problem, const SpdFactor& factor, const ZoneCondensation& c,
+SolveResult liftedOrWhole(const Problem& problem, const SpdSolver& factor, const ZoneCondensation& c,
                           SolveResult on_zone, Clock::time_point start, OnEveryNode&& on_every_node) {
   SolveSummary& summary = on_zone.summary;
   long lift_solves = 0;
@@ -275,7 +275,7 @@ SolveResult liftedOrWhole(const Problem& problem, const SpdFactor& factor, const
 // The plane law on the nodes within reach of the prescribed motion (reach_zone.hpp), lifted to every
 // node; on every node when there is no such zone, or when a node left out penetrates.
 SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
-                       Clock::time_point start, const SpdFactor& factor, const std::optional<std::vector<int>>& zone) {
+                       Clock::time_point start, const SpdSolver& factor, const std::optional<std::vector<int>>& zone) {
   if (!zone) return solvePlaneOnEveryNode(problem, options, callback, start, factor);
   ZoneCondensation c = ZoneCondensation::build(problem, factor, *zone);
   Problem part = problem;
@@ -303,7 +303,7 @@ SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& opti
 // of `zone`'s nodes first, in blocks on every thread (most of those the march would ask for a few at
 // a time).
 SolveResult solveConeOnEveryNode(const Problem& problem, const IncrementalOptions& options,
-                                 const IterationCallback& callback, Clock::time_point start, const SpdFactor& factor,
+                                 const IterationCallback& callback, Clock::time_point start, const SpdSolver& factor,
                                  const std::optional<std::vector<int>>& zone) {
   const Eigen::MatrixXd v0 = freeInterfaceResponse(problem, factor);
   LazyDelassus delassus(problem, factor);
@@ -321,7 +321,7 @@ SolveResult solveConeOnEveryNode(const Problem& problem, const IncrementalOption
 // lifted to every node; on every node, lazily, when the factor does not condense the zone or a node
 // left out penetrates.
 SolveResult solveCone(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
-                      Clock::time_point start, const SpdFactor& factor, const std::optional<std::vector<int>>& zone) {
+                      Clock::time_point start, const SpdSolver& factor, const std::optional<std::vector<int>>& zone) {
   const auto on_every_node = [&] { return solveConeOnEveryNode(problem, options, callback, start, factor, zone); };
   if (!zone || !factor.condenses(restrictToNodes(problem.contact, *zone).B)) return on_every_node();
   ZoneCondensation c = ZoneCondensation::build(problem, factor, *zone);
@@ -350,8 +350,8 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
   const std::optional<std::vector<int>> zone = options.zone_within_reach ? reachZone(problem) : std::nullopt;
   const std::vector<int> zone_dofs = zone ? dofsReadBy(restrictToNodes(problem.contact, *zone).B) : std::vector<int>();
   std::unique_ptr<PreparedOperators> own;
-  const std::shared_ptr<const SpdFactor> factor =
-      operatorsOr(inputs.operators, own).stiffnessFree(problem, {zone_dofs, SpdFactor::kTrailingWork});
+  const std::shared_ptr<const SpdSolver> factor =
+      operatorsOr(inputs.operators, own).stiffnessFree(problem, {zone_dofs, CholmodFactor::kTrailingWork});
   if (problem.contact.dimension == 3 || options.cone_law)
     return solveCone(problem, options, callback, start, *factor, zone);
   return solvePlane(problem, options, callback, start, *factor, zone);

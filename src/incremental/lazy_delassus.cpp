@@ -7,7 +7,7 @@
 
 namespace stc {
 
-LazyDelassus::LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free, double chunk_bytes)
+LazyDelassus::LazyDelassus(const Problem& problem, const SpdSolver& stiffness_free, double chunk_bytes)
     : B_(problem.contact.B),
       Bt_(problem.contact.B.transpose()),
       factor_(&stiffness_free),
@@ -76,7 +76,7 @@ void LazyDelassus::solveColumns(const std::vector<int>& nodes) {
       columns_(r, static_cast<Eigen::Index>(slot_[j]) * d_ + r % d_) = entry(d_ * j, j, 0);
 }
 
-Eigen::MatrixXd freeInterfaceResponse(const Problem& problem, const SpdFactor& stiffness_free) {
+Eigen::MatrixXd freeInterfaceResponse(const Problem& problem, const SpdSolver& stiffness_free) {
   const auto& B = problem.contact.B;
   Eigen::MatrixXd v0 = Eigen::MatrixXd::Zero(B.rows(), problem.numSteps());
   for (const auto& term : problem.loads) {

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/problem/problem.hpp"
 
 namespace stc {
@@ -21,9 +21,9 @@ class LazyDelassus {
   /// one block) then costs the columns alone.
   static constexpr double kChunkBytes = 128.0 * 1024 * 1024;
 
-  LazyDelassus(const Problem& problem, const SpdFactor& stiffness_free, double chunk_bytes = kChunkBytes);
+  LazyDelassus(const Problem& problem, const SpdSolver& stiffness_free, double chunk_bytes = kChunkBytes);
   /// Every node's columns given: W (d n_C × d n_C) of `problem`'s interface, e.g. from the trailing
-  /// block of the factor (SpdFactor::condensed); held rows get their compliance here. ensure() then
+  /// block of the factor (SpdSolver::condensed); held rows get their compliance here. ensure() then
   /// never solves.
   LazyDelassus(const Problem& problem, Eigen::MatrixXd W);
 
@@ -48,7 +48,7 @@ class LazyDelassus {
 
   const Eigen::SparseMatrix<double>& B_;
   const Eigen::SparseMatrix<double> Bt_;  // Bᵀ, its columns the right-hand sides of a node
-  const SpdFactor* factor_;  // null when every column was given
+  const SpdSolver* factor_;  // null when every column was given
   int d_;
   double chunk_bytes_;
   std::vector<int> held_rows_;  // ContactInterface::held_rows, given a compliance when their node's columns come
@@ -59,6 +59,6 @@ class LazyDelassus {
 };
 
 /// v_0 = B K⁻¹ f(t_k) for every instant (d n_C × m), one sparse solve per load term.
-Eigen::MatrixXd freeInterfaceResponse(const Problem& problem, const SpdFactor& stiffness_free);
+Eigen::MatrixXd freeInterfaceResponse(const Problem& problem, const SpdSolver& stiffness_free);
 
 }  // namespace stc

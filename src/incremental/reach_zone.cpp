@@ -16,7 +16,7 @@ std::optional<std::vector<int>> reachZone(const Problem& problem) {
   return zone;
 }
 
-ZoneCondensation ZoneCondensation::build(const Problem& problem, const SpdFactor& stiffness_free,
+ZoneCondensation ZoneCondensation::build(const Problem& problem, const SpdSolver& stiffness_free,
                                          std::vector<int> zone) {
   const ContactInterface& contact = problem.contact;
   const int d = contact.dimension;
@@ -41,7 +41,7 @@ ZoneCondensation ZoneCondensation::build(const Problem& problem, const SpdFactor
   return c;
 }
 
-InterfaceHistory ZoneCondensation::lift(const ContactInterface& contact, const SpdFactor& stiffness_free,
+InterfaceHistory ZoneCondensation::lift(const ContactInterface& contact, const SpdSolver& stiffness_free,
                                         const InterfaceHistory& on_zone, int solved, long& sparse_solves) const {
   const int d = contact.dimension;
   InterfaceHistory h = InterfaceHistory::zeros(contact, on_zone.numSteps());

@@ -5,7 +5,7 @@
 // are left out of the dense law: W is formed on the zone Z only,
 //   W_ZZ = B_Z K⁻¹ B_Zᵀ,
 // from the trailing block of a factor of K_ff with the zone's dofs ordered last (no solve,
-// SpdFactor::condensed; where that pays, spd_factor.hpp) or from d |Z| sparse solves, and the other
+// SpdSolver::condensed; where that pays, src/linalg/backends/cholmod_factor.hpp) or from d |Z| sparse solves, and the other
 // nodes' displacements follow, with λ_F = 0, as
 //   v_F(t_k) = v_0,F(t_k) + W_FZ λ_Z(t_k),   W_FZ = B_F K⁻¹ B_Zᵀ,
 // from the same solves, or from rank(λ_Z) solves after the march (ZoneCondensation::lift). That is the whole problem's solution exactly when no node of F penetrates
@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "stcontact/incremental/condensed_interface.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/spacetime/interface_history.hpp"
 
@@ -28,7 +28,7 @@ namespace stc {
 std::optional<std::vector<int>> reachZone(const Problem& problem);
 
 /// The condensed interface of the zone, and what lifts its solution to every node. W_ZZ comes from
-/// the trailing block of a factor that ordered the zone's dofs last (SpdFactor::condenses), else
+/// the trailing block of a factor that ordered the zone's dofs last (SpdSolver::condenses), else
 /// from d |Z| solves, which give W_FZ as well. Without W_FZ the lift solves for the far nodes'
 /// displacements, as many right-hand sides as λ_Z has rank.
 struct ZoneCondensation {
@@ -38,12 +38,12 @@ struct ZoneCondensation {
   Eigen::MatrixXd far_free;       ///< v_0,F (d |F| × m)
   Eigen::SparseMatrix<double> B_zone, B_far;  ///< B's rows of the zone and of the nodes left out
 
-  static ZoneCondensation build(const Problem& problem, const SpdFactor& stiffness_free, std::vector<int> zone);
+  static ZoneCondensation build(const Problem& problem, const SpdSolver& stiffness_free, std::vector<int> zone);
 
   /// The whole interface's history from the zone's on its first `solved` instants (λ_F = 0,
   /// v_F = v_0,F + W_FZ λ_Z); the later instants stay zero, as a stopped march leaves them. Adds the
   /// sparse solves it makes (none when W_FZ is known) to `sparse_solves`.
-  InterfaceHistory lift(const ContactInterface& contact, const SpdFactor& stiffness_free,
+  InterfaceHistory lift(const ContactInterface& contact, const SpdSolver& stiffness_free,
                         const InterfaceHistory& on_zone, int solved, long& sparse_solves) const;
 };
 

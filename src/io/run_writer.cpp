@@ -182,7 +182,7 @@ std::vector<JsonObject> preparationsJson(const std::vector<Preparation>& prepara
   std::vector<JsonObject> out;
   for (const Preparation& p : preparations) {
     JsonObject entry;
-    entry.add("operator", p.name).add("rows", p.rows);
+    entry.add("operator", p.name).add("backend", p.backend).add("rows", p.rows);
     if (p.contact_nodes > 0) entry.add("contact_nodes", p.contact_nodes);
     entry.add("factor_nonzeros", p.factor_nonzeros).add("seconds", p.seconds).add("uses", p.uses);
     out.push_back(std::move(entry));
@@ -221,13 +221,13 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
 void writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
                          int stride, VtuPrecision precision, PreparedOperators& operators) {
   ensureWritableDirectory(dir / "vtu");
-  const std::shared_ptr<const SpdFactor> factor = operators.stiffnessFree(problem);
+  const std::shared_ptr<const SpdSolver> factor = operators.stiffnessFree(problem);
   const ContactStateTable states(problem.contact, result.admissible());
   const FrameLayout layout = frameLayout(problem, precision);
   const std::vector<int> steps = frameSteps(problem.numSteps(), stride);
   // The frames are independent: each thread solves with its own workspace and writes its own files.
   const int threads = threadCount();
-  std::vector<SpdFactor::Workspace> workspaces(static_cast<std::size_t>(threads));
+  std::vector<SpdSolver::Workspace> workspaces(static_cast<std::size_t>(threads));
   parallelFor(static_cast<int>(steps.size()), threads, [&](int item, int thread) {
     const int k = steps[static_cast<std::size_t>(item)];
     const Eigen::VectorXd u = problem.absoluteDisplacement(

@@ -7,7 +7,7 @@
 
 namespace stc::linalg {
 
-Eigen::MatrixXd solveThroughRank(const SpdFactor& factor, const Eigen::SparseMatrix<double>& C,
+Eigen::MatrixXd solveThroughRank(const SpdSolver& factor, const Eigen::SparseMatrix<double>& C,
                                  const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& M, long& solves) {
   if (M.size() == 0) return Eigen::MatrixXd::Zero(C.rows(), M.cols());
   const Svd svd = singularValueDecomposition(M, SvdMethod::divide_and_conquer, kThinU | kThinV);

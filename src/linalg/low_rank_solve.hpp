@@ -3,7 +3,7 @@
 // with the SVD M = U Σ Vᵀ kept to its numerical rank ρ (σ_i > max(k, m) ε σ_1, what round-off
 // cannot tell from zero),
 //   C A⁻¹ Rᵀ M = (C A⁻¹ Rᵀ U_ρ) Σ_ρ V_ρᵀ,   ρ ≤ min(k, m) solves,
-// half-solves when R reads the factor's trailing dofs alone (SpdFactor::solveFromTrailing).
+// half-solves when R reads the factor's trailing dofs alone (SpdSolver::solveFromTrailing).
 // What lifts a solution known on the contact zone to the nodes left out (the far nodes'
 // displacements from the zone's force history, src/incremental/reach_zone.hpp and
 // pgd/response_basis.hpp) when the zone's operator came from the factor's trailing block with no
@@ -11,12 +11,12 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 
 namespace stc::linalg {
 
 /// C A⁻¹ Rᵀ M with `factor` of A; adds the solves made (the rank of M) to `solves`.
-Eigen::MatrixXd solveThroughRank(const SpdFactor& factor, const Eigen::SparseMatrix<double>& C,
+Eigen::MatrixXd solveThroughRank(const SpdSolver& factor, const Eigen::SparseMatrix<double>& C,
                                  const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& M, long& solves);
 
 }  // namespace stc::linalg

@@ -4,6 +4,9 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "stcontact/linalg/prepare_spd_solver.hpp"
+#include "stcontact/operators/rigid_body_modes.hpp"
+
 namespace stc {
 namespace {
 
@@ -42,7 +45,16 @@ bool sameEntries(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix
          std::equal(a.valuePtr(), a.valuePtr() + n, b.valuePtr());
 }
 
+// What the backend may use: the dofs to order last, and the rigid-body motions for an AMG.
+SpdSolverHints hintsFor(const Problem& problem, const Ordering& ordering, const LinearSolverOptions& linear) {
+  SpdSolverHints hints{ordering.trailing, ordering.min_work, {}};
+  if (linear.backend == LinearBackend::CgGamg) hints.near_null_space = rigidBodyModesOfFreeDofs(problem);
+  return hints;
+}
+
 }  // namespace
+
+PreparedOperators::PreparedOperators(LinearSolverOptions linear) : linear_(linear) {}
 
 Eigen::SparseMatrix<double> searchDirectionOperator(const Problem& problem) {
   const auto& B = problem.contact.B;
@@ -50,7 +62,7 @@ Eigen::SparseMatrix<double> searchDirectionOperator(const Problem& problem) {
   return Eigen::SparseMatrix<double>(problem.stiffness_free + Eigen::SparseMatrix<double>(B.transpose()) * kB);
 }
 
-std::shared_ptr<const SpdFactor> PreparedOperators::stiffnessFree(const Problem& problem, const Ordering& ordering) {
+std::shared_ptr<const SpdSolver> PreparedOperators::stiffnessFree(const Problem& problem, const Ordering& ordering) {
   const std::uint64_t print = fingerprint(problem.stiffness_free);
   const std::lock_guard<std::mutex> lock(mutex_);
   if (stiffness_free_) {
@@ -60,10 +72,11 @@ std::shared_ptr<const SpdFactor> PreparedOperators::stiffnessFree(const Problem&
     return stiffness_free_;
   }
   const auto start = Clock::now();
-  stiffness_free_ = std::make_shared<const SpdFactor>(problem.stiffness_free, "the free-dof stiffness K_ff",
-                                                      ordering.trailing, ordering.min_work);
+  stiffness_free_ = prepareSpdSolver(problem.stiffness_free, "the free-dof stiffness K_ff", linear_,
+                                     hintsFor(problem, ordering, linear_));
   stiffness_fingerprint_ = print;
-  Preparation record{"K_ff", problem.numFreeDofs(), 0, stiffness_free_->factorNonZeros(), secondsSince(start), 1};
+  Preparation record{"K_ff", stiffness_free_->backend(), problem.numFreeDofs(), 0, stiffness_free_->factorNonZeros(),
+                     secondsSince(start), 1};
   records_.push_back(record);
   stiffness_record_ = records_.size() - 1;
   return stiffness_free_;
@@ -79,10 +92,11 @@ std::shared_ptr<const SearchOperator> PreparedOperators::searchOperator(const Pr
       return s.op;
     }
   const auto start = Clock::now();
-  SpdFactor factor(matrix, "K + B^T k B", ordering.trailing, ordering.min_work);
+  std::unique_ptr<SpdSolver> factor =
+      prepareSpdSolver(matrix, "K + B^T k B", linear_, hintsFor(problem, ordering, linear_));
   auto op = std::make_shared<const SearchOperator>(SearchOperator{std::move(matrix), std::move(factor)});
-  records_.push_back({"K_ff + B^T k B", problem.numFreeDofs(), problem.contact.size(), op->factor.factorNonZeros(),
-                      secondsSince(start), 1});
+  records_.push_back({"K_ff + B^T k B", op->factor->backend(), problem.numFreeDofs(), problem.contact.size(),
+                      op->factor->factorNonZeros(), secondsSince(start), 1});
   search_.push_back({ordering, op, records_.size() - 1});
   return op;
 }

@@ -10,7 +10,7 @@ struct LatinOptions {
   /// ω in (0, 1]: s ← ω s_new + (1 − ω) s_old (1: none).
   double relaxation = 1.0;
   /// Instants per multi-right-hand-side solve of the global stage (memory n_free × block; 16–32
-  /// measured fastest on the seed scene, src/linalg/spd_factor.cpp).
+  /// measured fastest on the seed scene, src/linalg/backends/cholmod_factor.cpp).
   int block_size = 32;
 
   template <class Self, class Visit>

@@ -30,6 +30,7 @@ Range inUnitClosed() { return {0.0, 1.0, false, false, std::nullopt, "must be in
 Range offOrAtLeast(int n) {
   return {double(n), kInfinity, false, false, 0.0, "must be 0 (off) or >= " + std::to_string(n)};
 }
+Range offOrInOpenUnit() { return {0.0, 1.0, true, true, 0.0, "must be 0 (off) or in (0, 1)"}; }
 Range anyFlag() { return {-kInfinity, kInfinity, false, false, std::nullopt, ""}; }
 
 void FieldCheck::operator()(const char* key, int value, const Range& range, Exposure) const {

@@ -42,6 +42,7 @@ Range inOpenUnit();        ///< 0 < x < 1: "must be in (0, 1)"
 Range inUnitHalfOpen();    ///< 0 < x <= 1: "must be in (0, 1]"
 Range inUnitClosed();      ///< 0 <= x <= 1: "must be in [0, 1]"
 Range offOrAtLeast(int n); ///< 0 or x >= n: "must be 0 (off) or >= n"
+Range offOrInOpenUnit();   ///< 0 or 0 < x < 1: "must be 0 (off) or in (0, 1)"
 Range anyFlag();           ///< a boolean: no range
 
 /// The names a keyword option takes, in the order messages list them.

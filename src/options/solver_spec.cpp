@@ -32,12 +32,19 @@ double SolverSpec::tolerance() const {
   return stop ? stop->tolerance : latin.stop.tolerance;
 }
 
+LinearSolverOptions SolverSpec::linearAtTolerance() const {
+  LinearSolverOptions out = linear;
+  out.rtol = linear.residualTolerance(tolerance());
+  return out;
+}
+
 void SolverSpec::validate() const {
   latin.validate();
   latin_pgd.validate();
   fas_aposteriori.validate();
   fas_apriori.validate();
   incremental.validate();
+  linear.validate();
 }
 
 }  // namespace stc

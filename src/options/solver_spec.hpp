@@ -9,6 +9,7 @@
 #include "stcontact/options/incremental_options.hpp"
 #include "stcontact/options/latin_options.hpp"
 #include "stcontact/options/latin_pgd_options.hpp"
+#include "stcontact/options/linear_solver_options.hpp"
 #include "stcontact/options/option_fields.hpp"
 #include "stcontact/options/strategy.hpp"
 
@@ -21,6 +22,9 @@ struct SolverSpec {
   fas::FasAposterioriOptions fas_aposteriori;
   fas::FasAprioriOptions fas_apriori;
   IncrementalOptions incremental;
+  /// The engine under every strategy: which backend prepares and solves the sparse operators
+  /// (solver.linear, solver.linear_rtol, solver.linear_max_iterations).
+  LinearSolverOptions linear;
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
@@ -29,6 +33,7 @@ struct SolverSpec {
     fas::FasAposterioriOptions::fields(o.fas_aposteriori, visit);
     fas::FasAprioriOptions::fields(o.fas_apriori, visit);
     IncrementalOptions::fields(o.incremental, visit);
+    LinearSolverOptions::fields(o.linear, visit);
   }
   /// The strategy's name ("fas-apriori").
   std::string_view name() const { return nameOf(strategy); }
@@ -42,6 +47,8 @@ struct SolverSpec {
   /// The tolerance of the strategy named (of `latin` for `incremental`, which has none): the scene's
   /// solver.tolerance unless a library caller set the strategies apart.
   double tolerance() const;
+  /// `linear` with its residual tolerance set from tolerance() (LinearSolverOptions::residualTolerance).
+  LinearSolverOptions linearAtTolerance() const;
   void validate() const;  ///< every strategy's options
 };
 

@@ -2,7 +2,7 @@
 
 namespace stc {
 
-EquilibriumEnergy::EquilibriumEnergy(const Problem& problem, const SpdFactor& search_factor) : problem_(problem) {
+EquilibriumEnergy::EquilibriumEnergy(const Problem& problem, const SpdSolver& search_factor) : problem_(problem) {
   const int q = static_cast<int>(problem.loads.size()), n = problem.numFreeDofs(), m = problem.numSteps();
   Eigen::MatrixXd F(n, q), P(problem.numDofs(), q);
   histories_.resize(q, m);

@@ -9,7 +9,7 @@
 // with the free dofs. Set-up: one solve with A per column of [F D]; then O(q n_C m) per call.
 #include <Eigen/Core>
 
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/spacetime/interface_history.hpp"
 
@@ -18,7 +18,7 @@ namespace stc {
 class EquilibriumEnergy {
  public:
   /// `search_factor` factorises A = K_ff + Bᵀ k B with k = problem.contact.search_direction.
-  EquilibriumEnergy(const Problem& problem, const SpdFactor& search_factor);
+  EquilibriumEnergy(const Problem& problem, const SpdSolver& search_factor);
 
   /// E = Σ_k u_kᵀ K u_k of the equilibrated iterate s.
   double operator()(const InterfaceHistory& s) const;

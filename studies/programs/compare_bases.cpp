@@ -69,7 +69,7 @@ struct Setup {
   stc::Problem problem;
   stc::SolveResult incremental;
   double incremental_s = 0.0;
-  std::shared_ptr<const stc::SpdFactor> K;  ///< K_ff, prepared once for the measure and the SVD
+  std::shared_ptr<const stc::SpdSolver> K;  ///< K_ff, prepared once for the measure and the SVD
   std::unique_ptr<stc::ErrorReference> reference;
 };
 

@@ -427,8 +427,8 @@ Study prepare(const Options& opt) {
   const stc::SolveResult ref = stc::solveIncremental(st.problem);
   st.incremental_s = secondsSince(t0);
   if (!ref.summary.converged()) throw std::runtime_error("incremental reference: " + ref.summary.message);
-  const std::shared_ptr<const stc::SpdFactor> factor = stc::PreparedOperators().stiffnessFree(st.problem);
-  const stc::SpdFactor& K = *factor;
+  const std::shared_ptr<const stc::SpdSolver> factor = stc::PreparedOperators().stiffnessFree(st.problem);
+  const stc::SpdSolver& K = *factor;
   const stc::CondensedInterface condensed = stc::CondensedInterface::build(st.problem, K);
   st.reference = std::make_unique<stc::ErrorReference>(st.problem, K, condensed.delassus, ref.interface.lambda);
   t0 = Clock::now();

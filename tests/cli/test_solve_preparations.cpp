@@ -33,7 +33,7 @@ std::vector<Prepared> preparations(const fs::path& summary) {
   if (begin == std::string::npos) return {};
   const std::string list = json.substr(begin, json.find("\n  ]", begin) - begin);
   std::vector<Prepared> out;
-  const std::regex entry(R"re(\{\s*"operator": "([^"]+)",\s*"rows": \d+,\s*(?:"contact_nodes": (\d+),\s*)?)re"
+  const std::regex entry(R"re(\{\s*"operator": "([^"]+)",\s*"backend": "cholmod",\s*"rows": \d+,\s*(?:"contact_nodes": (\d+),\s*)?)re"
                          R"re("factor_nonzeros": [^,]+,\s*"seconds": [^,]+,\s*"uses": (\d+))re");
   for (auto it = std::sregex_iterator(list.begin(), list.end(), entry); it != std::sregex_iterator(); ++it)
     out.push_back({(*it)[1], (*it)[2].matched ? std::stoi((*it)[2]) : 0, std::stoi((*it)[3])});

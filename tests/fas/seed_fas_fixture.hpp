@@ -7,7 +7,7 @@
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/linalg/dense_decompositions.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/operators/displacement.hpp"
 
 namespace stc::test {
@@ -17,7 +17,7 @@ struct SeedFas {
   SolveResult reference;
   Eigen::MatrixXd u_ref;  ///< converged free displacements, n_free × m
   SeedFas() : problem(make()), reference(solveIncremental(problem)) {
-    const SpdFactor K(problem.stiffness_free, "K");
+    const CholmodFactor K(problem.stiffness_free, "K");
     u_ref = freeDisplacements(problem, K, reference.interface.lambda);
   }
   static Problem make() {

@@ -21,7 +21,7 @@ void expectLazyMatchesWhole(const stc::Scene& scene) {
   const stc::Problem problem = stc::buildProblem(scene);
   const stc::SolveResult ref = stc::solveIncremental(problem);
   ASSERT_TRUE(ref.summary.converged());
-  auto factor = std::make_shared<const stc::SpdFactor>(problem.stiffness_free, "K");
+  auto factor = std::make_shared<const stc::CholmodFactor>(problem.stiffness_free, "K");
   const stc::ErrorReference whole(problem, *factor, stc::CondensedInterface::build(problem, *factor).delassus,
                                   ref.interface.lambda);
   const stc::ErrorReference lazy(problem, factor, ref.interface.lambda);
@@ -52,7 +52,7 @@ TEST(LazyDelassus, ColumnsSolvedInChunksEqualTheWholeOperator) {
   for (const stc::Scene& scene :
        {stc::test::seedScene(31, 11), stc::test::hemisphereScene(3, 11), stc::test::slabScene(31, 11)}) {
     const stc::Problem problem = stc::buildProblem(scene);
-    const stc::SpdFactor factor(problem.stiffness_free, "K");
+    const stc::CholmodFactor factor(problem.stiffness_free, "K");
     Eigen::MatrixXd W = stc::CondensedInterface::build(problem, factor).delassus;
     stc::giveHeldRowsCompliance(problem.contact, W);
     stc::LazyDelassus lazy(problem, factor, 1.0);

@@ -17,7 +17,7 @@
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/operators/displacement.hpp"
 #include "stcontact/solver/contact_law_check.hpp"
 
@@ -116,7 +116,7 @@ TEST(IncrementalSolver, SatisfiesContactLawThroughStickSlipTransitionsAndReversa
 TEST(IncrementalSolver, RebuiltDisplacementsSatisfyEquilibriumAndInterfaceKinematics) {
   const Solved& s = solvedSeed(31, 41);
   const auto& h = s.result.interface;
-  const stc::SpdFactor factor(s.problem.stiffness_free, "K_ff");
+  const stc::CholmodFactor factor(s.problem.stiffness_free, "K_ff");
   const Eigen::MatrixXd u = stc::freeDisplacements(s.problem, factor, h.lambda);
   const Eigen::MatrixXd contact_force = s.problem.contact.B.transpose() * h.lambda;  // Bᵀλ, free dofs
   const double force_scale = contact_force.cwiseAbs().maxCoeff();
@@ -189,7 +189,7 @@ TEST(IncrementalSolver, FrictionlessSolutionSolvesTheContactQuadraticProgramAtEv
   scene.contact.friction = 0.0;
   const Solved s = solve(scene);
   ASSERT_TRUE(s.result.summary.converged()) << s.result.summary.message;
-  const stc::SpdFactor factor(s.problem.stiffness_free, "K_ff");
+  const stc::CholmodFactor factor(s.problem.stiffness_free, "K_ff");
   const auto condensed = stc::CondensedInterface::build(s.problem, factor);
   const auto normal = Eigen::seq(0, Eigen::last, 2);
   const Eigen::MatrixXd Wnn = condensed.delassus(normal, normal);

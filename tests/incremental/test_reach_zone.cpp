@@ -11,7 +11,7 @@
 #include "fixtures/hemisphere_scene.hpp"
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
 
 namespace {
 
@@ -99,15 +99,15 @@ TEST(IncrementalWithinReach, TheConeLawTakesTheZonesOperatorFromTheFactorAndSolv
 // sides as the zone's force history has rank: at most its 41 instants and 2 |Z| rows).
 TEST(ZoneCondensation, LiftsToEveryNodeAndFindsTheNodesATooSmallZoneLeavesPenetrating) {
   const stc::Problem problem = stc::buildProblem(stc::test::seedScene(101, 41));
-  const stc::SpdFactor factor(problem.stiffness_free, "K_ff");
+  const stc::CholmodFactor factor(problem.stiffness_free, "K_ff");
   const stc::SolveResult whole = stc::solveIncremental(problem, onEveryNode());
   for (const std::vector<int>& zone : {*stc::reachZone(problem), std::vector<int>{49, 50, 51}}) {
     stc::Problem part = problem;
     part.contact = stc::restrictToNodes(problem.contact, zone);
-    const stc::SpdFactor trailing(problem.stiffness_free, "K_ff", stc::dofsReadBy(part.contact.B), 0.0);
+    const stc::CholmodFactor trailing(problem.stiffness_free, "K_ff", stc::dofsReadBy(part.contact.B), 0.0);
     const stc::SolveResult on_zone = stc::solveIncremental(part, onEveryNode());
     ASSERT_TRUE(on_zone.summary.converged()) << on_zone.summary.message;
-    for (const stc::SpdFactor* f : {&factor, &trailing}) {
+    for (const stc::CholmodFactor* f : {&factor, &trailing}) {
       const stc::ZoneCondensation c = stc::ZoneCondensation::build(problem, *f, zone);
       const Eigen::SparseMatrix<double>& B_zone = part.contact.B;
       const Eigen::MatrixXd W_solves = stc::symmetricDelassus(B_zone, factor.solve(Eigen::MatrixXd(B_zone.transpose())));

@@ -148,7 +148,7 @@ TEST(RunWriter, FramesUseTheRunsFactorAndTheSummaryListsIt) {
   EXPECT_EQ(prepared[0].name, "K_ff");
   EXPECT_EQ(prepared[0].uses, 2);  // the incremental solve, then the frames
   const std::string json = stc::iotest::readFile(scratch.path() / "summary.json");
-  EXPECT_NE(json.find("\"preparations\": [\n    {\n      \"operator\": \"K_ff\",\n      \"rows\": " +
+  EXPECT_NE(json.find("\"preparations\": [\n    {\n      \"operator\": \"K_ff\",\n      \"backend\": \"cholmod\",\n      \"rows\": " +
                       std::to_string(problem.numFreeDofs()) + ","),
             std::string::npos)
       << json;

@@ -34,7 +34,7 @@ TEST(GlobalStage, ResultIsInEquilibriumAndOnTheSearchDirection) {
   const Eigen::VectorXd& k = problem.contact.search_direction;
   EXPECT_LE((s.lambda - hat.lambda + k.asDiagonal() * (s.v - hat.v)).cwiseAbs().maxCoeff(), 1e-12);
   // K_ff u = f + Bᵀλ with u = (K + BᵀkB)⁻¹(f + Bᵀ(λ̂ + k v̂)), and v = B u.
-  const stc::SpdFactor K(problem.stiffness_free, "K");
+  const stc::CholmodFactor K(problem.stiffness_free, "K");
   const Eigen::MatrixXd u = stc::freeDisplacements(problem, K, s.lambda);
   EXPECT_LE((problem.contact.B * u - s.v).cwiseAbs().maxCoeff(), 1e-12 * s.v.cwiseAbs().maxCoeff());
   EXPECT_EQ(global.sparseSolves(), problem.numSteps());
@@ -55,7 +55,7 @@ TEST(Indicator, VanishesOnlyWhenBothStatesAgree) {
 TEST(LatinSolver, ConvergesToTheIncrementalSolution) {
   const stc::Problem problem = smallSeed();
   const stc::SolveResult ref = stc::solveIncremental(problem);
-  const stc::SpdFactor K(problem.stiffness_free, "K");
+  const stc::CholmodFactor K(problem.stiffness_free, "K");
   const stc::ErrorReference reference(problem, K, stc::CondensedInterface::build(problem, K).delassus,
                                       ref.interface.lambda);
   stc::latin::LatinOptions options;

@@ -2,7 +2,7 @@
 // global stage and whole LATIN solves give bitwise the same iterates on 1, 2 and 3 threads.
 // Exact equality is the claim: each node, each block of instants and each CHOLMOD chunk of 16
 // columns is computed by the same code on the same data whichever thread takes it
-// (tests/linalg/test_spd_factor.cpp: the same columns from any workspace, also concurrently).
+// (tests/linalg/test_cholmod_factor.cpp: the same columns from any workspace, also concurrently).
 #include <gtest/gtest.h>
 
 #include "fixtures/seed_scene.hpp"

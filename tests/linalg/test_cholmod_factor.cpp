@@ -1,4 +1,4 @@
-// SpdFactor (src/linalg/spd_factor.hpp): solves A X = B to round-off, refuses what is not positive
+// CholmodFactor (src/linalg/backends/cholmod_factor.hpp): solves A X = B to round-off, refuses what is not positive
 // definite, and gives bitwise the same columns in any workspace, also with two threads solving at
 // once with one factor (what the threaded global stage relies on, docs/threads.md).
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/threads.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/problem/problem.hpp"
 
 namespace {
@@ -29,30 +29,30 @@ Eigen::MatrixXd randomRightHandSides(unsigned seed, int columns) {
 
 }  // namespace
 
-TEST(SpdFactor, SolvesEveryColumnToRoundOff) {
+TEST(CholmodFactor, SolvesEveryColumnToRoundOff) {
   const auto& A = problem().stiffness_free;
-  const stc::SpdFactor factor(A, "K_ff");
+  const stc::CholmodFactor factor(A, "K_ff");
   const Eigen::MatrixXd B = randomRightHandSides(5, 37);  // two chunks of 16 and a rest
   const Eigen::MatrixXd X = factor.solve(B);
   EXPECT_LE((A * X - B).norm(), 1e-10 * B.norm());
   // Alone, a column goes through CHOLMOD's one-column kernel instead of the four-column one: the
-  // same solution to round-off, not bitwise (why SpdFactor fixes its chunks of columns).
+  // same solution to round-off, not bitwise (why CholmodFactor fixes its chunks of columns).
   const Eigen::VectorXd x = factor.solve(Eigen::VectorXd(B.col(20)));
   EXPECT_LE((x - X.col(20)).norm(), 1e-13 * X.col(20).norm());
 }
 
-TEST(SpdFactor, RefusesAMatrixWithRigidMotionsOrANegativePivot) {
-  EXPECT_THROW(stc::SpdFactor(problem().stiffness, "K"), stc::InputError);  // no Dirichlet condition
+TEST(CholmodFactor, RefusesAMatrixWithRigidMotionsOrANegativePivot) {
+  EXPECT_THROW(stc::CholmodFactor(problem().stiffness, "K"), stc::InputError);  // no Dirichlet condition
   Eigen::SparseMatrix<double> negative = problem().stiffness_free;
   negative.coeffRef(3, 3) = -1.0;
-  EXPECT_THROW(stc::SpdFactor(negative, "K"), stc::InputError);
+  EXPECT_THROW(stc::CholmodFactor(negative, "K"), stc::InputError);
 }
 
-TEST(SpdFactor, SolvesBitwiseAlikeInAnyWorkspaceAndOnTwoThreadsAtOnce) {
-  const stc::SpdFactor factor(problem().stiffness_free, "K_ff");
+TEST(CholmodFactor, SolvesBitwiseAlikeInAnyWorkspaceAndOnTwoThreadsAtOnce) {
+  const stc::CholmodFactor factor(problem().stiffness_free, "K_ff");
   const Eigen::MatrixXd B = randomRightHandSides(6, 50);
   const Eigen::MatrixXd X = factor.solve(B);
-  stc::SpdFactor::Workspace w1, w2;
+  stc::CholmodFactor::Workspace w1, w2;
   EXPECT_TRUE(factor.solve(B, w1) == X);
   int wrong_left = 0, wrong_right = 0;  // two threads, two workspaces, one factor
   std::thread a([&] {
@@ -67,11 +67,11 @@ TEST(SpdFactor, SolvesBitwiseAlikeInAnyWorkspaceAndOnTwoThreadsAtOnce) {
   EXPECT_EQ(wrong_right, 0);
 }
 
-TEST(SpdFactor, SolvesOnThreadsBitwiseAsOnOne) {
+TEST(CholmodFactor, SolvesOnThreadsBitwiseAsOnOne) {
   // solveOnThreads hands the chunks of solve(B) to the threads: the same columns whatever the count
   // (the incremental solver's Delassus operator relies on it: its reference is the same on any).
   const auto& A = problem().stiffness_free;
-  const stc::SpdFactor factor(A, "K_ff");
+  const stc::CholmodFactor factor(A, "K_ff");
   const Eigen::MatrixXd B = randomRightHandSides(9, 83);  // five chunks of 16 and a rest
   const Eigen::MatrixXd serial = factor.solve(B);
   for (int threads : {1, 2, 3, 8}) {
@@ -82,20 +82,20 @@ TEST(SpdFactor, SolvesOnThreadsBitwiseAsOnOne) {
   EXPECT_THROW(factor.solveOnThreads(Eigen::MatrixXd::Ones(A.rows() + 1, 40)), std::invalid_argument);
 }
 
-TEST(SpdFactor, SolvesInPartsBitwiseOnAnyThreadCount) {
+TEST(CholmodFactor, SolvesInPartsBitwiseOnAnyThreadCount) {
   // solveInParts: one CHOLMOD call per part of `part` columns, whichever thread takes it (the separated
   // stage's new directions in parts of 4: the same responses on any thread count).
   const auto& A = problem().stiffness_free;
-  const stc::SpdFactor factor(A, "K_ff");
+  const stc::CholmodFactor factor(A, "K_ff");
   const Eigen::MatrixXd B = randomRightHandSides(10, 23);  // five parts of 4 and a rest of 3
-  std::vector<stc::SpdFactor::Workspace> serial_workspaces;
+  std::vector<stc::CholmodFactor::Workspace> serial_workspaces;
   Eigen::MatrixXd serial;
   {
     const stc::ThreadCountScope one(1);
     serial = factor.solveInParts(B, 4, serial_workspaces);
   }
   EXPECT_EQ(serial_workspaces.size(), 1u);
-  std::vector<stc::SpdFactor::Workspace> workspaces;
+  std::vector<stc::CholmodFactor::Workspace> workspaces;
   for (int threads : {2, 3, 8}) {
     const stc::ThreadCountScope scope(threads);
     const Eigen::MatrixXd X = factor.solveInParts(B, 4, workspaces);  // workspaces kept between calls
@@ -104,18 +104,18 @@ TEST(SpdFactor, SolvesInPartsBitwiseOnAnyThreadCount) {
   EXPECT_EQ(workspaces.size(), 6u);  // grown to the largest count that had parts for it (6 parts)
   EXPECT_LE((A * serial - B).norm(), 1e-10 * B.norm());
   EXPECT_THROW(factor.solveInParts(B, 0, workspaces), std::invalid_argument);
-  EXPECT_THROW(factor.solveInParts(B, stc::SpdFactor::kChunk + 1, workspaces), std::invalid_argument);
+  EXPECT_THROW(factor.solveInParts(B, stc::CholmodFactor::kChunk + 1, workspaces), std::invalid_argument);
 }
 
 // The half-ball's stiffness (3D, divisions 6: fl / lnz = 282 ≥ kSupernodalSolveSwitch) keeps its
 // supernodal factor and solves through the BLAS one caller at a time; the seed's (2D) is simplicial.
 // The same properties hold: round-off solutions, bitwise the same on any thread count and when two
 // threads solve at once (they take turns: Debian's serial OpenBLAS is not safe for concurrent calls).
-TEST(SpdFactor, ASupernodalFactorIn3dSolvesToRoundOffAndBitwiseOnAnyThreadCount) {
-  EXPECT_FALSE(stc::SpdFactor(problem().stiffness_free, "K_ff").isSupernodal());
+TEST(CholmodFactor, ASupernodalFactorIn3dSolvesToRoundOffAndBitwiseOnAnyThreadCount) {
+  EXPECT_FALSE(stc::CholmodFactor(problem().stiffness_free, "K_ff").isSupernodal());
   const stc::Problem ball = stc::buildProblem(stc::test::hemisphereScene(6, 3));
   const auto& A = ball.stiffness_free;
-  const stc::SpdFactor factor(A, "K_ff");
+  const stc::CholmodFactor factor(A, "K_ff");
   ASSERT_TRUE(factor.isSupernodal());
   std::srand(11);
   const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 45);  // a chunk of 32 and a rest
@@ -123,11 +123,11 @@ TEST(SpdFactor, ASupernodalFactorIn3dSolvesToRoundOffAndBitwiseOnAnyThreadCount)
   EXPECT_LE((A * X - B).norm(), 1e-10 * B.norm());
   for (int threads : {1, 2, 3}) {
     const stc::ThreadCountScope scope(threads);
-    std::vector<stc::SpdFactor::Workspace> workspaces;
+    std::vector<stc::CholmodFactor::Workspace> workspaces;
     EXPECT_EQ((factor.solveOnThreads(B) - X).cwiseAbs().maxCoeff(), 0.0) << threads << " threads";
     EXPECT_EQ((factor.solveInParts(B, 4, workspaces) - X).cwiseAbs().maxCoeff(), 0.0) << threads << " threads";
   }
-  stc::SpdFactor::Workspace w1, w2;
+  stc::CholmodFactor::Workspace w1, w2;
   int wrong_left = 0, wrong_right = 0;
   std::thread a([&] {
     for (int r = 0; r < 10; ++r) wrong_left += !(factor.solve(B, w1) == X);
@@ -143,7 +143,7 @@ TEST(SpdFactor, ASupernodalFactorIn3dSolvesToRoundOffAndBitwiseOnAnyThreadCount)
 namespace {
 
 // C A⁻¹ Cᵀ by solves, as the Delassus operator was formed before the trailing block.
-Eigen::MatrixXd bySolves(const stc::SpdFactor& factor, const Eigen::SparseMatrix<double>& C) {
+Eigen::MatrixXd bySolves(const stc::CholmodFactor& factor, const Eigen::SparseMatrix<double>& C) {
   return C * factor.solve(Eigen::MatrixXd(C.transpose()));
 }
 
@@ -164,15 +164,15 @@ ZoneRows zoneRows(const stc::Problem& p, const std::vector<int>& zone) {
 // condensed(C) = C A⁻¹ Cᵀ without a solve: the operator the solves give, to round-off, symmetric
 // bitwise; the factor still solves A to round-off, and forces on the trailing dofs by a backward
 // solve alone; a C reading other dofs is refused.
-TEST(SpdFactor, TheTrailingBlockGivesTheCondensedOperatorOfTheSolves) {
+TEST(CholmodFactor, TheTrailingBlockGivesTheCondensedOperatorOfTheSolves) {
   const stc::Problem seed = stc::buildProblem(stc::test::seedScene(101, 11));
   const stc::Problem ball = stc::buildProblem(stc::test::hemisphereScene(6, 11));
   for (const stc::Problem* p : {&seed, &ball}) {
     std::vector<int> zone;
     for (int i = 0; i < p->contact.size(); i += 3) zone.push_back(i);
     const ZoneRows z = zoneRows(*p, zone);
-    const stc::SpdFactor plain(p->stiffness_free, "K_ff");
-    const stc::SpdFactor last(p->stiffness_free, "K_ff", z.dofs, 0.0);
+    const stc::CholmodFactor plain(p->stiffness_free, "K_ff");
+    const stc::CholmodFactor last(p->stiffness_free, "K_ff", z.dofs, 0.0);
     ASSERT_TRUE(last.condenses(z.B));
     EXPECT_FALSE(plain.condenses(z.B));
     EXPECT_FALSE(last.condenses(p->contact.B));  // the nodes left out read other dofs
@@ -195,16 +195,16 @@ TEST(SpdFactor, TheTrailingBlockGivesTheCondensedOperatorOfTheSolves) {
 
 // Below the work bound the dofs are not moved: the plain factor, nothing condensed. Forced, on this
 // small mesh CHOLMOD factorises simplicially: the block read from that form is the solves' too.
-TEST(SpdFactor, AFewTrailingDofsOnASmallFactorKeepThePlainOrdering) {
+TEST(CholmodFactor, AFewTrailingDofsOnASmallFactorKeepThePlainOrdering) {
   const ZoneRows z = zoneRows(problem(), {0, 1, 2});
-  EXPECT_FALSE(stc::SpdFactor(problem().stiffness_free, "K_ff", z.dofs).condenses(z.B));
-  const stc::SpdFactor forced(problem().stiffness_free, "K_ff", z.dofs, 0.0);
+  EXPECT_FALSE(stc::CholmodFactor(problem().stiffness_free, "K_ff", z.dofs).condenses(z.B));
+  const stc::CholmodFactor forced(problem().stiffness_free, "K_ff", z.dofs, 0.0);
   ASSERT_TRUE(forced.condenses(z.B));
   const Eigen::MatrixXd reference = bySolves(forced, z.B);
   EXPECT_LE((forced.condensed(z.B) - reference).norm(), 1e-12 * reference.norm());
-  EXPECT_THROW(stc::SpdFactor(problem().stiffness_free, "K_ff", {0, 0}, 0.0), std::invalid_argument);
+  EXPECT_THROW(stc::CholmodFactor(problem().stiffness_free, "K_ff", {0, 0}, 0.0), std::invalid_argument);
   // Every dof last: a dense block of n³/3 flops, far above ten times the sparse factorisation's.
   std::vector<int> every(static_cast<std::size_t>(problem().numFreeDofs()));
   for (std::size_t j = 0; j < every.size(); ++j) every[j] = static_cast<int>(j);
-  EXPECT_FALSE(stc::SpdFactor(problem().stiffness_free, "K_ff", every, 0.0).condenses(z.B));
+  EXPECT_FALSE(stc::CholmodFactor(problem().stiffness_free, "K_ff", every, 0.0).condenses(z.B));
 }

@@ -89,7 +89,7 @@ TEST(Displacement, IsInEquilibriumWithTheLoadsAndTheForces) {
   rhs += p.contact.B.transpose() * lambda;
   const Eigen::MatrixXd residual = p.stiffness_free * u - rhs;
   EXPECT_LE(residual.cwiseAbs().maxCoeff(), 1e-10 * rhs.cwiseAbs().maxCoeff());
-  stc::SpdFactor::Workspace workspace;
+  stc::CholmodFactor::Workspace workspace;
   const int k = p.numSteps() - 1;
   const Eigen::VectorXd at_k = stc::freeDisplacementAt(p, *factor, lambda.col(k), k, workspace);
   EXPECT_LE((at_k - u.col(k)).cwiseAbs().maxCoeff(), 1e-12 * u.col(k).cwiseAbs().maxCoeff());

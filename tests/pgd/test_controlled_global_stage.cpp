@@ -17,7 +17,7 @@
 #include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/indicator.hpp"
 #include "stcontact/latin/local_stage.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/pgd/separated_history.hpp"
@@ -86,7 +86,7 @@ TEST(ResponseBasis, StaysOrthonormalWhenCandidatesLieMostlyInItsSpan) {
 // have no responses, traces or energy columns.
 TEST(ResponseBasis, DirectionsSolvedInOneBlockAreThoseSolvedPassByPass) {
   const auto& f = fixture();
-  const stc::SpdFactor factor(stc::searchDirectionOperator(f.problem), "K + B^T k B");
+  const stc::CholmodFactor factor(stc::searchDirectionOperator(f.problem), "K + B^T k B");
   stc::pgd::ResponseBasis by_pass(f.problem, factor), in_block(f.problem, factor);
   std::srand(7);
   const Eigen::MatrixXd first = Eigen::MatrixXd::Random(f.problem.contact.rows(), 5);
@@ -116,7 +116,7 @@ TEST(ResponseBasis, DirectionsSolvedInOneBlockAreThoseSolvedPassByPass) {
 TEST(ResponseBasis, TracesFromTheFactorsTrailingBlockAreThoseOfTheSolves) {
   const auto& f = fixture();
   const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(f.problem);
-  const stc::SpdFactor plain(A, "K + B^T k B"), last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
+  const stc::CholmodFactor plain(A, "K + B^T k B"), last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
   stc::pgd::ResponseBasis solved(f.problem, plain), condensed(f.problem, last);
   EXPECT_FALSE(solved.condensesInterface());
   ASSERT_TRUE(condensed.condensesInterface());
@@ -147,7 +147,7 @@ TEST(ResponseBasis, TracesFromTheFactorsTrailingBlockAreThoseOfTheSolves) {
 TEST(ResponseBasis, CompletedToEveryRowIsOrthonormalWithTheTracesOfD) {
   const auto& f = fixture();
   const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(f.problem);
-  const stc::SpdFactor plain(A, "K + B^T k B"), last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
+  const stc::CholmodFactor plain(A, "K + B^T k B"), last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
   stc::pgd::ResponseBasis solved(f.problem, plain), condensed(f.problem, last);
   EXPECT_THROW(solved.completeToEveryRow(), std::logic_error);
   std::srand(13);
@@ -176,7 +176,7 @@ TEST(ResponseBasis, CompletedToEveryRowIsOrthonormalWithTheTracesOfD) {
 TEST(ResponseBasis, DisplacementTruncatedInEnergyStaysWithinItsBudget) {
   const auto& f = fixture();
   const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(f.problem);
-  const stc::SpdFactor last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
+  const stc::CholmodFactor last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
   stc::pgd::ResponseBasis basis(f.problem, last);
   ASSERT_TRUE(basis.condensesInterface());
   std::srand(17);
@@ -311,8 +311,8 @@ TEST(ControlledGlobalStage, RetimedIsTheStageOfTheOtherGrid) {
   EXPECT_THROW(stage.retime(other), std::invalid_argument);
 }
 
-// The separated stage orders its interface's dofs last at every size SpdFactor's bounds allow,
-// the incremental solver's factor only from SpdFactor::kTrailingWork: the stage saves a solve for
+// The separated stage orders its interface's dofs last at every size CholmodFactor's bounds allow,
+// the incremental solver's factor only from CholmodFactor::kTrailingWork: the stage saves a solve for
 // every direction it adds, not only the |J| of one Delassus operator. On the zone within reach of
 // the seed mesh (101 arc nodes, 58 rows, |J| · lnz ≈ 1e6) its directions' traces come from the
 // trailing block, while the incremental solver's factor of the same dofs stays plain.
@@ -324,7 +324,7 @@ TEST(ControlledGlobalStage, CondensesEvenTheSeedsZoneWhereTheIncrementalSolverDo
   ASSERT_EQ(problem.contact.rows(), 58);
   const stc::pgd::ControlledGlobalStage stage(problem, {});
   EXPECT_TRUE(stage.basis().condensesInterface());
-  const stc::SpdFactor incremental(problem.stiffness_free, "K_ff", stc::dofsReadBy(problem.contact.B));
+  const stc::CholmodFactor incremental(problem.stiffness_free, "K_ff", stc::dofsReadBy(problem.contact.B));
   EXPECT_FALSE(incremental.condenses(problem.contact.B));
 }
 

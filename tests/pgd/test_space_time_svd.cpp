@@ -10,7 +10,7 @@
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/operators/displacement.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 
@@ -153,7 +153,7 @@ TEST(EnergySvd, SeedSceneArpackAgreesWithDenseOnTheLeadingTenSingularValues) {
   const stc::Problem problem = stc::buildProblem(stc::test::seedScene());
   const stc::SolveResult solved = stc::solveIncremental(problem);
   ASSERT_TRUE(solved.summary.converged()) << solved.summary.message;
-  const stc::SpdFactor factor(problem.stiffness_free, "K_ff");
+  const stc::CholmodFactor factor(problem.stiffness_free, "K_ff");
   const Eigen::MatrixXd U = stc::fullDisplacements(problem, factor, solved.interface.lambda);
   ASSERT_EQ(U.rows(), 1142);
   ASSERT_EQ(U.cols(), 201);

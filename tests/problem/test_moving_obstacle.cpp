@@ -33,7 +33,7 @@ TEST(MovingObstacle, MovingTheObstacleIsDrivingTheBodyTheOtherWay) {
   EXPECT_LE((a.interface.lambda - b.interface.lambda).cwiseAbs().maxCoeff(), 1e-12 * scale);
   EXPECT_LE((a.interface.v - b.interface.v).cwiseAbs().maxCoeff(), 1e-12 * a.interface.v.cwiseAbs().maxCoeff());
   // u_pad (scene frame) = u_body − w(t): the body held at its top, the obstacle moved by −w.
-  const stc::SpdFactor K(body.stiffness_free, "K");
+  const stc::CholmodFactor K(body.stiffness_free, "K");
   const int top = std::get<stc::TriMesh>(body.body).group("top").nodes.front();
   for (int k : {10, 25, 40}) {
     const Eigen::VectorXd f_a = body.load(k) + body.contact.B.transpose() * a.interface.lambda.col(k);

@@ -104,7 +104,7 @@ TEST(ErrorEstimator, ExtrapolatesAMixtureOfAMonotoneAndAnAlternatingMode) {
 // the full displacement rebuilt with K_ff⁻¹: the incremental solution, and a LATIN iterate.
 TEST(EquilibriumEnergy, EqualsTheEnergyOfTheRebuiltFullField) {
   const stc::Problem problem = stc::buildProblem(stc::test::seedScene(31, 41));
-  const stc::SpdFactor K(problem.stiffness_free, "K");
+  const stc::CholmodFactor K(problem.stiffness_free, "K");
   stc::latin::GlobalStage global(problem);
   const stc::EquilibriumEnergy energy(problem, global.factor());
   const stc::SolveResult reference = stc::solveIncremental(problem);

@@ -16,7 +16,7 @@ struct StrategyFixture {
   Scene scene;
   Problem problem = buildProblem(scene);
   SolveResult incremental = solveIncremental(problem);
-  SpdFactor K{problem.stiffness_free, "K"};
+  CholmodFactor K{problem.stiffness_free, "K"};
   ErrorReference reference{problem, K, CondensedInterface::build(problem, K).delassus, incremental.interface.lambda};
 
   SolveResult solve(const std::string& name, double tolerance) const {

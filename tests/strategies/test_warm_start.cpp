@@ -22,7 +22,7 @@ namespace {
 struct Value {
   explicit Value(double mu) : scene(make(mu)), problem(stc::buildProblem(scene)) {
     const stc::SolveResult incremental = stc::solveIncremental(problem);
-    const stc::SpdFactor K(problem.stiffness_free, "K");
+    const stc::CholmodFactor K(problem.stiffness_free, "K");
     reference = std::make_unique<stc::ErrorReference>(problem, K, stc::CondensedInterface::build(problem, K).delassus,
                                                       incremental.interface.lambda);
   }

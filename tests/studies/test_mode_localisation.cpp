@@ -9,7 +9,7 @@
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/operators/displacement.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 #include "stcontact/studies/mode_localisation.hpp"
@@ -116,7 +116,7 @@ TEST(ModeLocalisation, SeedContactZoneIsTheClosedArcSegment) {
 // from about 0.4 R to below the arc's element size, and the share within 0.1 R grows.
 TEST(ModeLocalisation, SeedHigherModesLocaliseAtTheContact) {
   const Solved& s = seed();
-  const stc::SpdFactor factor(s.problem.stiffness_free, "K_ff");
+  const stc::CholmodFactor factor(s.problem.stiffness_free, "K_ff");
   const Eigen::MatrixXd U = stc::fullDisplacements(s.problem, factor, s.result.interface.lambda);
   const stc::pgd::SpaceTimeSvd svd = stc::pgd::energySvd(U, s.problem.stiffness, {stc::pgd::SvdMethod::Dense, 10});
   const ModeLocalisation loc = seedLocalisation();

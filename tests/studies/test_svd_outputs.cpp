@@ -13,7 +13,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/io/atomic_file.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/operators/displacement.hpp"
 #include "stcontact/studies/svd_figures.hpp"
 #include "stcontact/studies/svd_tables.hpp"
@@ -34,7 +34,7 @@ const Case& smallCase() {
   static const Case c = [] {
     Case c{stc::buildProblem(stc::test::seedScene(21, 21)), {}, nullptr};
     const stc::SolveResult solved = stc::solveIncremental(c.problem);
-    const stc::SpdFactor factor(c.problem.stiffness_free, "K_ff");
+    const stc::CholmodFactor factor(c.problem.stiffness_free, "K_ff");
     const Eigen::MatrixXd U = stc::fullDisplacements(c.problem, factor, solved.interface.lambda);
     c.svd = stc::pgd::energySvd(U, c.problem.stiffness);
     c.localisation = std::make_unique<stc::ModeLocalisation>(

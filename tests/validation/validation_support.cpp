@@ -19,7 +19,7 @@ const SeedSolutions& seedSolutions() {
     latin::LatinOptions options;
     options.stop.tolerance = kSeedLatinTolerance;
     s->latin = latin::solveLatin(s->problem, options);
-    s->stiffness_free = std::make_unique<SpdFactor>(s->problem.stiffness_free, "K_ff");
+    s->stiffness_free = std::make_unique<CholmodFactor>(s->problem.stiffness_free, "K_ff");
     return s;
   }();
   return *solved;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "stcontact/contact/contact_state.hpp"
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/solver/solve_result.hpp"
 
@@ -28,7 +28,7 @@ struct SeedSolutions {
   Problem problem;
   SolveResult incremental;
   SolveResult latin;
-  std::unique_ptr<SpdFactor> stiffness_free;
+  std::unique_ptr<CholmodFactor> stiffness_free;
 };
 const SeedSolutions& seedSolutions();
 

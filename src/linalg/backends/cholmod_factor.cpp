@@ -1,4 +1,4 @@
-#include "stcontact/linalg/spd_factor.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
 
 #include <Eigen/CholmodSupport>
 #include <algorithm>
@@ -13,27 +13,33 @@
 
 namespace stc {
 
-struct SpdFactor::Workspace::Impl {
+namespace {
+// A CHOLMOD workspace: what cholmod_solve2 writes on one thread.
+struct CholmodWorkspace final : SpdSolver::Workspace::State {
   cholmod_common common;
   cholmod_dense *X = nullptr, *Y = nullptr, *E = nullptr;  ///< cholmod_solve2's solution and buffers
-  Impl() {
+  CholmodWorkspace() {
     cholmod_start(&common);
     common.print = 0;  // failures are thrown, not printed
   }
-  ~Impl() {
+  ~CholmodWorkspace() override {
     cholmod_free_dense(&X, &common);
     cholmod_free_dense(&Y, &common);
     cholmod_free_dense(&E, &common);
     cholmod_finish(&common);
   }
-  Impl(const Impl&) = delete;
-  Impl& operator=(const Impl&) = delete;
+  CholmodWorkspace(const CholmodWorkspace&) = delete;
+  CholmodWorkspace& operator=(const CholmodWorkspace&) = delete;
 };
 
-SpdFactor::Workspace::Workspace() : impl_(std::make_unique<Impl>()) {}
-SpdFactor::Workspace::~Workspace() = default;
-SpdFactor::Workspace::Workspace(Workspace&&) noexcept = default;
-SpdFactor::Workspace& SpdFactor::Workspace::operator=(Workspace&&) noexcept = default;
+// The CHOLMOD state of `workspace`, made on first use (a workspace another backend filled is
+// refilled).
+CholmodWorkspace& cholmodState(SpdSolver::Workspace& workspace) {
+  if (auto* state = dynamic_cast<CholmodWorkspace*>(workspace.state.get())) return *state;
+  workspace.state = std::make_unique<CholmodWorkspace>();
+  return static_cast<CholmodWorkspace&>(*workspace.state);
+}
+}  // namespace
 
 // The factorisation is left to CHOLMOD's own choice (CHOLMOD_AUTO: supernodal when the flop count
 // per factor entry fl / lnz reaches common.supernodal_switch = 40). How the factor is solved with
@@ -75,16 +81,16 @@ std::unique_lock<std::mutex> blasTurn(bool supernodal) {
 // for a supernodal factor, which holds its BLAS turn throughout; kChunk else).
 template <class Body>
 void inChunks(bool supernodal, Eigen::Index columns, Body&& body) {
-  const Eigen::Index chunk = supernodal ? SpdFactor::kSupernodalChunk : SpdFactor::kChunk;
+  const Eigen::Index chunk = supernodal ? CholmodFactor::kSupernodalChunk : CholmodFactor::kChunk;
   const auto turn = blasTurn(supernodal);
   for (Eigen::Index c = 0; c < columns; c += chunk) body(c, std::min<Eigen::Index>(chunk, columns - c));
 }
 }  // namespace
 
-struct SpdFactor::Impl {
+struct CholmodFactor::Impl {
   cholmod_common common;
   cholmod_factor* L = nullptr;
-  Workspace own;  ///< for solve(B) without a workspace
+  mutable Workspace own;  ///< solveFromTrailing's
   int n = 0;
   Eigen::MatrixXd trailing_factor;     ///< L_JJ, dense lower triangular (empty: no trailing dofs)
   std::vector<int> trailing_position;  ///< per dof: its place among the trailing dofs, −1 if none
@@ -103,12 +109,12 @@ struct SpdFactor::Impl {
   Impl& operator=(const Impl&) = delete;
 };
 
-SpdFactor::SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& what)
+CholmodFactor::CholmodFactor(const Eigen::SparseMatrix<double>& A, const std::string& what)
     : impl_(std::make_unique<Impl>()) {
   factorise(A, what, {}, 0.0);
 }
 
-SpdFactor::SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& what, const std::vector<int>& trailing,
+CholmodFactor::CholmodFactor(const Eigen::SparseMatrix<double>& A, const std::string& what, const std::vector<int>& trailing,
                      double min_work)
     : impl_(std::make_unique<Impl>()) {
   factorise(A, what, trailing, min_work);
@@ -121,7 +127,7 @@ SpdFactor::SpdFactor(const Eigen::SparseMatrix<double>& A, const std::string& wh
 // (the trailing block makes L larger, 1.75 times in 2D, and every later solve dearer): the
 // measurements behind kTrailingWork are in docs/threads.md, "The Delassus operator from the
 // factorisation".
-void SpdFactor::factorise(const Eigen::SparseMatrix<double>& A, const std::string& what,
+void CholmodFactor::factorise(const Eigen::SparseMatrix<double>& A, const std::string& what,
                           const std::vector<int>& trailing, double min_work) {
   Impl& f = *impl_;
   f.n = static_cast<int>(A.rows());
@@ -154,21 +160,19 @@ void SpdFactor::factorise(const Eigen::SparseMatrix<double>& A, const std::strin
     throw std::runtime_error("CHOLMOD could not convert the supernodal factor of " + what + " to a simplicial one");
 }
 
-void SpdFactor::keepTrailing(const std::vector<int>& trailing) {
+void CholmodFactor::keepTrailing(const std::vector<int>& trailing) {
   Impl& f = *impl_;
   f.trailing_factor = linalg::trailingBlock(*f.L, static_cast<int>(trailing.size()));
   f.trailing_position.assign(static_cast<std::size_t>(f.n), -1);
   for (std::size_t k = 0; k < trailing.size(); ++k) f.trailing_position[static_cast<std::size_t>(trailing[k])] = static_cast<int>(k);
 }
 
-SpdFactor::~SpdFactor() = default;
-SpdFactor::SpdFactor(SpdFactor&&) noexcept = default;
-SpdFactor& SpdFactor::operator=(SpdFactor&&) noexcept = default;
+CholmodFactor::~CholmodFactor() = default;
 
-Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B, Workspace& workspace) const {
+Eigen::MatrixXd CholmodFactor::solve(const Eigen::MatrixXd& B, Workspace& workspace) const {
   const Eigen::Index n = impl_->n;
-  if (B.rows() != n) throw std::invalid_argument("SpdFactor::solve: right-hand side has the wrong number of rows");
-  Workspace::Impl& w = *workspace.impl_;
+  if (B.rows() != n) throw std::invalid_argument("CholmodFactor::solve: right-hand side has the wrong number of rows");
+  CholmodWorkspace& w = cholmodState(workspace);
   Eigen::MatrixXd X(n, B.cols());
   inChunks(isSupernodal(), B.cols(), [&](Eigen::Index c, Eigen::Index cols) {
     cholmod_dense b = denseView(B.data() + c * n, n, cols);  // B's columns c … c + cols − 1
@@ -181,17 +185,15 @@ Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B, Workspace& workspace)
   return X;
 }
 
-Eigen::MatrixXd SpdFactor::solve(const Eigen::MatrixXd& B) const { return solve(B, impl_->own); }
-
-Eigen::MatrixXd SpdFactor::solveOnThreads(const Eigen::MatrixXd& B) const {
+Eigen::MatrixXd CholmodFactor::solveOnThreads(const Eigen::MatrixXd& B) const {
   if (isSupernodal() || threadCount() == 1 || B.cols() <= kChunk) return solve(B);
   std::vector<Workspace> workspaces;
   return solveInParts(B, kChunk, workspaces);
 }
 
-Eigen::MatrixXd SpdFactor::solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const {
+Eigen::MatrixXd CholmodFactor::solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const {
   if (part < 1 || part > kChunk)
-    throw std::invalid_argument("SpdFactor::solveInParts: part must be in [1, " + std::to_string(kChunk) + "]");
+    throw std::invalid_argument("CholmodFactor::solveInParts: part must be in [1, " + std::to_string(kChunk) + "]");
   if (isSupernodal()) {  // one BLAS caller at a time (blasTurn): the whole block on this thread
     if (workspaces.empty()) workspaces.emplace_back();
     return solve(B, workspaces.front());
@@ -208,10 +210,7 @@ Eigen::MatrixXd SpdFactor::solveInParts(const Eigen::MatrixXd& B, int part, std:
   });
   return X;
 }
-Eigen::VectorXd SpdFactor::solve(const Eigen::VectorXd& b) const {
-  return solve(Eigen::MatrixXd(b), impl_->own).col(0);
-}
-bool SpdFactor::condenses(const Eigen::SparseMatrix<double>& C) const {
+bool CholmodFactor::condenses(const Eigen::SparseMatrix<double>& C) const {
   if (impl_->trailing_position.empty() || C.cols() != impl_->n) return false;
   for (Eigen::Index k = 0; k < C.outerSize(); ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(C, k); it; ++it)
@@ -219,7 +218,7 @@ bool SpdFactor::condenses(const Eigen::SparseMatrix<double>& C) const {
   return true;
 }
 
-Eigen::SparseMatrix<double> SpdFactor::trailingPart(const Eigen::SparseMatrix<double>& C, const char* caller) const {
+Eigen::SparseMatrix<double> CholmodFactor::trailingPart(const Eigen::SparseMatrix<double>& C, const char* caller) const {
   if (!condenses(C)) throw std::invalid_argument(std::string(caller) + ": C reads dofs outside the trailing ones");
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(static_cast<std::size_t>(C.nonZeros()));
@@ -232,22 +231,22 @@ Eigen::SparseMatrix<double> SpdFactor::trailingPart(const Eigen::SparseMatrix<do
   return part;
 }
 
-Eigen::MatrixXd SpdFactor::condensed(const Eigen::SparseMatrix<double>& C) const {
-  Eigen::MatrixXd Y = trailingPart(C, "SpdFactor::condensed");  // C_Jᵀ, then L_JJ⁻¹ C_Jᵀ
+Eigen::MatrixXd CholmodFactor::condensed(const Eigen::SparseMatrix<double>& C) const {
+  Eigen::MatrixXd Y = trailingPart(C, "CholmodFactor::condensed");  // C_Jᵀ, then L_JJ⁻¹ C_Jᵀ
   impl_->trailing_factor.triangularView<Eigen::Lower>().solveInPlace(Y);
   Eigen::MatrixXd W = Eigen::MatrixXd::Zero(C.rows(), C.rows());
   W.selfadjointView<Eigen::Lower>().rankUpdate(Y.transpose());
   return W.selfadjointView<Eigen::Lower>();
 }
 
-Eigen::MatrixXd SpdFactor::solveFromTrailing(const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& U) const {
-  if (U.rows() != R.rows()) throw std::invalid_argument("SpdFactor::solveFromTrailing: U must have R's rows");
+Eigen::MatrixXd CholmodFactor::solveFromTrailing(const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& U) const {
+  if (U.rows() != R.rows()) throw std::invalid_argument("CholmodFactor::solveFromTrailing: U must have R's rows");
   const Impl& f = *impl_;
   const Eigen::Index n = f.n, count = f.trailing_factor.rows();
   // (P Rᵀ U) on the trailing block, then L_JJ⁻¹ of it.
-  Eigen::MatrixXd Y = trailingPart(R, "SpdFactor::solveFromTrailing") * U;
+  Eigen::MatrixXd Y = trailingPart(R, "CholmodFactor::solveFromTrailing") * U;
   f.trailing_factor.triangularView<Eigen::Lower>().solveInPlace(Y);
-  Workspace::Impl& w = *f.own.impl_;
+  CholmodWorkspace& w = cholmodState(f.own);
   const auto* perm = static_cast<const int*>(f.L->Perm);
   Eigen::MatrixXd X(n, U.cols());
   inChunks(isSupernodal(), U.cols(), [&](Eigen::Index c, Eigen::Index cols) {
@@ -264,8 +263,8 @@ Eigen::MatrixXd SpdFactor::solveFromTrailing(const Eigen::SparseMatrix<double>& 
   return X;
 }
 
-int SpdFactor::size() const { return impl_->n; }
-bool SpdFactor::isSupernodal() const { return impl_->L->is_super != 0; }
-double SpdFactor::factorNonZeros() const { return impl_->common.lnz; }
+int CholmodFactor::size() const { return impl_->n; }
+bool CholmodFactor::isSupernodal() const { return impl_->L->is_super != 0; }
+double CholmodFactor::factorNonZeros() const { return impl_->common.lnz; }
 
 }  // namespace stc

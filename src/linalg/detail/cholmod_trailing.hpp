@@ -1,6 +1,6 @@
 #pragma once
-// The trailing block of a CHOLMOD factor, for SpdFactor's factor with given dofs ordered last
-// (spd_factor.hpp). With the dofs J eliminated after every other dof I, the trailing |J| × |J|
+// The trailing block of a CHOLMOD factor, for SpdSolver's factor with given dofs ordered last
+// (src/linalg/backends/cholmod_factor.hpp). With the dofs J eliminated after every other dof I, the trailing |J| × |J|
 // block of L is the Cholesky factor of the Schur complement
 //   S = A_JJ − A_JI A_II⁻¹ A_IJ = L_JJ L_JJᵀ,   and   (A⁻¹)_JJ = S⁻¹
 // (the block inverse; e.g. Golub & Van Loan, Matrix Computations, 4th ed., §3.2.10), so the

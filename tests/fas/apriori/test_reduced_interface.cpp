@@ -49,7 +49,7 @@ std::vector<int> unloadedNodes(const stc::ContactInterface& contact, const Eigen
 struct Mismatch {
   double loaded = 0.0, all = 0.0;
 };
-Mismatch equilibriumMismatch(const stc::Problem& problem, const stc::SpdFactor& K, const stc::InterfaceHistory& s) {
+Mismatch equilibriumMismatch(const stc::Problem& problem, const stc::CholmodFactor& K, const stc::InterfaceHistory& s) {
   const stc::ContactInterface& contact = problem.contact;
   const std::vector<int> loaded =
       stc::rowsOfNodes(contact.dimension, stc::otherNodes(contact.size(), unloadedNodes(contact, s.lambda)));
@@ -69,7 +69,7 @@ Mismatch equilibriumMismatch(const stc::Problem& problem, const stc::SpdFactor& 
 // The loaded nodes' rows in equilibrium to the sparse solves' accuracy; the nodes left out, lifted
 // through a history truncated to what the estimate leaves of the tolerance
 // (pgd::ResponseBasis::displacementOn), within the tolerance τ = 1e-6 of the history's scale.
-void expectEquilibrium(const stc::Problem& problem, const stc::SpdFactor& K, const stc::InterfaceHistory& s) {
+void expectEquilibrium(const stc::Problem& problem, const stc::CholmodFactor& K, const stc::InterfaceHistory& s) {
   ASSERT_LT(unloadedNodes(problem.contact, s.lambda).size(), static_cast<size_t>(problem.contact.size()));
   const Mismatch mismatch = equilibriumMismatch(problem, K, s);
   EXPECT_LE(mismatch.loaded, 1e-8);

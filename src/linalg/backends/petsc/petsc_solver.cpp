@@ -1,0 +1,205 @@
+#include "stcontact/linalg/backends/petsc/petsc_solver.hpp"
+
+#include <petscksp.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <mutex>
+#include <stdexcept>
+#include <vector>
+
+#include "stcontact/core/input_error.hpp"
+
+namespace stc {
+namespace {
+
+// A PETSc call that failed: std::runtime_error naming the call (PETSc's own message is not printed:
+// PetscReturnErrorHandler, below).
+void check(PetscErrorCode code, const char* call) {
+  if (code == 0) return;
+  const char* text = nullptr;
+  PetscErrorMessage(code, &text, nullptr);
+  throw std::runtime_error(std::string("PETSc: ") + call + " failed (" + (text ? text : "error " + std::to_string(code)) + ")");
+}
+
+// PETSc (and MPI, which it starts when no one has) initialised once per process, finalised at
+// exit, after every solver object is gone (their owners are destroyed when main returns or the
+// interpreter ends, before the handlers of std::atexit run).
+void ensurePetsc() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    PetscBool ready = PETSC_FALSE;
+    check(PetscInitialized(&ready), "PetscInitialized");
+    if (ready) return;
+    check(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
+    check(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), "PetscPushErrorHandler");
+    std::atexit([] { PetscFinalize(); });
+  });
+}
+
+// A (lower triangle used, as CHOLMOD's) as a sequential AIJ matrix holding both triangles.
+Mat toPetsc(const Eigen::SparseMatrix<double>& A) {
+  using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor, PetscInt>;
+  RowMajor full = A.selfadjointView<Eigen::Lower>();
+  full.makeCompressed();
+  Mat M = nullptr;
+  const auto n = static_cast<PetscInt>(A.rows());
+  check(MatCreate(PETSC_COMM_SELF, &M), "MatCreate");
+  check(MatSetSizes(M, n, n, n, n), "MatSetSizes");
+  check(MatSetType(M, MATSEQAIJ), "MatSetType");
+  check(MatSeqAIJSetPreallocationCSR(M, full.outerIndexPtr(), full.innerIndexPtr(), full.valuePtr()),
+        "MatSeqAIJSetPreallocationCSR");
+  check(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  check(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "MatSetOption");
+  return M;
+}
+
+// The columns of R (n × k) as PETSc's near-null space of M.
+void setNearNullSpace(Mat M, const Eigen::MatrixXd& R) {
+  if (R.cols() == 0) return;
+  std::vector<Vec> vectors(static_cast<std::size_t>(R.cols()));
+  for (Eigen::Index j = 0; j < R.cols(); ++j) {
+    check(MatCreateVecs(M, &vectors[static_cast<std::size_t>(j)], nullptr), "MatCreateVecs");
+    PetscScalar* v = nullptr;
+    check(VecGetArray(vectors[static_cast<std::size_t>(j)], &v), "VecGetArray");
+    std::copy(R.col(j).data(), R.col(j).data() + R.rows(), v);
+    check(VecRestoreArray(vectors[static_cast<std::size_t>(j)], &v), "VecRestoreArray");
+  }
+  MatNullSpace space = nullptr;
+  check(MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, static_cast<PetscInt>(R.cols()), vectors.data(), &space),
+        "MatNullSpaceCreate");
+  check(MatSetNearNullSpace(M, space), "MatSetNearNullSpace");
+  check(MatNullSpaceDestroy(&space), "MatNullSpaceDestroy");
+  for (Vec& v : vectors) check(VecDestroy(&v), "VecDestroy");
+}
+
+class PetscSolver final : public SpdSolver {
+ public:
+  PetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what, const LinearSolverOptions& options,
+              const Eigen::MatrixXd& near_null_space)
+      : n_(static_cast<int>(A.rows())), backend_(options.backend) {
+    ensurePetsc();
+    matrix_ = toPetsc(A);
+    check(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
+    check(KSPSetOptionsPrefix(ksp_, "stc_"), "KSPSetOptionsPrefix");
+    check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
+    PC pc = nullptr;
+    check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+    if (backend_ == LinearBackend::Mumps) {
+      check(KSPSetType(ksp_, KSPPREONLY), "KSPSetType");
+      check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+    } else {
+      setNearNullSpace(matrix_, near_null_space);
+      check(KSPSetType(ksp_, KSPCG), "KSPSetType");
+      check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+      check(KSPSetTolerances(ksp_, options.rtol > 0.0 ? options.rtol : LinearSolverOptions::kRtolFloor, 0.0,
+                             PETSC_DEFAULT, options.max_iterations),
+            "KSPSetTolerances");
+      check(PCSetType(pc, PCGAMG), "PCSetType");
+    }
+    check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+    check(KSPSetUp(ksp_), "KSPSetUp");  // the factorisation, or the AMG hierarchy
+    if (backend_ == LinearBackend::Mumps) checkFactor(what);
+  }
+
+  ~PetscSolver() override {
+    KSPDestroy(&ksp_);
+    MatDestroy(&matrix_);
+  }
+
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& B, Workspace&) const override {
+    if (B.rows() != n_) throw std::invalid_argument("SpdSolver::solve: right-hand side has the wrong number of rows");
+    Eigen::MatrixXd X(n_, B.cols());
+    if (B.cols() == 0) return X;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (backend_ == LinearBackend::Mumps) solveDirect(B, X);
+    else for (Eigen::Index j = 0; j < B.cols(); ++j) solveColumn(B.col(j).data(), X.col(j).data());
+    return X;
+  }
+
+  int size() const override { return n_; }
+  std::string backend() const override { return backend_ == LinearBackend::Mumps ? "mumps" : "cg-gamg"; }
+  bool isDirect() const override { return backend_ == LinearBackend::Mumps; }
+  double factorNonZeros() const override { return factor_entries_; }
+  KrylovCounts krylovCounts() const override {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return counts_;
+  }
+
+ private:
+  int n_;
+  LinearBackend backend_;
+  Mat matrix_ = nullptr;
+  KSP ksp_ = nullptr;
+  double factor_entries_ = 0.0;
+  mutable std::mutex mutex_;
+  mutable KrylovCounts counts_;
+
+  // MUMPS's verdict on A: singular (INFOG(1) < 0) or with negative pivots (INFOG(12) > 0) is not
+  // positive definite; INFOG(29) is the number of entries in the factors.
+  void checkFactor(const std::string& what) {
+    PC pc = nullptr;
+    Mat F = nullptr;
+    check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    PetscInt status = 0, negative = 0, entries = 0;
+    check(MatMumpsGetInfog(F, 1, &status), "MatMumpsGetInfog");
+    check(MatMumpsGetInfog(F, 12, &negative), "MatMumpsGetInfog");
+    check(MatMumpsGetInfog(F, 29, &entries), "MatMumpsGetInfog");
+    if (status < 0 || negative > 0)
+      throw InputError(what + " is not positive definite (do the Dirichlet conditions fix every rigid-body motion?)");
+    factor_entries_ = static_cast<double>(entries);
+  }
+
+  // X = A⁻¹ B by MUMPS's multiple right-hand-side solve.
+  void solveDirect(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
+    PC pc = nullptr;
+    Mat F = nullptr, b = nullptr, x = nullptr;
+    check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    const auto rows = static_cast<PetscInt>(n_), cols = static_cast<PetscInt>(B.cols());
+    check(MatCreateSeqDense(PETSC_COMM_SELF, rows, cols, const_cast<double*>(B.data()), &b), "MatCreateSeqDense");
+    check(MatCreateSeqDense(PETSC_COMM_SELF, rows, cols, X.data(), &x), "MatCreateSeqDense");
+    const PetscErrorCode code = MatMatSolve(F, b, x);
+    MatDestroy(&b);
+    MatDestroy(&x);
+    check(code, "MatMatSolve (MUMPS)");
+  }
+
+  // x = A⁻¹ b by CG to the relative residual, from x = 0.
+  void solveColumn(const double* b, double* x) const {
+    Vec vb = nullptr, vx = nullptr;
+    const auto rows = static_cast<PetscInt>(n_);
+    check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, rows, b, &vb), "VecCreateSeqWithArray");
+    check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, rows, x, &vx), "VecCreateSeqWithArray");
+    const PetscErrorCode code = KSPSolve(ksp_, vb, vx);
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    PetscInt iterations = 0;
+    KSPGetConvergedReason(ksp_, &reason);
+    KSPGetIterationNumber(ksp_, &iterations);
+    VecDestroy(&vb);
+    VecDestroy(&vx);
+    check(code, "KSPSolve");
+    ++counts_.solves;
+    counts_.iterations += iterations;
+    counts_.max_iterations = std::max(counts_.max_iterations, static_cast<int>(iterations));
+    if (reason < 0)
+      throw LinearSolveFailure("the cg-gamg linear solve did not converge: " + std::string(KSPConvergedReasons[reason]) +
+                               " after " + std::to_string(iterations) +
+                               " iterations (solver.linear_max_iterations, solver.linear_rtol; or solver.linear = "
+                               "\"mumps\" or \"cholmod\")");
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<SpdSolver> preparePetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,
+                                              const LinearSolverOptions& options,
+                                              const Eigen::MatrixXd& near_null_space) {
+  if (options.backend == LinearBackend::Cholmod)
+    throw std::logic_error("preparePetscSolver: cholmod is not a PETSc backend");
+  return std::make_unique<PetscSolver>(A, what, options, near_null_space);
+}
+
+}  // namespace stc

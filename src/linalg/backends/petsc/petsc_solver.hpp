@@ -1,0 +1,30 @@
+#pragma once
+// The PETSc backends of the linear-solver seam (src/linalg/spd_solver.hpp), built when PETSc is
+// found (cmake/StcDependencies.cmake):
+//   mumps     KSPPREONLY + PCCHOLESKY with MUMPS (symmetric, SYM = 2, so that a negative pivot is
+//             counted, INFOG(12), and refused); blocks of right-hand sides through MatMatSolve;
+//   cg-gamg   KSPCG on the unpreconditioned residual, PCGAMG with the near-null space given (the
+//             rigid-body motions), set up once and reused for every right-hand side; each column
+//             stops at ‖b − A x‖ ≤ rtol ‖b‖ (LinearSolverOptions), a column that does not is a
+//             LinearSolveFailure.
+// PETSc is initialised on first use (reading the environment's PETSC_OPTIONS, the experts'
+// pass-through, with the prefix "stc_" for these solvers: PETSC_OPTIONS="-stc_ksp_monitor") and
+// finalised at exit. One process, PETSC_COMM_SELF; a solve holds the solver's lock (PETSc objects
+// are not thread-safe).
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string>
+
+#include "stcontact/linalg/spd_solver.hpp"
+#include "stcontact/options/linear_solver_options.hpp"
+
+namespace stc {
+
+/// A prepared by PETSc: options.backend is Mumps or CgGamg. Throws InputError naming `what` when
+/// MUMPS finds A singular or not positive definite.
+std::unique_ptr<SpdSolver> preparePetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,
+                                              const LinearSolverOptions& options,
+                                              const Eigen::MatrixXd& near_null_space);
+
+}  // namespace stc

@@ -1,0 +1,98 @@
+#pragma once
+// The linear-solver seam: a symmetric positive definite operator A prepared once (a factor, or a
+// preconditioner), then blocks of right-hand sides solved, X = A⁻¹ B (docs/method.md §2,
+// "factorise once, then one multi-right-hand-side solve per iteration"; docs/linear_solvers.md).
+// One interface, one file per backend (src/linalg/backends/), one test suite run on every backend
+// built (tests/linalg/test_spd_solver.cpp):
+//   cholmod   CHOLMOD's sparse Cholesky, the embedded default (cholmod_factor.hpp);
+//   mumps     MUMPS's Cholesky through PETSc (built when PETSc is found);
+//   cg-gamg   conjugate gradients preconditioned by PETSc's GAMG with the rigid-body near-null
+//             space: inexact, to a relative residual (LinearSolverOptions).
+// A direct backend may also hand out the condensed operator C A⁻¹ Cᵀ of the dofs its caller named
+// when it was prepared (CHOLMOD's trailing block): a capability, asked with condenses(); every
+// caller has the fallback of solving with Cᵀ.
+// Threads: solve(B, workspace) only reads the prepared operator; what it writes lives in the
+// workspace. Whether two threads may solve at once is the backend's (solveInParts decides).
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace stc {
+
+/// An iterative solve that did not reach its tolerance (divergence, the iteration cap), naming the
+/// backend and its reason: the run ends as a numerical issue, never with a wrong answer.
+class LinearSolveFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// What the Krylov solves of an iterative backend took so far (zero for a direct one).
+struct KrylovCounts {
+  long long solves = 0;      ///< right-hand sides solved
+  long long iterations = 0;  ///< their iterations in all
+  int max_iterations = 0;    ///< the most one right-hand side took
+};
+
+class SpdSolver {
+ public:
+  /// What one thread's solves write; the backend fills it on first use. Not shared between
+  /// threads at the same time.
+  class Workspace {
+   public:
+    struct State {
+      virtual ~State() = default;
+    };
+    Workspace();
+    ~Workspace();
+    Workspace(Workspace&&) noexcept;
+    Workspace& operator=(Workspace&&) noexcept;
+    std::unique_ptr<State> state;
+  };
+
+  SpdSolver();
+  virtual ~SpdSolver();
+  SpdSolver(const SpdSolver&) = delete;
+  SpdSolver& operator=(const SpdSolver&) = delete;
+
+  /// X = A⁻¹ B for every column of B (size() rows), writing into `workspace`. Throws
+  /// std::invalid_argument for a B of another row count, LinearSolveFailure when an iterative solve
+  /// does not reach its tolerance.
+  virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& B, Workspace& workspace) const = 0;
+  /// The same with the solver's own workspace: one thread at a time.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// The columns of B in parts of `part` columns, handed out to threads each with workspaces[t]
+  /// (added as needed, kept for the next call): the result does not depend on the thread count.
+  /// Default: the whole of B on this thread with workspaces[0]. Not from inside a parallelFor body.
+  virtual Eigen::MatrixXd solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const;
+  /// Many columns of one caller (the Delassus operator of the incremental solver) over the threads
+  /// where the backend can. Default: solve(B).
+  virtual Eigen::MatrixXd solveOnThreads(const Eigen::MatrixXd& B) const;
+
+  /// Whether C A⁻¹ Cᵀ is at hand without solves: every nonzero column of C (r × n) among the dofs
+  /// named when A was prepared. Default: never.
+  virtual bool condenses(const Eigen::SparseMatrix<double>& C) const;
+  /// C A⁻¹ Cᵀ (r × r) for a C that condenses(); std::invalid_argument for another.
+  virtual Eigen::MatrixXd condensed(const Eigen::SparseMatrix<double>& C) const;
+  /// A⁻¹ Rᵀ U for an R that condenses() (about half a solve per column on CHOLMOD's trailing
+  /// block); std::invalid_argument for another.
+  virtual Eigen::MatrixXd solveFromTrailing(const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& U) const;
+
+  virtual int size() const = 0;
+  /// The backend's name as solver.linear spells it ("cholmod", "mumps", "cg-gamg").
+  virtual std::string backend() const = 0;
+  /// Whether a solve is exact to round-off (a direct factor) or to a residual tolerance.
+  virtual bool isDirect() const = 0;
+  /// Entries of the factor (direct backends), 0 when there is none: about 8 bytes each.
+  virtual double factorNonZeros() const = 0;
+  /// The Krylov solves so far (iterative backends).
+  virtual KrylovCounts krylovCounts() const;
+
+ private:
+  mutable Workspace own_;  ///< solve(B)'s
+};
+
+}  // namespace stc

@@ -1,0 +1,30 @@
+#include "stcontact/options/linear_solver_options.hpp"
+
+#include <algorithm>
+
+#include "stcontact/build_config.hpp"
+
+namespace stc {
+
+bool petscBackendsBuilt() {
+#if STC_HAVE_PETSC
+  return true;
+#else
+  return false;
+#endif
+}
+
+void LinearSolverOptions::validate() const {
+  validateFields(*this, "solver");
+  if (backend != LinearBackend::Cholmod && !petscBackendsBuilt())
+    throw InputError(
+        "solver option linear: this stcontact was built without PETSc, so only \"cholmod\" is available "
+        "(install PETSc, libpetsc-real-dev on Debian, and rebuild: docs/linear_solvers.md)");
+}
+
+double LinearSolverOptions::residualTolerance(double tolerance) const {
+  if (rtol > 0.0) return rtol;
+  return std::max(kRtolFloor, kRtolPerTolerance * tolerance);
+}
+
+}  // namespace stc

@@ -1,0 +1,66 @@
+#pragma once
+// Which backend of the linear-solver seam (src/linalg/spd_solver.hpp) prepares and solves the run's
+// sparse SPD operators (K_ff and K_ff + Bᵀ k B), and how exactly an iterative one solves
+// (docs/linear_solvers.md). Keys of the scene's [solver] table: the engine under every strategy.
+// Experts pass further PETSc options through the environment variable PETSC_OPTIONS, which PETSc
+// reads itself (e.g. PETSC_OPTIONS="-ksp_monitor -pc_gamg_threshold 0.02").
+#include <array>
+#include <string_view>
+#include <utility>
+
+#include "stcontact/options/option_fields.hpp"
+
+namespace stc {
+
+enum class LinearBackend {
+  /// CHOLMOD's sparse Cholesky (SuiteSparse), in the process: the embedded default.
+  Cholmod,
+  /// MUMPS's sparse Cholesky through PETSc (built with PETSc).
+  Mumps,
+  /// Conjugate gradients preconditioned by PETSc's smoothed-aggregation AMG (GAMG) with the
+  /// rigid-body modes as its near-null space (built with PETSc): inexact, to linear_rtol.
+  CgGamg,
+};
+
+inline constexpr std::array<std::pair<std::string_view, LinearBackend>, 3> kLinearBackends = {{
+    {"cholmod", LinearBackend::Cholmod},
+    {"mumps", LinearBackend::Mumps},
+    {"cg-gamg", LinearBackend::CgGamg},
+}};
+
+/// The backend's name as solver.linear spells it.
+constexpr std::string_view nameOf(LinearBackend backend) {
+  for (const auto& [name, b] : kLinearBackends)
+    if (b == backend) return name;
+  return "unknown";
+}
+
+struct LinearSolverOptions {
+  LinearBackend backend = LinearBackend::Cholmod;
+  /// An iterative backend stops each right-hand side at ‖b − A x‖ ≤ rtol ‖b‖. 0: derived from the
+  /// strategy's tolerance τ, rtol = kRtolPerTolerance · τ (at least kRtolFloor): docs/method.md §2,
+  /// "Inexact linear solves".
+  double rtol = 0.0;
+  /// Krylov iterations per right-hand side at most; a solve that reaches it ends the run as a
+  /// numerical issue naming the backend.
+  int max_iterations = 1000;
+
+  static constexpr double kRtolPerTolerance = 1e-4;
+  static constexpr double kRtolFloor = 1e-12;
+
+  template <class Self, class Visit>
+  static void fields(Self& o, Visit&& visit) {
+    visit("linear", o.backend, Keywords<LinearBackend>(kLinearBackends));
+    visit("linear_rtol", o.rtol, offOrInOpenUnit());
+    visit("linear_max_iterations", o.max_iterations, atLeast(1));
+  }
+  /// The fields, and a PETSc backend only in a build with PETSc (InputError naming solver.linear).
+  void validate() const;
+  /// The relative residual an iterative solve stops at under a strategy of tolerance τ.
+  double residualTolerance(double tolerance) const;
+};
+
+/// Whether this build has the PETSc backends.
+bool petscBackendsBuilt();
+
+}  // namespace stc

@@ -1,0 +1,178 @@
+// The linear-solver seam (src/linalg/spd_solver.hpp): one suite, instantiated for every backend this
+// build has (cholmod always; mumps and cg-gamg with PETSc). Each backend solves K_ff of the seed scene
+// and K + Bᵀ k B of the half-ball to its promise (round-off for a direct one, the relative residual
+// for an iterative one), agrees with CHOLMOD, refuses a matrix with rigid motions (a direct one when
+// it is prepared, an iterative one when a solve cannot reach its tolerance), and says what it has
+// (no condensed operator but CHOLMOD's trailing block).
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fixtures/hemisphere_scene.hpp"
+#include "fixtures/seed_scene.hpp"
+#include "stcontact/core/input_error.hpp"
+#include "stcontact/linalg/backends/cholmod_factor.hpp"
+#include "stcontact/linalg/prepare_spd_solver.hpp"
+#include "stcontact/operators/prepared_operators.hpp"
+#include "stcontact/operators/rigid_body_modes.hpp"
+#include "stcontact/problem/problem.hpp"
+
+namespace {
+
+const stc::Problem& seed() {
+  static const stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 41));
+  return p;
+}
+
+const stc::Problem& halfBall() {
+  static const stc::Problem p = stc::buildProblem(stc::test::hemisphereScene(4, 5));
+  return p;
+}
+
+// Random right-hand sides, from a seed (the same every run).
+Eigen::MatrixXd randomRightHandSides(const stc::Problem& p, unsigned seed, int columns) {
+  std::srand(seed);
+  return Eigen::MatrixXd::Random(p.numFreeDofs(), columns);
+}
+
+// The iterative backends' relative residual in these tests: tight, so that they agree with CHOLMOD
+// to 1e-6 on operators of condition number up to about 1e6.
+constexpr double kRtol = 1e-12;
+
+class SpdSolverBackend : public testing::TestWithParam<stc::LinearBackend> {
+ protected:
+  stc::LinearSolverOptions options() const {
+    stc::LinearSolverOptions o;
+    o.backend = GetParam();
+    o.rtol = kRtol;
+    o.max_iterations = 500;
+    return o;
+  }
+  std::unique_ptr<stc::SpdSolver> prepare(const stc::Problem& p, const Eigen::SparseMatrix<double>& A) const {
+    return stc::prepareSpdSolver(A, "A", options(), {{}, 1e8, stc::rigidBodyModesOfFreeDofs(p)});
+  }
+  bool direct() const { return GetParam() != stc::LinearBackend::CgGamg; }
+  // The bound on ‖A X − B‖ / ‖B‖ column by column: round-off, or the residual tolerance.
+  double residualBound() const { return direct() ? 1e-10 : kRtol * 1.0001; }
+};
+
+// Column by column: ‖A x_j − b_j‖ / ‖b_j‖.
+double worstRelativeResidual(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& X, const Eigen::MatrixXd& B) {
+  const Eigen::SparseMatrix<double> full = A.selfadjointView<Eigen::Lower>();
+  const Eigen::MatrixXd R = full * X - B;
+  double worst = 0.0;
+  for (Eigen::Index j = 0; j < B.cols(); ++j) worst = std::max(worst, R.col(j).norm() / B.col(j).norm());
+  return worst;
+}
+
+}  // namespace
+
+TEST_P(SpdSolverBackend, SolvesEveryColumnToItsPromise) {
+  const auto& A = seed().stiffness_free;
+  const auto solver = prepare(seed(), A);
+  EXPECT_EQ(solver->size(), A.rows());
+  EXPECT_EQ(solver->isDirect(), direct());
+  const Eigen::MatrixXd B = randomRightHandSides(seed(), 5, 37);
+  const Eigen::MatrixXd X = solver->solve(B);
+  EXPECT_LE(worstRelativeResidual(A, X, B), residualBound());
+  const Eigen::VectorXd x = solver->solve(Eigen::VectorXd(B.col(20)));
+  EXPECT_LE((x - X.col(20)).norm(), 1e-9 * X.col(20).norm());
+}
+
+TEST_P(SpdSolverBackend, SolvesTheHalfBallsSearchOperatorAndAgreesWithCholmod) {
+  const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(halfBall());
+  const auto solver = prepare(halfBall(), A);
+  const Eigen::MatrixXd B = randomRightHandSides(halfBall(), 7, 12);
+  const Eigen::MatrixXd X = solver->solve(B);
+  EXPECT_LE(worstRelativeResidual(A, X, B), residualBound());
+  const Eigen::MatrixXd reference = stc::CholmodFactor(A, "A").solve(B);
+  EXPECT_LE((X - reference).norm(), (direct() ? 1e-11 : 1e-6) * reference.norm());
+  const stc::KrylovCounts counts = solver->krylovCounts();
+  if (direct()) {
+    EXPECT_EQ(counts.solves, 0);
+  } else {  // one Krylov solve per column; GAMG with the rigid modes keeps them short
+    EXPECT_EQ(counts.solves, 12);
+    EXPECT_GT(counts.max_iterations, 0);
+    EXPECT_LE(counts.max_iterations, 100);
+  }
+}
+
+TEST_P(SpdSolverBackend, SolvesInPartsAsInOneBlock) {
+  const auto solver = prepare(seed(), seed().stiffness_free);
+  const Eigen::MatrixXd B = randomRightHandSides(seed(), 9, 20);
+  std::vector<stc::SpdSolver::Workspace> workspaces;
+  const Eigen::MatrixXd parts = solver->solveInParts(B, 4, workspaces);
+  EXPECT_LE((parts - solver->solve(B)).norm(), 1e-9 * parts.norm());
+  EXPECT_FALSE(workspaces.empty());
+}
+
+TEST_P(SpdSolverBackend, RefusesAMatrixWithRigidMotions) {
+  const auto& K = seed().stiffness;  // no Dirichlet condition: singular
+  if (direct()) {
+    EXPECT_THROW(stc::prepareSpdSolver(K, "K", options(), {}), stc::InputError);
+    return;
+  }
+  // An iterative backend prepares it; a right-hand side outside its range cannot be reached.
+  stc::LinearSolverOptions o = options();
+  o.max_iterations = 200;
+  const auto solver = stc::prepareSpdSolver(K, "K", o, {});
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Ones(K.rows(), 1);  // a translation's load: not in the range
+  try {
+    solver->solve(B);
+    ADD_FAILURE() << "a solve with K singular converged";
+  } catch (const stc::LinearSolveFailure& failure) {
+    EXPECT_NE(std::string(failure.what()).find("cg-gamg"), std::string::npos) << failure.what();
+  }
+}
+
+TEST_P(SpdSolverBackend, RefusesARightHandSideOfAnotherSize) {
+  const auto solver = prepare(seed(), seed().stiffness_free);
+  EXPECT_THROW(solver->solve(Eigen::MatrixXd(Eigen::MatrixXd::Ones(3, 2))), std::invalid_argument);
+}
+
+TEST_P(SpdSolverBackend, HasTheCondensedOperatorOnlyFromCholmodsTrailingBlock) {
+  const auto& A = seed().stiffness_free;
+  std::vector<int> dofs(40);
+  for (int i = 0; i < 40; ++i) dofs[static_cast<std::size_t>(i)] = i;
+  const auto solver = stc::prepareSpdSolver(A, "A", options(), {dofs, 0.0, stc::rigidBodyModesOfFreeDofs(seed())});
+  Eigen::SparseMatrix<double> C(1, A.rows());
+  C.insert(0, 3) = 1.0;
+  EXPECT_EQ(solver->condenses(C), GetParam() == stc::LinearBackend::Cholmod);
+  if (!solver->condenses(C)) EXPECT_THROW(solver->condensed(C), std::invalid_argument);
+}
+
+// Every backend this build has: cholmod, and the PETSc ones when PETSc was found.
+std::vector<stc::LinearBackend> builtBackends() {
+  std::vector<stc::LinearBackend> out;
+  for (const auto& [name, backend] : stc::kLinearBackends)
+    if (backend == stc::LinearBackend::Cholmod || stc::petscBackendsBuilt()) out.push_back(backend);
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Built, SpdSolverBackend, testing::ValuesIn(builtBackends()),
+                         [](const testing::TestParamInfo<stc::LinearBackend>& info) {
+                           for (const auto& [name, backend] : stc::kLinearBackends)
+                             if (backend == info.param) {
+                               std::string id(name);
+                               std::erase(id, '-');
+                               return id;
+                             }
+                           return std::string("unknown");
+                         });
+
+TEST(RigidBodyModes, AreKilledByTheUnconstrainedStiffness) {
+  // K R = 0 for rigid motions of the whole body: checked on every dof free (the body without its
+  // Dirichlet conditions), in 2D and 3D.
+  for (const stc::Problem* p : {&seed(), &halfBall()}) {
+    stc::Problem all = *p;
+    all.free_dofs.resize(static_cast<std::size_t>(all.numDofs()));
+    for (int i = 0; i < all.numDofs(); ++i) all.free_dofs[static_cast<std::size_t>(i)] = i;
+    const Eigen::MatrixXd R = stc::rigidBodyModesOfFreeDofs(all);
+    EXPECT_EQ(R.cols(), p->dimension == 2 ? 3 : 6);
+    EXPECT_LE((R.transpose() * R - Eigen::MatrixXd::Identity(R.cols(), R.cols())).norm(), 1e-12);
+    const Eigen::SparseMatrix<double> K = all.stiffness.selfadjointView<Eigen::Lower>();
+    EXPECT_LE((K * R).norm(), 1e-9 * K.norm());
+  }
+}
