@@ -8,6 +8,7 @@
 #include <functional>
 #include <iostream>
 #include <new>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include "stcontact/core/threads.hpp"
 #include "stcontact/io/output_error.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/linalg/ranks.hpp"
 #include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/version.hpp"
 
@@ -33,8 +35,9 @@ std::string oneLine(std::string text) {
   return text;
 }
 
+// On several ranks, rank 0 alone says it (every rank meets the same error).
 int fail(int status, const std::string& message) {
-  std::cerr << "error: " << oneLine(message) << std::endl;
+  if (stc::currentRanks().writes()) std::cerr << "error: " << oneLine(message) << std::endl;
   return status;
 }
 
@@ -100,6 +103,9 @@ int main(int argc, char** argv) {
   }
   try {
     stc::threadCount();  // a bad STC_THREADS is refused before anything is read or written
+    const stc::Ranks ranks = stc::startRanks();  // under an MPI launcher: one of its ranks
+    if (ranks.size > 1 && !app.got_subcommand("solve"))
+      return fail(1, "only 'solve' runs on several MPI ranks (started as " + std::to_string(ranks.size) + ")");
     for (const auto& [command, run] : commands)
       if (command->parsed()) return run();
     return fail(3, "internal failure: no sub-command parsed");  // require_subcommand(1) rules it out

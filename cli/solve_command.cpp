@@ -2,6 +2,8 @@
 // (scenes small enough, unless --no-reference), solve, write every output file.
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/stopping_help.hpp"
@@ -11,6 +13,7 @@
 #include "stcontact/core/interruption.hpp"
 #include "stcontact/io/run_folder.hpp"
 #include "stcontact/io/run_writer.hpp"
+#include "stcontact/linalg/ranks.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/reference.hpp"
@@ -30,6 +33,25 @@ std::unique_ptr<ErrorReference> referenceOrWarning(const Problem& problem, Termi
   }
   if (!warning.empty()) std::cerr << "warning: " << warning << std::endl;
   return reference;
+}
+
+// Several ranks solve together through a PETSc backend (src/linalg/ranks.hpp): cholmod, which runs
+// in one process, is refused with the backends that can.
+void requireBackendForRanks(const Scene& scene, const Ranks& ranks) {
+  if (ranks.size > 1 && scene.solver.linear.backend == LinearBackend::Cholmod)
+    throw InputError("solver.linear = \"cholmod\" runs in one process; on " + std::to_string(ranks.size) +
+                     " ranks choose \"mumps\" or \"cg-gamg\" (--set solver.linear='\"mumps\"')");
+}
+
+// The outputs rank 0 writes: on several ranks without the frames, whose displacements each rank
+// would have to solve for in one order (docs/linear_solvers.md, "Ranks").
+OutputSpec outputsOn(const Scene& scene, const Ranks& ranks) {
+  OutputSpec output = scene.output;
+  if (ranks.size > 1 && output.vtu) {
+    std::cerr << "note: no VTU frames on " << ranks.size << " ranks (output.vtu is for one process)" << std::endl;
+    output.vtu = false;
+  }
+  return output;
 }
 
 SolveResult runSolver(const Problem& problem, const Scene& scene, const ErrorReference* reference,
@@ -70,9 +92,12 @@ int runSolve(const SolveArgs& args) {
   const std::filesystem::path out = args.out ? std::filesystem::path(*args.out)
                                              : std::filesystem::path("results") / scene.name / solver;
   const Problem problem = buildProblem(scene);  // bad input stops here, before anything is created
-  RunFolder folder(out);                         // checked and locked before the solve, written after
+  const Ranks ranks = currentRanks();
+  requireBackendForRanks(scene, ranks);
+  std::optional<RunFolder> folder;  // rank 0's: checked and locked before the solve, written after
+  if (ranks.writes()) folder.emplace(out);
 
-  TerminalProgress progress(args.quiet);
+  TerminalProgress progress(args.quiet || !ranks.writes());
   // each operator prepared once, by the scene's backend: the reference, the solve, the frames
   PreparedOperators operators(scene.solver.linearAtTolerance());
   std::unique_ptr<ErrorReference> reference;
@@ -80,8 +105,10 @@ int runSolve(const SolveArgs& args) {
     reference = referenceOrWarning(problem, progress, operators);
   const SolveResult result = runSolver(problem, scene, reference.get(), progress, operators);
   throwIfInterrupted();  // a solve stopped by a signal writes nothing
-  writeRunOutputs(folder.path(), problem, result, {scene.parameters_json, STC_VERSION}, scene.output, operators);
-  folder.commit();
+  if (!ranks.writes()) return result.summary.converged() ? 0 : 2;
+  writeRunOutputs(folder->path(), problem, result, {scene.parameters_json, STC_VERSION}, outputsOn(scene, ranks),
+                  operators);
+  folder->commit();
 
   if (!args.quiet) {
     const auto& s = result.summary;

@@ -15,6 +15,7 @@
 #include "stcontact/io/contact_tables.hpp"
 #include "stcontact/io/json_writer.hpp"
 #include "stcontact/io/vtu_writer.hpp"
+#include "stcontact/linalg/ranks.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/mesh/connected_parts.hpp"
 #include "stcontact/operators/displacement.hpp"
@@ -208,6 +209,7 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
       .add("wall_s", summary.wall_s)
       .add("sub_grid", subGridJson(summary))
       .add("threads", threadCount())
+      .add("ranks", currentRanks().size)
       .add("blas_kernels", linalg::blasKernels())
       .add("n_dofs", problem.numDofs())
       .add("n_contact_nodes", problem.contact.size())

@@ -284,3 +284,13 @@ add_test(NAME cli.trust_checks
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/trust_checks.sh ${cli} ${PROJECT_SOURCE_DIR}
                  ${CMAKE_CURRENT_BINARY_DIR}/trust)
 set_tests_properties(cli.trust_checks PROPERTIES LABELS cli TIMEOUT 300)
+
+# Two MPI ranks give one process's answer (tests/cli/mpi_ranks.sh, docs/linear_solvers.md "Ranks"):
+# in a build with PETSc, where mpirun is found.
+find_program(STC_MPIRUN mpirun)
+if(STC_HAVE_PETSC AND STC_MPIRUN)
+  add_test(NAME cli.mpi_ranks
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/mpi_ranks.sh ${cli} ${PROJECT_SOURCE_DIR}
+                   ${CMAKE_CURRENT_BINARY_DIR}/mpi_ranks)
+  set_tests_properties(cli.mpi_ranks PROPERTIES LABELS "cli;mpi" TIMEOUT 600)
+endif()

@@ -37,36 +37,58 @@ void ensurePetsc() {
   });
 }
 
-// A (lower triangle used, as CHOLMOD's) as a sequential AIJ matrix holding both triangles.
-Mat toPetsc(const Eigen::SparseMatrix<double>& A) {
+// Which rows a rank owns: contiguous blocks, the first n mod size ranks one row more.
+struct RowBlock {
+  PetscInt begin = 0, count = 0;
+};
+
+RowBlock rowBlockOf(PetscInt n, const Ranks& ranks) {
+  const PetscInt base = n / ranks.size, extra = n % ranks.size;
+  return {ranks.rank * base + std::min<PetscInt>(ranks.rank, extra), base + (ranks.rank < extra ? 1 : 0)};
+}
+
+// A (lower triangle used, as CHOLMOD's) as an AIJ matrix holding both triangles: sequential on one
+// rank, else this rank's block of rows of the distributed one.
+Mat toPetsc(const Eigen::SparseMatrix<double>& A, MPI_Comm comm, const RowBlock& rows) {
   using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor, PetscInt>;
   RowMajor full = A.selfadjointView<Eigen::Lower>();
   full.makeCompressed();
   Mat M = nullptr;
   const auto n = static_cast<PetscInt>(A.rows());
-  check(MatCreate(PETSC_COMM_SELF, &M), "MatCreate");
-  check(MatSetSizes(M, n, n, n, n), "MatSetSizes");
-  check(MatSetType(M, MATSEQAIJ), "MatSetType");
-  check(MatSeqAIJSetPreallocationCSR(M, full.outerIndexPtr(), full.innerIndexPtr(), full.valuePtr()),
-        "MatSeqAIJSetPreallocationCSR");
+  PetscMPIInt size = 1;
+  MPI_Comm_size(comm, &size);
+  if (size == 1) {
+    check(MatCreate(comm, &M), "MatCreate");
+    check(MatSetSizes(M, n, n, n, n), "MatSetSizes");
+    check(MatSetType(M, MATSEQAIJ), "MatSetType");
+    check(MatSeqAIJSetPreallocationCSR(M, full.outerIndexPtr(), full.innerIndexPtr(), full.valuePtr()),
+          "MatSeqAIJSetPreallocationCSR");
+  } else {  // this rank's rows, their offsets counted from the block's first entry
+    const PetscInt* outer = full.outerIndexPtr() + rows.begin;
+    std::vector<PetscInt> offsets(outer, outer + rows.count + 1);
+    for (PetscInt& o : offsets) o -= outer[0];
+    check(MatCreateMPIAIJWithArrays(comm, rows.count, rows.count, n, n, offsets.data(), full.innerIndexPtr() + outer[0],
+                                    full.valuePtr() + outer[0], &M),
+          "MatCreateMPIAIJWithArrays");
+  }
   check(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
   check(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "MatSetOption");
   return M;
 }
 
 // The columns of R (n × k) as PETSc's near-null space of M.
-void setNearNullSpace(Mat M, const Eigen::MatrixXd& R) {
+void setNearNullSpace(Mat M, const Eigen::MatrixXd& R, MPI_Comm comm, const RowBlock& rows) {
   if (R.cols() == 0) return;
   std::vector<Vec> vectors(static_cast<std::size_t>(R.cols()));
   for (Eigen::Index j = 0; j < R.cols(); ++j) {
     check(MatCreateVecs(M, &vectors[static_cast<std::size_t>(j)], nullptr), "MatCreateVecs");
     PetscScalar* v = nullptr;
     check(VecGetArray(vectors[static_cast<std::size_t>(j)], &v), "VecGetArray");
-    std::copy(R.col(j).data(), R.col(j).data() + R.rows(), v);
+    std::copy(R.col(j).data() + rows.begin, R.col(j).data() + rows.begin + rows.count, v);
     check(VecRestoreArray(vectors[static_cast<std::size_t>(j)], &v), "VecRestoreArray");
   }
   MatNullSpace space = nullptr;
-  check(MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, static_cast<PetscInt>(R.cols()), vectors.data(), &space),
+  check(MatNullSpaceCreate(comm, PETSC_FALSE, static_cast<PetscInt>(R.cols()), vectors.data(), &space),
         "MatNullSpaceCreate");
   check(MatSetNearNullSpace(M, space), "MatSetNearNullSpace");
   check(MatNullSpaceDestroy(&space), "MatNullSpaceDestroy");
@@ -77,10 +99,12 @@ class PetscSolver final : public SpdSolver {
  public:
   PetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what, const LinearSolverOptions& options,
               const Eigen::MatrixXd& near_null_space)
-      : n_(static_cast<int>(A.rows())), backend_(options.backend) {
+      : n_(static_cast<int>(A.rows())), backend_(options.backend), ranks_(currentRanks()),
+        comm_(ranks_.size > 1 ? PETSC_COMM_WORLD : PETSC_COMM_SELF),
+        rows_(rowBlockOf(static_cast<PetscInt>(A.rows()), ranks_)) {
     ensurePetsc();
-    matrix_ = toPetsc(A);
-    check(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
+    matrix_ = toPetsc(A, comm_, rows_);
+    check(KSPCreate(comm_, &ksp_), "KSPCreate");
     check(KSPSetOptionsPrefix(ksp_, "stc_"), "KSPSetOptionsPrefix");
     check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
     PC pc = nullptr;
@@ -90,7 +114,7 @@ class PetscSolver final : public SpdSolver {
       check(PCSetType(pc, PCCHOLESKY), "PCSetType");
       check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
     } else {
-      setNearNullSpace(matrix_, near_null_space);
+      setNearNullSpace(matrix_, near_null_space, comm_, rows_);
       check(KSPSetType(ksp_, KSPCG), "KSPSetType");
       check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
       check(KSPSetTolerances(ksp_, options.rtol > 0.0 ? options.rtol : LinearSolverOptions::kRtolFloor, 0.0,
@@ -130,6 +154,9 @@ class PetscSolver final : public SpdSolver {
  private:
   int n_;
   LinearBackend backend_;
+  Ranks ranks_;
+  MPI_Comm comm_;
+  RowBlock rows_;  ///< this rank's rows
   Mat matrix_ = nullptr;
   KSP ksp_ = nullptr;
   double factor_entries_ = 0.0;
@@ -152,32 +179,65 @@ class PetscSolver final : public SpdSolver {
     factor_entries_ = static_cast<double>(entries);
   }
 
-  // X = A⁻¹ B by MUMPS's multiple right-hand-side solve.
+  // X = A⁻¹ B by MUMPS's multiple right-hand-side solve: this rank's rows of B in, every rank's rows
+  // of X gathered.
   void solveDirect(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
     PC pc = nullptr;
     Mat F = nullptr, b = nullptr, x = nullptr;
     check(KSPGetPC(ksp_, &pc), "KSPGetPC");
     check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
-    const auto rows = static_cast<PetscInt>(n_), cols = static_cast<PetscInt>(B.cols());
-    check(MatCreateSeqDense(PETSC_COMM_SELF, rows, cols, const_cast<double*>(B.data()), &b), "MatCreateSeqDense");
-    check(MatCreateSeqDense(PETSC_COMM_SELF, rows, cols, X.data(), &x), "MatCreateSeqDense");
+    const auto cols = static_cast<PetscInt>(B.cols());
+    Eigen::MatrixXd local_b = B.middleRows(rows_.begin, rows_.count), local_x(rows_.count, B.cols());
+    if (ranks_.size == 1) {
+      check(MatCreateSeqDense(comm_, rows_.count, cols, local_b.data(), &b), "MatCreateSeqDense");
+      check(MatCreateSeqDense(comm_, rows_.count, cols, local_x.data(), &x), "MatCreateSeqDense");
+    } else {
+      check(MatCreateDense(comm_, rows_.count, PETSC_DECIDE, n_, cols, local_b.data(), &b), "MatCreateDense");
+      check(MatCreateDense(comm_, rows_.count, PETSC_DECIDE, n_, cols, local_x.data(), &x), "MatCreateDense");
+    }
     const PetscErrorCode code = MatMatSolve(F, b, x);
     MatDestroy(&b);
     MatDestroy(&x);
     check(code, "MatMatSolve (MUMPS)");
+    for (Eigen::Index j = 0; j < B.cols(); ++j) gather(local_x.col(j).data(), X.col(j).data());
+  }
+
+  // The whole column from every rank's block of it (MPI_Allgatherv); a copy on one rank.
+  void gather(const double* local, double* whole) const {
+    if (ranks_.size == 1) {
+      std::copy(local, local + rows_.count, whole);
+      return;
+    }
+    std::vector<int> counts(static_cast<std::size_t>(ranks_.size)), starts(counts.size());
+    for (int r = 0; r < ranks_.size; ++r) {
+      const RowBlock block = rowBlockOf(n_, {r, ranks_.size});
+      counts[static_cast<std::size_t>(r)] = static_cast<int>(block.count);
+      starts[static_cast<std::size_t>(r)] = static_cast<int>(block.begin);
+    }
+    MPI_Allgatherv(local, static_cast<int>(rows_.count), MPI_DOUBLE, whole, counts.data(), starts.data(), MPI_DOUBLE,
+                   comm_);
   }
 
   // x = A⁻¹ b by CG to the relative residual, from x = 0.
   void solveColumn(const double* b, double* x) const {
     Vec vb = nullptr, vx = nullptr;
-    const auto rows = static_cast<PetscInt>(n_);
-    check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, rows, b, &vb), "VecCreateSeqWithArray");
-    check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, rows, x, &vx), "VecCreateSeqWithArray");
+    if (ranks_.size == 1) {
+      check(VecCreateSeqWithArray(comm_, 1, rows_.count, b, &vb), "VecCreateSeqWithArray");
+    } else {
+      check(VecCreateMPIWithArray(comm_, 1, rows_.count, n_, b + rows_.begin, &vb), "VecCreateMPIWithArray");
+    }
+    check(VecDuplicate(vb, &vx), "VecDuplicate");
     const PetscErrorCode code = KSPSolve(ksp_, vb, vx);
     KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
     PetscInt iterations = 0;
     KSPGetConvergedReason(ksp_, &reason);
     KSPGetIterationNumber(ksp_, &iterations);
+    if (code == 0) {
+      const PetscScalar* values = nullptr;
+      VecGetArrayRead(vx, &values);
+      gather(values, x);
+      VecRestoreArrayRead(vx, &values);
+    }
     VecDestroy(&vb);
     VecDestroy(&vx);
     check(code, "KSPSolve");
@@ -193,6 +253,14 @@ class PetscSolver final : public SpdSolver {
 };
 
 }  // namespace
+
+Ranks petscRanks() {
+  ensurePetsc();
+  PetscMPIInt rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  return {rank, size};
+}
 
 std::unique_ptr<SpdSolver> preparePetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,
                                               const LinearSolverOptions& options,

@@ -9,13 +9,16 @@
 //             LinearSolveFailure.
 // PETSc is initialised on first use (reading the environment's PETSC_OPTIONS, the experts'
 // pass-through, with the prefix "stc_" for these solvers: PETSC_OPTIONS="-stc_ksp_monitor") and
-// finalised at exit. One process, PETSC_COMM_SELF; a solve holds the solver's lock (PETSc objects
-// are not thread-safe).
+// finalised at exit. One process: PETSC_COMM_SELF. Several ranks (src/linalg/ranks.hpp): the
+// operator's rows split in contiguous blocks over PETSC_COMM_WORLD, every rank passing the whole
+// right-hand sides and receiving the whole solutions (MPI_Allgatherv). A solve holds the solver's
+// lock (PETSc objects are not thread-safe).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
 #include <string>
 
+#include "stcontact/linalg/ranks.hpp"
 #include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/options/linear_solver_options.hpp"
 
@@ -26,5 +29,8 @@ namespace stc {
 std::unique_ptr<SpdSolver> preparePetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,
                                               const LinearSolverOptions& options,
                                               const Eigen::MatrixXd& near_null_space);
+
+/// PETSc (and MPI) started, and this process's place in PETSC_COMM_WORLD.
+Ranks petscRanks();
 
 }  // namespace stc

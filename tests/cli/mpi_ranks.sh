@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# mpi_ranks.sh PROGRAM SOURCE_DIR WORK: two MPI ranks give one process's answer (docs/linear_solvers.md,
+# "Ranks"). On the seed scene, the hemisphere at divisions 8 and the two cylinders (small settings),
+# `mpirun -np 2 stcontact solve` with
+#   - mumps: the iterations and the reactions of one process, to 1e-8 relative (round-off apart);
+#   - cg-gamg: converged, its true error (against the incremental reference the ranks compute
+#     together) within the tolerance;
+# each summary saying 2 ranks and its backend; `solver.linear = "cholmod"` and another command than
+# solve are refused on 2 ranks. Exit 0 when every check held; each failure is printed.
+set -uo pipefail
+program=$(realpath "$1") source=$(realpath "$2") work=$3
+rm -rf "$work" && mkdir -p "$work"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+export STC_THREADS=1
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+mpi() { mpirun -np "$1" --oversubscribe "${@:2}"; }
+
+# compare ONE TWO BACKEND: summaries and reactions of the run on one process and on two ranks.
+compare() {
+  python3 - "$1" "$2" "$3" <<'PY' || fail "$3: $1 against $2"
+import csv, json, sys
+one, two, backend = sys.argv[1:]
+s1, s2 = (json.load(open(d + "/summary.json")) for d in (one, two))
+ok = True
+def check(cond, what):
+    global ok
+    if not cond:
+        print("  " + what); ok = False
+check(s1["ranks"] == 1 and s2["ranks"] == 2, f"ranks {s1['ranks']}, {s2['ranks']}")
+check(all(p["backend"] == backend for p in s1["preparations"] + s2["preparations"]), "backend")
+check(s2["termination"] == "converged", f"2 ranks: {s2['termination']} ({s2['message']})")
+if backend == "mumps":
+    check(abs(s1["iterations"] - s2["iterations"]) <= 1, f"iterations {s1['iterations']} against {s2['iterations']}")
+    rows = [list(csv.reader(open(d + "/reactions.csv"))) for d in (one, two)]
+    worst, scale = 0.0, 0.0
+    for a, b in zip(rows[0][1:], rows[1][1:]):
+        for x, y in zip(a, b):
+            if x == "" and y == "":
+                continue  # a column without a value at this instant
+            worst = max(worst, abs(float(x) - float(y))); scale = max(scale, abs(float(x)))
+    check(worst <= 1e-8 * scale, f"reactions differ by {worst:.3g} of {scale:.3g}")
+    print(f"  {one}: reactions agree to {worst / scale:.2g} relative")
+else:
+    check(s2["error"] is not None and s2["error"] <= 1e-6, f"true error {s2['error']} against tolerance 1e-6")
+    print(f"  {two}: true error {s2['error']:.3g}")
+sys.exit(0 if ok else 1)
+PY
+}
+
+scenes=(
+  "seed:$source/examples/scenes/hemicylinder.toml:mesh.arc_nodes=31 time.steps=31"
+  "hemisphere:$source/examples/scenes/hemisphere.toml:mesh.divisions=8 time.steps=21"
+  "two_cylinders:$source/examples/scenes/two_cylinders.toml:mesh.arc_nodes=31 time.steps=21"
+)
+for entry in "${scenes[@]}"; do
+  IFS=: read -r name scene settings <<<"$entry"
+  sets=(); for s in $settings; do sets+=(--set "$s"); done
+  for backend in mumps cg-gamg; do
+    for ranks in 1 2; do
+      out=$work/${name}_${backend}_$ranks
+      mpi "$ranks" "$program" solve "$scene" "${sets[@]}" --set "solver.linear=\"$backend\"" --set output.vtu=false \
+        --out "$out" --quiet > "$out.log" 2>&1 || fail "$name $backend on $ranks ranks: exit $? ($(tail -1 "$out.log"))"
+    done
+    compare "$work/${name}_${backend}_1" "$work/${name}_${backend}_2" "$backend"
+  done
+done
+
+seed=$source/examples/scenes/hemicylinder.toml
+err=$(mpi 2 "$program" solve "$seed" --out "$work/cholmod" 2>&1); status=$?
+[ $status -eq 1 ] && grep -q 'runs in one process; on 2 ranks choose' <<<"$err" ||
+  fail "cholmod on 2 ranks: exit $status ($err)"
+[ ! -e "$work/cholmod" ] || fail "cholmod on 2 ranks created its folder"
+err=$(mpi 2 "$program" check "$seed" 2>&1); status=$?
+[ $status -eq 1 ] && grep -q "only 'solve' runs on several MPI ranks" <<<"$err" || fail "check on 2 ranks: exit $status ($err)"
+[ "$(grep -c '^error:' <<<"$err")" -eq 1 ] || fail "check on 2 ranks: the error said $(grep -c '^error:' <<<"$err") times"
+
+[ $failures -eq 0 ] && echo "every check held" || echo "$failures failures"
+[ $failures -eq 0 ]
