@@ -46,15 +46,7 @@ std::string nameOf(const BackendCase& c) {
 
 void PrintTo(const BackendCase& c, std::ostream* os) { *os << nameOf(c); }
 
-const stc::test::StrategyFixture& reference(int dimension) {
-  static std::map<int, std::unique_ptr<stc::test::StrategyFixture>> fixtures;
-  auto& f = fixtures[dimension];
-  if (!f) {
-    const stc::Scene scene = dimension == 3 ? stc::test::hemisphereScene(4, 21) : stc::test::seedScene(21, 21);
-    f = std::make_unique<stc::test::StrategyFixture>(scene);
-  }
-  return *f;
-}
+const stc::test::StrategyFixture& reference(int dimension) { return stc::test::smallFixture(dimension); }
 
 std::vector<BackendCase> backendCases() {
   std::vector<BackendCase> cases;
