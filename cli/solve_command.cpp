@@ -36,7 +36,7 @@ std::unique_ptr<ErrorReference> referenceOrWarning(const Problem& problem, Termi
 }
 
 // Several ranks solve together through a PETSc backend (src/linalg/ranks.hpp): cholmod, which runs
-// in one process, is refused with the backends that can.
+// in one process, is refused with the backends that can (auto takes mumps there).
 void requireBackendForRanks(const Scene& scene, const Ranks& ranks) {
   if (ranks.size > 1 && scene.solver.linear.backend == LinearBackend::Cholmod)
     throw InputError("solver.linear = \"cholmod\" runs in one process; on " + std::to_string(ranks.size) +
@@ -92,6 +92,7 @@ int runSolve(const SolveArgs& args) {
   const std::filesystem::path out = args.out ? std::filesystem::path(*args.out)
                                              : std::filesystem::path("results") / scene.name / solver;
   const Problem problem = buildProblem(scene);  // bad input stops here, before anything is created
+  const LinearSolverOptions linear = scene.solver.linearAtTolerance();
   const Ranks ranks = currentRanks();
   requireBackendForRanks(scene, ranks);
   std::optional<RunFolder> folder;  // rank 0's: checked and locked before the solve, written after
@@ -99,7 +100,7 @@ int runSolve(const SolveArgs& args) {
 
   TerminalProgress progress(args.quiet || !ranks.writes());
   // each operator prepared once, by the scene's backend: the reference, the solve, the frames
-  PreparedOperators operators(scene.solver.linearAtTolerance());
+  PreparedOperators operators(linear);
   std::unique_ptr<ErrorReference> reference;
   if (scene.solver.strategy != Strategy::Incremental && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes)
     reference = referenceOrWarning(problem, progress, operators);

@@ -178,11 +178,12 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
       withSolverOptions(options.sets, options.solver, options.tolerance, options.max_iterations));
   const Scene& scene = run.scene();
   const ProblemPtr problem = run.problem();
+  const LinearSolverOptions linear = scene.solver.linearAtTolerance();  // before anything is created
   std::optional<RunFolder> folder;  // checked and locked before the solve, written whole after it
   if (options.out) folder.emplace(*options.out);
   std::optional<InterfaceHistory> start;
   // each operator prepared once, by the scene's backend: the reference, the solve, the frames
-  PreparedOperators operators(scene.solver.linearAtTolerance());
+  PreparedOperators operators(linear);
   SolveInputs inputs;
   inputs.spatial_modes = options.spatial_modes;
   inputs.operators = &operators;

@@ -23,7 +23,23 @@ struct SpdSolverHints {
   Eigen::MatrixXd near_null_space;
 };
 
-/// A prepared by options.backend, which must be built (LinearSolverOptions::validate). An
+/// What `auto` weighs (docs/linear_solvers.md, "The crossover"): a direct factor is 18 to 39 times
+/// faster per right-hand side than CG + GAMG from 7k to 335k dofs and a space-time solve needs
+/// hundreds, so CHOLMOD wherever its factor fits in the memory available (kFactorMemoryShare of
+/// it, the factor's estimate from its symbolic analysis), else CG + GAMG (with PETSc); on several
+/// ranks MUMPS, the direct factor that runs on them (2.7 times CG + GAMG's speed on 2 ranks at 52k
+/// dofs, and CHOLMOD runs in one process only). Without PETSc: CHOLMOD.
+struct BackendChoice {
+  double factor_bytes = 0.0;     ///< CHOLMOD's estimated factor (CholmodFactor::estimatedBytes)
+  double available_bytes = 0.0;  ///< the memory available (availableMemoryBytes)
+  int ranks = 1;
+  bool petsc = false;            ///< whether the PETSc backends are built
+  static constexpr double kFactorMemoryShare = 0.5;
+};
+LinearBackend chooseLinearBackend(const BackendChoice& choice);
+
+/// A prepared by options.backend (`auto`: chooseLinearBackend for A), which must be built
+/// (LinearSolverOptions::validate). An
 /// iterative backend stops at options.rtol (set: residualTolerance). Throws InputError naming `what`
 /// when A is not positive definite (a direct backend sees it; an iterative one when its solves
 /// fail).

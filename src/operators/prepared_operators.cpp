@@ -48,7 +48,9 @@ bool sameEntries(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix
 // What the backend may use: the dofs to order last, and the rigid-body motions for an AMG.
 SpdSolverHints hintsFor(const Problem& problem, const Ordering& ordering, const LinearSolverOptions& linear) {
   SpdSolverHints hints{ordering.trailing, ordering.min_work, {}};
-  if (linear.backend == LinearBackend::CgGamg) hints.near_null_space = rigidBodyModesOfFreeDofs(problem);
+  const bool may_use_amg = linear.backend == LinearBackend::CgGamg ||
+                           (linear.backend == LinearBackend::Auto && petscBackendsBuilt());
+  if (may_use_amg) hints.near_null_space = rigidBodyModesOfFreeDofs(problem);
   return hints;
 }
 

@@ -16,9 +16,9 @@ bool petscBackendsBuilt() {
 
 void LinearSolverOptions::validate() const {
   validateFields(*this, "solver");
-  if (backend != LinearBackend::Cholmod && !petscBackendsBuilt())
+  if ((backend == LinearBackend::Mumps || backend == LinearBackend::CgGamg) && !petscBackendsBuilt())
     throw InputError(
-        "solver option linear: this stcontact was built without PETSc, so only \"cholmod\" is available "
+        "solver option linear: this stcontact was built without PETSc, so only \"auto\" and \"cholmod\" are available "
         "(install PETSc, libpetsc-real-dev on Debian, and rebuild: docs/linear_solvers.md)");
 }
 

@@ -13,7 +13,10 @@
 namespace stc {
 
 enum class LinearBackend {
-  /// CHOLMOD's sparse Cholesky (SuiteSparse), in the process: the embedded default.
+  /// The fastest that fits (chooseLinearBackend, src/linalg/prepare_spd_solver.hpp): CHOLMOD where
+  /// its factor fits in memory, else CG + GAMG; MUMPS on several ranks. The default.
+  Auto,
+  /// CHOLMOD's sparse Cholesky (SuiteSparse), in the process.
   Cholmod,
   /// MUMPS's sparse Cholesky through PETSc (built with PETSc).
   Mumps,
@@ -22,7 +25,8 @@ enum class LinearBackend {
   CgGamg,
 };
 
-inline constexpr std::array<std::pair<std::string_view, LinearBackend>, 3> kLinearBackends = {{
+inline constexpr std::array<std::pair<std::string_view, LinearBackend>, 4> kLinearBackends = {{
+    {"auto", LinearBackend::Auto},
     {"cholmod", LinearBackend::Cholmod},
     {"mumps", LinearBackend::Mumps},
     {"cg-gamg", LinearBackend::CgGamg},
@@ -36,7 +40,7 @@ constexpr std::string_view nameOf(LinearBackend backend) {
 }
 
 struct LinearSolverOptions {
-  LinearBackend backend = LinearBackend::Cholmod;
+  LinearBackend backend = LinearBackend::Auto;
   /// An iterative backend stops each right-hand side at ‖b − A x‖ ≤ rtol ‖b‖. 0: derived from the
   /// strategy's tolerance τ, rtol = kRtolPerTolerance · τ (at least kRtolFloor): docs/method.md §2,
   /// "Inexact linear solves".
@@ -54,7 +58,7 @@ struct LinearSolverOptions {
     visit("linear_rtol", o.rtol, offOrInOpenUnit());
     visit("linear_max_iterations", o.max_iterations, atLeast(1));
   }
-  /// The fields, and a PETSc backend only in a build with PETSc (InputError naming solver.linear).
+  /// The fields, and mumps or cg-gamg only in a build with PETSc (InputError naming solver.linear).
   void validate() const;
   /// The relative residual an iterative solve stops at under a strategy of tolerance τ.
   double residualTolerance(double tolerance) const;

@@ -48,6 +48,7 @@ struct SolverSpec {
   /// solver.tolerance unless a library caller set the strategies apart.
   double tolerance() const;
   /// `linear` with its residual tolerance set from tolerance() (LinearSolverOptions::residualTolerance).
+  /// InputError when linear.rtol is looser than 1e-4 tolerance(): "converged" could be wrong.
   LinearSolverOptions linearAtTolerance() const;
   void validate() const;  ///< every strategy's options
 };

@@ -5,8 +5,8 @@
 #   - mumps: the iterations and the reactions of one process, to 1e-8 relative (round-off apart);
 #   - cg-gamg: converged, its true error (against the incremental reference the ranks compute
 #     together) within the tolerance;
-# each summary saying 2 ranks and its backend; `solver.linear = "cholmod"` and another command than
-# solve are refused on 2 ranks. Exit 0 when every check held; each failure is printed.
+# each summary saying 2 ranks and its backend; `auto` takes mumps on 2 ranks; `solver.linear =
+# "cholmod"` and another command than solve are refused there. Exit 0 when every check held; each failure is printed.
 set -uo pipefail
 program=$(realpath "$1") source=$(realpath "$2") work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -67,7 +67,10 @@ for entry in "${scenes[@]}"; do
 done
 
 seed=$source/examples/scenes/hemicylinder.toml
-err=$(mpi 2 "$program" solve "$seed" --out "$work/cholmod" 2>&1); status=$?
+mpi 2 "$program" solve "$seed" --set mesh.arc_nodes=21 --set time.steps=11 --set output.vtu=false --out "$work/auto" \
+  --quiet > "$work/auto.log" 2>&1 || fail "auto on 2 ranks: exit $? ($(tail -1 "$work/auto.log"))"
+grep -q '"backend": "mumps"' "$work/auto/summary.json" 2>/dev/null || fail "auto on 2 ranks did not take mumps"
+err=$(mpi 2 "$program" solve "$seed" --set 'solver.linear="cholmod"' --out "$work/cholmod" 2>&1); status=$?
 [ $status -eq 1 ] && grep -q 'runs in one process; on 2 ranks choose' <<<"$err" ||
   fail "cholmod on 2 ranks: exit $status ($err)"
 [ ! -e "$work/cholmod" ] || fail "cholmod on 2 ranks created its folder"

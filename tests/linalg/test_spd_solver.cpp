@@ -143,11 +143,14 @@ TEST_P(SpdSolverBackend, HasTheCondensedOperatorOnlyFromCholmodsTrailingBlock) {
   if (!solver->condenses(C)) EXPECT_THROW(solver->condensed(C), std::invalid_argument);
 }
 
-// Every backend this build has: cholmod, and the PETSc ones when PETSc was found.
+// Every backend this build has: cholmod, and the PETSc ones when PETSc was found (auto is one of
+// them, chosen: below).
 std::vector<stc::LinearBackend> builtBackends() {
   std::vector<stc::LinearBackend> out;
   for (const auto& [name, backend] : stc::kLinearBackends)
-    if (backend == stc::LinearBackend::Cholmod || stc::petscBackendsBuilt()) out.push_back(backend);
+    if (backend == stc::LinearBackend::Cholmod ||
+        (backend != stc::LinearBackend::Auto && stc::petscBackendsBuilt()))
+      out.push_back(backend);
   return out;
 }
 
@@ -175,4 +178,27 @@ TEST(RigidBodyModes, AreKilledByTheUnconstrainedStiffness) {
     const Eigen::SparseMatrix<double> K = all.stiffness.selfadjointView<Eigen::Lower>();
     EXPECT_LE((K * R).norm(), 1e-9 * K.norm());
   }
+}
+
+// auto: CHOLMOD where its factor fits in half the memory available, else CG + GAMG; MUMPS on
+// several ranks; CHOLMOD without PETSc.
+TEST(AutoBackend, TakesTheDirectFactorWhereItFitsAndTheIterativeOneElsewhere) {
+  using stc::LinearBackend;
+  const double gb = 1e9;
+  EXPECT_EQ(stc::chooseLinearBackend({4 * gb, 17 * gb, 1, true}), LinearBackend::Cholmod);
+  EXPECT_EQ(stc::chooseLinearBackend({9 * gb, 17 * gb, 1, true}), LinearBackend::CgGamg);
+  EXPECT_EQ(stc::chooseLinearBackend({4 * gb, 17 * gb, 2, true}), LinearBackend::Mumps);
+  EXPECT_EQ(stc::chooseLinearBackend({9 * gb, 17 * gb, 1, false}), LinearBackend::Cholmod);
+  // In one process, the seed's K_ff fits: CHOLMOD, the same factor as asked by name.
+  stc::LinearSolverOptions o;
+  const auto chosen = stc::prepareSpdSolver(seed().stiffness_free, "K_ff", o, {});
+  EXPECT_EQ(chosen->backend(), "cholmod");
+  EXPECT_EQ(chosen->factorNonZeros(), stc::CholmodFactor(seed().stiffness_free, "K_ff").factorNonZeros());
+}
+
+TEST(CholmodFactorBound, RefusesAFactorAboveItsMemoryBoundBeforeAnyNumericalWork) {
+  const auto& A = seed().stiffness_free;
+  const double bytes = stc::CholmodFactor::bytesOf(stc::CholmodFactor(A, "K_ff").factorNonZeros());
+  EXPECT_THROW(stc::CholmodFactor(A, "K_ff", {}, 1e8, 0.5 * bytes), stc::CholmodFactor::TooLarge);
+  EXPECT_NO_THROW(stc::CholmodFactor(A, "K_ff", {}, 1e8, 2.0 * bytes));
 }

@@ -13,7 +13,8 @@ TEST(LinearSolverOptions, ThePetscBackendsAreRefusedByNameInABuildWithoutPetsc) 
   for (const auto& [name, backend] : stc::kLinearBackends) {
     stc::LinearSolverOptions o;
     o.backend = backend;
-    if (backend == stc::LinearBackend::Cholmod || stc::petscBackendsBuilt()) {
+    const bool embedded = backend == stc::LinearBackend::Auto || backend == stc::LinearBackend::Cholmod;
+    if (embedded || stc::petscBackendsBuilt()) {
       EXPECT_NO_THROW(o.validate()) << name;
       continue;
     }
@@ -35,6 +36,23 @@ TEST(LinearSolverOptions, TheResidualToleranceFollowsTheStrategysTolerance) {
   stc::SolverSpec spec;
   spec.setTolerance(1e-4);
   EXPECT_DOUBLE_EQ(spec.linearAtTolerance().rtol, 1e-8);
+  spec.linear.rtol = 1e-9;  // tighter: kept
+  EXPECT_DOUBLE_EQ(spec.linearAtTolerance().rtol, 1e-9);
+}
+
+// A looser linear solve than 1e-4 τ can make "converged" wrong (docs/method.md §2): refused by name.
+TEST(LinearSolverOptions, AResidualToleranceLooserThanTheStrategysIsRefused) {
+  stc::SolverSpec spec;
+  spec.setTolerance(1e-6);
+  spec.linear.rtol = 1e-5;
+  try {
+    spec.linearAtTolerance();
+    ADD_FAILURE() << "linear_rtol = 1e-5 accepted at tolerance 1e-6";
+  } catch (const stc::InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "solver option linear_rtol = 1e-05: must be 0 (the default, 1e-10) or at most 1e-4 x solver.tolerance = "
+              "1e-10: a looser linear solve can make \"converged\" wrong");
+  }
 }
 
 TEST(LinearSolverOptions, OutOfRangeValuesAreRefused) {
@@ -48,7 +66,9 @@ TEST(LinearSolverOptions, OutOfRangeValuesAreRefused) {
   EXPECT_THROW(o.validate(), stc::InputError);
 }
 
-TEST(LinearSolverOptions, EveryBackendHasItsName) {
+TEST(LinearSolverOptions, EveryBackendHasItsNameAndAutoIsTheDefault) {
+  EXPECT_EQ(stc::LinearSolverOptions{}.backend, stc::LinearBackend::Auto);
+  EXPECT_EQ(stc::nameOf(stc::LinearBackend::Auto), "auto");
   EXPECT_EQ(stc::nameOf(stc::LinearBackend::Cholmod), "cholmod");
   EXPECT_EQ(stc::nameOf(stc::LinearBackend::Mumps), "mumps");
   EXPECT_EQ(stc::nameOf(stc::LinearBackend::CgGamg), "cg-gamg");

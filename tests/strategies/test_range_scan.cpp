@@ -63,6 +63,8 @@ std::string nameOf(const RangeCase& c) {
   return name;
 }
 
+void PrintTo(const RangeCase& c, std::ostream* os) { *os << nameOf(c); }
+
 /// The values a range is scanned at: each finite end (its nearest representable value inside when
 /// strict) and ten decades inside it; an unbounded end at ten decades above the default (1000 for an
 /// integer).

@@ -111,13 +111,13 @@ struct CholmodFactor::Impl {
 
 CholmodFactor::CholmodFactor(const Eigen::SparseMatrix<double>& A, const std::string& what)
     : impl_(std::make_unique<Impl>()) {
-  factorise(A, what, {}, 0.0);
+  factorise(A, what, {}, 0.0, kNoMemoryBound);
 }
 
 CholmodFactor::CholmodFactor(const Eigen::SparseMatrix<double>& A, const std::string& what, const std::vector<int>& trailing,
-                     double min_work)
+                     double min_work, double max_bytes)
     : impl_(std::make_unique<Impl>()) {
-  factorise(A, what, trailing, min_work);
+  factorise(A, what, trailing, min_work, max_bytes);
 }
 
 // Trailing dofs: CHOLMOD's own analysis first (its ordering, and lnz to weigh the solves the
@@ -128,11 +128,14 @@ CholmodFactor::CholmodFactor(const Eigen::SparseMatrix<double>& A, const std::st
 // measurements behind kTrailingWork are in docs/threads.md, "The Delassus operator from the
 // factorisation".
 void CholmodFactor::factorise(const Eigen::SparseMatrix<double>& A, const std::string& what,
-                          const std::vector<int>& trailing, double min_work) {
+                          const std::vector<int>& trailing, double min_work, double max_bytes) {
   Impl& f = *impl_;
   f.n = static_cast<int>(A.rows());
   cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
   f.L = cholmod_analyze(&view, &f.common);
+  if (f.L && bytesOf(f.common.lnz) > max_bytes)
+    throw TooLarge("the CHOLMOD factor of " + what + " would take about " + std::to_string(bytesOf(f.common.lnz) / 1e9) +
+                   " GB");
   const double count = static_cast<double>(trailing.size());
   const bool ordered_last = f.L && count > 0 && count * f.common.lnz >= min_work &&
                             count * count * count / 3.0 <= kTrailingFlopShare * f.common.fl &&
