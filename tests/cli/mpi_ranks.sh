@@ -11,6 +11,9 @@ set -uo pipefail
 program=$(realpath "$1") source=$(realpath "$2") work=$3
 rm -rf "$work" && mkdir -p "$work"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+# One machine: ranks started by fork (no ssh needed, which a fresh machine may lack), and shared
+# memory without the cross-memory attach that containers forbid.
+export OMPI_MCA_plm=isolated OMPI_MCA_btl_vader_single_copy_mechanism=none
 export STC_THREADS=1
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }

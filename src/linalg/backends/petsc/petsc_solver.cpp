@@ -31,6 +31,13 @@ void ensurePetsc() {
     PetscBool ready = PETSC_FALSE;
     check(PetscInitialized(&ready), "PetscInitialized");
     if (ready) return;
+    if (!std::getenv("OMPI_COMM_WORLD_SIZE")) {
+      // One process without a launcher (Open MPI's singleton): it starts no other rank, so it needs
+      // no ssh to start them and no cross-memory attach, which a container may lack. The user's
+      // settings win (no overwrite).
+      setenv("OMPI_MCA_plm", "isolated", 0);
+      setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 0);
+    }
     check(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
     check(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), "PetscPushErrorHandler");
     std::atexit([] { PetscFinalize(); });
