@@ -1,5 +1,6 @@
 #include "stcontact/linalg/ranks.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <mutex>
 #include <string>
