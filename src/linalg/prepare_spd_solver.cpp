@@ -3,7 +3,6 @@
 #include <stdexcept>
 
 #include "stcontact/build_config.hpp"
-
 #include "stcontact/core/memory.hpp"
 #include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/linalg/ranks.hpp"
@@ -13,32 +12,26 @@
 
 namespace stc {
 
-LinearBackend chooseLinearBackend(const BackendChoice& choice) {
-  if (!choice.petsc) return LinearBackend::Cholmod;
-  if (choice.ranks > 1) return LinearBackend::Mumps;
-  return choice.factor_bytes <= BackendChoice::kFactorMemoryShare * choice.available_bytes ? LinearBackend::Cholmod
-                                                                                           : LinearBackend::CgGamg;
+AutoBackend autoBackend(int ranks, bool petsc, double available_bytes) {
+  if (!petsc) return {LinearBackend::Cholmod, CholmodFactor::kNoMemoryBound};
+  if (ranks > 1) return {LinearBackend::Mumps, CholmodFactor::kNoMemoryBound};
+  return {LinearBackend::Cholmod, kFactorMemoryShare * available_bytes};
 }
-
 
 std::unique_ptr<SpdSolver> prepareSpdSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,
                                             const LinearSolverOptions& requested, const SpdSolverHints& hints) {
   LinearSolverOptions options = requested;
+  double max_factor_bytes = CholmodFactor::kNoMemoryBound;
   if (requested.backend == LinearBackend::Auto) {
-    const int ranks = currentRanks().size;
-    if (!petscBackendsBuilt() || ranks > 1) {
-      options.backend = chooseLinearBackend({0.0, 0.0, ranks, petscBackendsBuilt()});
-    } else {  // CHOLMOD unless its symbolic analysis finds the factor too large for the memory left
-      try {
-        return std::make_unique<CholmodFactor>(A, what, hints.trailing, hints.min_work,
-                                               BackendChoice::kFactorMemoryShare * availableMemoryBytes());
-      } catch (const CholmodFactor::TooLarge&) {
-        options.backend = LinearBackend::CgGamg;
-      }
-    }
+    const AutoBackend choice = autoBackend(currentRanks().size, petscBackendsBuilt(), availableMemoryBytes());
+    options.backend = choice.backend;
+    max_factor_bytes = choice.max_factor_bytes;
   }
-  if (options.backend == LinearBackend::Cholmod)
-    return std::make_unique<CholmodFactor>(A, what, hints.trailing, hints.min_work);
+  if (options.backend == LinearBackend::Cholmod) try {
+      return std::make_unique<CholmodFactor>(A, what, hints.trailing, hints.min_work, max_factor_bytes);
+    } catch (const CholmodFactor::TooLarge&) {  // only under auto's bound, which PETSc's presence sets
+      options.backend = LinearBackend::CgGamg;
+    }
 #if STC_HAVE_PETSC
   return preparePetscSolver(A, what, options, hints.near_null_space);
 #else

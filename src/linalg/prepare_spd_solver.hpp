@@ -4,6 +4,7 @@
 // the caller's knowledge of A.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,28 +20,27 @@ struct SpdSolverHints {
   /// |trailing| · lnz ≥ min_work: CholmodFactor's trailing constructor).
   std::vector<int> trailing;
   double min_work = 1e8;
-  /// A's near-null space, n × k (the rigid-body motions of the free dofs): GAMG's coarse basis.
-  Eigen::MatrixXd near_null_space;
+  /// A's near-null space, n × k (the rigid-body motions of the free dofs): GAMG's coarse basis,
+  /// formed only by a backend that uses it (none: empty).
+  std::function<Eigen::MatrixXd()> near_null_space;
 };
 
-/// What `auto` weighs (docs/linear_solvers.md, "The crossover"): a direct factor is 18 to 39 times
-/// faster per right-hand side than CG + GAMG from 7k to 335k dofs and a space-time solve needs
-/// hundreds, so CHOLMOD wherever its factor fits in the memory available (kFactorMemoryShare of
-/// it, the factor's estimate from its symbolic analysis), else CG + GAMG (with PETSc); on several
-/// ranks MUMPS, the direct factor that runs on them (2.7 times CG + GAMG's speed on 2 ranks at 52k
-/// dofs, and CHOLMOD runs in one process only). Without PETSc: CHOLMOD.
-struct BackendChoice {
-  double factor_bytes = 0.0;     ///< CHOLMOD's estimated factor (CholmodFactor::estimatedBytes)
-  double available_bytes = 0.0;  ///< the memory available (availableMemoryBytes)
-  int ranks = 1;
-  bool petsc = false;            ///< whether the PETSc backends are built
-  static constexpr double kFactorMemoryShare = 0.5;
+/// `auto` (docs/linear_solvers.md, "The crossover"): a direct factor is 18 to 39 times faster per
+/// right-hand side than CG + GAMG from 7k to 335k dofs and a space-time solve needs hundreds, so
+/// CHOLMOD wherever its factor fits in kFactorMemoryShare of the memory available (its symbolic
+/// analysis says, before any numerical work), else CG + GAMG (with PETSc); on several ranks MUMPS,
+/// the direct factor that runs on them (2.7 times CG + GAMG's speed on 2 ranks at 52k dofs; CHOLMOD
+/// runs in one process only). Without PETSc: CHOLMOD, unbounded.
+struct AutoBackend {
+  LinearBackend backend;    ///< the backend to prepare with
+  double max_factor_bytes;  ///< Cholmod: the factor's bound, beyond which CG + GAMG prepares instead
 };
-LinearBackend chooseLinearBackend(const BackendChoice& choice);
+inline constexpr double kFactorMemoryShare = 0.5;
+AutoBackend autoBackend(int ranks, bool petsc, double available_bytes);
 
-/// A prepared by options.backend (`auto`: chooseLinearBackend for A), which must be built
-/// (LinearSolverOptions::validate). An
-/// iterative backend stops at options.rtol (set: residualTolerance). Throws InputError naming `what`
+/// A prepared by options.backend (`auto`: autoBackend), which must be built
+/// (LinearSolverOptions::validate). An iterative backend stops at options.rtol (set:
+/// residualTolerance). Throws InputError naming `what`
 /// when A is not positive definite (a direct backend sees it; an iterative one when its solves
 /// fail).
 std::unique_ptr<SpdSolver> prepareSpdSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,

@@ -45,13 +45,10 @@ bool sameEntries(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix
          std::equal(a.valuePtr(), a.valuePtr() + n, b.valuePtr());
 }
 
-// What the backend may use: the dofs to order last, and the rigid-body motions for an AMG.
-SpdSolverHints hintsFor(const Problem& problem, const Ordering& ordering, const LinearSolverOptions& linear) {
-  SpdSolverHints hints{ordering.trailing, ordering.min_work, {}};
-  const bool may_use_amg = linear.backend == LinearBackend::CgGamg ||
-                           (linear.backend == LinearBackend::Auto && petscBackendsBuilt());
-  if (may_use_amg) hints.near_null_space = rigidBodyModesOfFreeDofs(problem);
-  return hints;
+// What the backend may use: the dofs to order last, and the rigid-body motions for an AMG (formed
+// only when one is prepared).
+SpdSolverHints hintsFor(const Problem& problem, const Ordering& ordering) {
+  return {ordering.trailing, ordering.min_work, [&problem] { return rigidBodyModesOfFreeDofs(problem); }};
 }
 
 }  // namespace
@@ -75,7 +72,7 @@ std::shared_ptr<const SpdSolver> PreparedOperators::stiffnessFree(const Problem&
   }
   const auto start = Clock::now();
   stiffness_free_ = prepareSpdSolver(problem.stiffness_free, "the free-dof stiffness K_ff", linear_,
-                                     hintsFor(problem, ordering, linear_));
+                                     hintsFor(problem, ordering));
   stiffness_fingerprint_ = print;
   Preparation record{"K_ff", stiffness_free_->backend(), problem.numFreeDofs(), 0, stiffness_free_->factorNonZeros(),
                      secondsSince(start), 1};
@@ -95,7 +92,7 @@ std::shared_ptr<const SearchOperator> PreparedOperators::searchOperator(const Pr
     }
   const auto start = Clock::now();
   std::unique_ptr<SpdSolver> factor =
-      prepareSpdSolver(matrix, "K + B^T k B", linear_, hintsFor(problem, ordering, linear_));
+      prepareSpdSolver(matrix, "K + B^T k B", linear_, hintsFor(problem, ordering));
   auto op = std::make_shared<const SearchOperator>(SearchOperator{std::move(matrix), std::move(factor)});
   records_.push_back({"K_ff + B^T k B", op->factor->backend(), problem.numFreeDofs(), problem.contact.size(),
                       op->factor->factorNonZeros(), secondsSince(start), 1});

@@ -13,7 +13,7 @@
 namespace stc {
 
 enum class LinearBackend {
-  /// The fastest that fits (chooseLinearBackend, src/linalg/prepare_spd_solver.hpp): CHOLMOD where
+  /// The fastest that fits (autoBackend, src/linalg/prepare_spd_solver.hpp): CHOLMOD where
   /// its factor fits in memory, else CG + GAMG; MUMPS on several ranks. The default.
   Auto,
   /// CHOLMOD's sparse Cholesky (SuiteSparse), in the process.

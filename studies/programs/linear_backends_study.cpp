@@ -54,7 +54,7 @@ Sample measure(const stc::Problem& problem, const Eigen::SparseMatrix<double>& A
   options.backend = backend;
   options.rtol = rtol;
   stc::SpdSolverHints hints;
-  if (backend == LinearBackend::CgGamg) hints.near_null_space = stc::rigidBodyModesOfFreeDofs(problem);
+  hints.near_null_space = [&problem] { return stc::rigidBodyModesOfFreeDofs(problem); };
   stc::PeakMemoryProbe memory;
   memory.reset();
   Sample s;

@@ -51,7 +51,7 @@ class SpdSolverBackend : public testing::TestWithParam<stc::LinearBackend> {
     return o;
   }
   std::unique_ptr<stc::SpdSolver> prepare(const stc::Problem& p, const Eigen::SparseMatrix<double>& A) const {
-    return stc::prepareSpdSolver(A, "A", options(), {{}, 1e8, stc::rigidBodyModesOfFreeDofs(p)});
+    return stc::prepareSpdSolver(A, "A", options(), {{}, 1e8, [&p] { return stc::rigidBodyModesOfFreeDofs(p); }});
   }
   bool direct() const { return GetParam() != stc::LinearBackend::CgGamg; }
   // The bound on ‖A X − B‖ / ‖B‖ column by column: round-off, or the residual tolerance.
@@ -136,7 +136,7 @@ TEST_P(SpdSolverBackend, HasTheCondensedOperatorOnlyFromCholmodsTrailingBlock) {
   const auto& A = seed().stiffness_free;
   std::vector<int> dofs(40);
   for (int i = 0; i < 40; ++i) dofs[static_cast<std::size_t>(i)] = i;
-  const auto solver = stc::prepareSpdSolver(A, "A", options(), {dofs, 0.0, stc::rigidBodyModesOfFreeDofs(seed())});
+  const auto solver = stc::prepareSpdSolver(A, "A", options(), {dofs, 0.0, [] { return stc::rigidBodyModesOfFreeDofs(seed()); }});
   Eigen::SparseMatrix<double> C(1, A.rows());
   C.insert(0, 3) = 1.0;
   EXPECT_EQ(solver->condenses(C), GetParam() == stc::LinearBackend::Cholmod);
@@ -185,10 +185,14 @@ TEST(RigidBodyModes, AreKilledByTheUnconstrainedStiffness) {
 TEST(AutoBackend, TakesTheDirectFactorWhereItFitsAndTheIterativeOneElsewhere) {
   using stc::LinearBackend;
   const double gb = 1e9;
-  EXPECT_EQ(stc::chooseLinearBackend({4 * gb, 17 * gb, 1, true}), LinearBackend::Cholmod);
-  EXPECT_EQ(stc::chooseLinearBackend({9 * gb, 17 * gb, 1, true}), LinearBackend::CgGamg);
-  EXPECT_EQ(stc::chooseLinearBackend({4 * gb, 17 * gb, 2, true}), LinearBackend::Mumps);
-  EXPECT_EQ(stc::chooseLinearBackend({9 * gb, 17 * gb, 1, false}), LinearBackend::Cholmod);
+  const stc::AutoBackend one = stc::autoBackend(1, true, 17 * gb);  // CHOLMOD, bounded by half of 17 GB
+  EXPECT_EQ(one.backend, LinearBackend::Cholmod);
+  EXPECT_LE(4 * gb, one.max_factor_bytes);  // a 4 GB factor is CHOLMOD's
+  EXPECT_GT(9 * gb, one.max_factor_bytes);  // a 9 GB one gives way to CG + GAMG (CholmodFactorBound)
+  EXPECT_EQ(stc::autoBackend(2, true, 17 * gb).backend, LinearBackend::Mumps);
+  const stc::AutoBackend without_petsc = stc::autoBackend(1, false, 17 * gb);
+  EXPECT_EQ(without_petsc.backend, LinearBackend::Cholmod);
+  EXPECT_LE(9 * gb, without_petsc.max_factor_bytes);  // unbounded: there is nothing to give way to
   // In one process, the seed's K_ff fits: CHOLMOD, the same factor as asked by name.
   stc::LinearSolverOptions o;
   const auto chosen = stc::prepareSpdSolver(seed().stiffness_free, "K_ff", o, {});

@@ -105,39 +105,20 @@ void setNearNullSpace(Mat M, const Eigen::MatrixXd& R, MPI_Comm comm, const RowB
 class PetscSolver final : public SpdSolver {
  public:
   PetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what, const LinearSolverOptions& options,
-              const Eigen::MatrixXd& near_null_space)
+              const std::function<Eigen::MatrixXd()>& near_null_space)
       : n_(static_cast<int>(A.rows())), backend_(options.backend), ranks_(currentRanks()),
         comm_(ranks_.size > 1 ? PETSC_COMM_WORLD : PETSC_COMM_SELF),
         rows_(rowBlockOf(static_cast<PetscInt>(A.rows()), ranks_)) {
     ensurePetsc();
-    matrix_ = toPetsc(A, comm_, rows_);
-    check(KSPCreate(comm_, &ksp_), "KSPCreate");
-    check(KSPSetOptionsPrefix(ksp_, "stc_"), "KSPSetOptionsPrefix");
-    check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
-    PC pc = nullptr;
-    check(KSPGetPC(ksp_, &pc), "KSPGetPC");
-    if (backend_ == LinearBackend::Mumps) {
-      check(KSPSetType(ksp_, KSPPREONLY), "KSPSetType");
-      check(PCSetType(pc, PCCHOLESKY), "PCSetType");
-      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
-    } else {
-      setNearNullSpace(matrix_, near_null_space, comm_, rows_);
-      check(KSPSetType(ksp_, KSPCG), "KSPSetType");
-      check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
-      check(KSPSetTolerances(ksp_, options.rtol > 0.0 ? options.rtol : LinearSolverOptions::kRtolFloor, 0.0,
-                             PETSC_DEFAULT, options.max_iterations),
-            "KSPSetTolerances");
-      check(PCSetType(pc, PCGAMG), "PCSetType");
+    try {
+      prepare(A, what, options, near_null_space);
+    } catch (...) {  // a refused operator (not positive definite) leaves no PETSc object behind
+      destroy();
+      throw;
     }
-    check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
-    check(KSPSetUp(ksp_), "KSPSetUp");  // the factorisation, or the AMG hierarchy
-    if (backend_ == LinearBackend::Mumps) checkFactor(what);
   }
 
-  ~PetscSolver() override {
-    KSPDestroy(&ksp_);
-    MatDestroy(&matrix_);
-  }
+  ~PetscSolver() override { destroy(); }
 
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B, Workspace&) const override {
     if (B.rows() != n_) throw std::invalid_argument("SpdSolver::solve: right-hand side has the wrong number of rows");
@@ -169,6 +150,38 @@ class PetscSolver final : public SpdSolver {
   double factor_entries_ = 0.0;
   mutable std::mutex mutex_;
   mutable KrylovCounts counts_;
+
+  // The factorisation (mumps) or the AMG hierarchy (cg-gamg) of A, PETSc's options applied last.
+  void prepare(const Eigen::SparseMatrix<double>& A, const std::string& what, const LinearSolverOptions& options,
+               const std::function<Eigen::MatrixXd()>& near_null_space) {
+    matrix_ = toPetsc(A, comm_, rows_);
+    check(KSPCreate(comm_, &ksp_), "KSPCreate");
+    check(KSPSetOptionsPrefix(ksp_, "stc_"), "KSPSetOptionsPrefix");
+    check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
+    PC pc = nullptr;
+    check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+    if (backend_ == LinearBackend::Mumps) {
+      check(KSPSetType(ksp_, KSPPREONLY), "KSPSetType");
+      check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+    } else {
+      if (near_null_space) setNearNullSpace(matrix_, near_null_space(), comm_, rows_);
+      check(KSPSetType(ksp_, KSPCG), "KSPSetType");
+      check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+      check(KSPSetTolerances(ksp_, options.rtol > 0.0 ? options.rtol : LinearSolverOptions::kRtolFloor, 0.0,
+                             PETSC_DEFAULT, options.max_iterations),
+            "KSPSetTolerances");
+      check(PCSetType(pc, PCGAMG), "PCSetType");
+    }
+    check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+    check(KSPSetUp(ksp_), "KSPSetUp");  // the factorisation, or the AMG hierarchy
+    if (backend_ == LinearBackend::Mumps) checkFactor(what);
+  }
+
+  void destroy() {
+    KSPDestroy(&ksp_);
+    MatDestroy(&matrix_);
+  }
 
   // MUMPS's verdict on A: singular (INFOG(1) < 0) or with negative pivots (INFOG(12) > 0) is not
   // positive definite; INFOG(29) is the number of entries in the factors.
@@ -271,7 +284,7 @@ Ranks petscRanks() {
 
 std::unique_ptr<SpdSolver> preparePetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,
                                               const LinearSolverOptions& options,
-                                              const Eigen::MatrixXd& near_null_space) {
+                                              const std::function<Eigen::MatrixXd()>& near_null_space) {
   if (options.backend == LinearBackend::Cholmod)
     throw std::logic_error("preparePetscSolver: cholmod is not a PETSc backend");
   return std::make_unique<PetscSolver>(A, what, options, near_null_space);

@@ -15,6 +15,7 @@
 // lock (PETSc objects are not thread-safe).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -24,11 +25,12 @@
 
 namespace stc {
 
-/// A prepared by PETSc: options.backend is Mumps or CgGamg. Throws InputError naming `what` when
-/// MUMPS finds A singular or not positive definite.
+/// A prepared by PETSc: options.backend is Mumps or CgGamg (which forms the near-null space, when
+/// given, as GAMG's coarse basis). Throws InputError naming `what` when MUMPS finds A singular or
+/// not positive definite.
 std::unique_ptr<SpdSolver> preparePetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,
                                               const LinearSolverOptions& options,
-                                              const Eigen::MatrixXd& near_null_space);
+                                              const std::function<Eigen::MatrixXd()>& near_null_space);
 
 /// PETSc (and MPI) started, and this process's place in PETSC_COMM_WORLD.
 Ranks petscRanks();
