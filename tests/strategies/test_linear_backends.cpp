@@ -70,11 +70,7 @@ stc::SolveResult solveOn(const BackendCase& c, stc::LinearBackend backend) {
   scene.solver.linear.backend = backend;
   const stc::Problem problem = stc::buildProblem(scene);
   stc::PreparedOperators operators(scene.solver.linearAtTolerance());
-  stc::SolveInputs inputs;
-  inputs.reference = c.strategy == "incremental" ? nullptr : &base.reference;
-  inputs.converged_lambda = &base.incremental.interface.lambda;
-  inputs.operators = &operators;
-  stc::SolveResult result = stc::solve(stc::strategyNamed(c.strategy), problem, scene.solver, inputs);
+  stc::SolveResult result = base.solveAgainstReference(c.strategy, problem, scene.solver, &operators);
   for (const stc::Preparation& p : operators.preparations()) EXPECT_EQ(p.backend, stc::nameOf(backend)) << p.name;
   return result;
 }
@@ -89,8 +85,7 @@ TEST_P(LinearBackendRun, ConvergedMeansATrueErrorWithinTheTolerance) {
   const BackendCase& c = GetParam();
   const stc::SolveResult run = solveOn(c, c.backend);
   const stc::SolveSummary& s = run.summary;
-  std::cout << "[ measured ] " << nameOf(c) << ": " << stc::toString(s.termination) << " after " << s.iterations
-            << ", true error " << s.error.value_or(-1.0) << ", estimate " << s.error_estimate << "\n";
+  stc::test::printMeasured(nameOf(c), s);
   if (c.strategy == "incremental") {
     const double difference = relativeDifference(run.interface.lambda, reference(c.dimension).incremental.interface.lambda);
     std::cout << "[ measured ] " << nameOf(c) << ": forces against CHOLMOD's " << difference << "\n";

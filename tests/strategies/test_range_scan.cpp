@@ -187,12 +187,8 @@ TEST_P(RangeScan, ConvergedMeansATrueErrorWithinTheTolerance) {
         reference(material ? scene : sceneNamed(c.scene), material ? nameOf(c) : c.scene);
     if (!base.incremental.summary.converged() || !base.reference.defined()) return;  // no measure to hold it to
     const stc::Problem problem = stc::buildProblem(scene);  // the search direction may differ
-    stc::SolveInputs inputs;
-    inputs.reference = &base.reference;
-    inputs.converged_lambda = &base.incremental.interface.lambda;
-    const stc::SolveSummary s = stc::solve(stc::strategyNamed(c.strategy), problem, scene.solver, inputs).summary;
-    std::cout << "[ measured ] " << nameOf(c) << ": " << stc::toString(s.termination) << " after " << s.iterations
-              << ", true error " << s.error.value_or(-1.0) << ", estimate " << s.error_estimate << "\n";
+    const stc::SolveSummary s = base.solveAgainstReference(c.strategy, problem, scene.solver).summary;
+    stc::test::printMeasured(nameOf(c), s);
     if (!s.converged()) return;  // an honest answer
     ASSERT_TRUE(s.error.has_value()) << s.message;
     EXPECT_LE(*s.error, scene.solver.tolerance()) << s.message;  // the case's own when it sets `tolerance`

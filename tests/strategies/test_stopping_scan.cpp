@@ -69,12 +69,8 @@ TEST_P(StoppingScan, ConvergedMeansATrueErrorWithinTheTolerance) {
   scene.solver.setTolerance(kTolerance);
   // The same mesh, loads and stiffness as the reference's problem: its true-error measure applies.
   const stc::Problem problem = stc::buildProblem(scene);
-  stc::SolveInputs inputs;
-  inputs.reference = &base.reference;
-  inputs.converged_lambda = &base.incremental.interface.lambda;
-  const stc::SolveSummary s = stc::solve(stc::strategyNamed(c.strategy), problem, scene.solver, inputs).summary;
-  std::cout << "[ measured ] " << nameOf(c) << ": " << stc::toString(s.termination) << " after " << s.iterations
-            << ", true error " << s.error.value_or(-1.0) << ", estimate " << s.error_estimate << "\n";
+  const stc::SolveSummary s = base.solveAgainstReference(c.strategy, problem, scene.solver).summary;
+  stc::test::printMeasured(nameOf(c), s);
   ASSERT_TRUE(s.error.has_value());
   if (!s.converged()) return;  // an honest answer
   EXPECT_LE(*s.error, kTolerance) << s.message;
