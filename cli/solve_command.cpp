@@ -4,12 +4,14 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "stcontact/cli/commands.hpp"
 #include "stcontact/cli/stopping_help.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
 #include "stcontact/cli/threads_option.hpp"
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/memory.hpp"
 #include "stcontact/core/interruption.hpp"
 #include "stcontact/io/run_folder.hpp"
 #include "stcontact/io/run_writer.hpp"
@@ -106,9 +108,10 @@ int runSolve(const SolveArgs& args) {
     reference = referenceOrWarning(problem, progress, operators);
   const SolveResult result = runSolver(problem, scene, reference.get(), progress, operators);
   throwIfInterrupted();  // a solve stopped by a signal writes nothing
+  std::vector<double> peaks = valuesOfEveryRank(peakResidentBytes());  // every rank takes part
   if (!ranks.writes()) return result.summary.converged() ? 0 : 2;
-  writeRunOutputs(folder->path(), problem, result, {scene.parameters_json, STC_VERSION}, outputsOn(scene, ranks),
-                  operators);
+  writeRunOutputs(folder->path(), problem, result, {scene.parameters_json, STC_VERSION, std::move(peaks)},
+                  outputsOn(scene, ranks), operators);
   folder->commit();
 
   if (!args.quiet) {

@@ -143,7 +143,7 @@ py::dict resultDict(const SceneHandle& run, SolveResult&& result, const Prepared
   out["solver"] = std::string(scene.solver.name());
   out["dimension"] = problem->dimension;
   out["summary_json"] =
-      summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION}, operators.preparations());
+      summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION, {}}, operators.preparations());
   out["history"] = historyArrays(result.summary);
   out["reactions"] = reactionArrays(*problem, result);
   out["times"] = movedToNumpy(std::vector<double>(problem->times));
@@ -195,7 +195,7 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   bridge.rethrowPending();
   if (!warning.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
   if (folder) {
-    writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION}, scene.output, operators);
+    writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION, {}}, scene.output, operators);
     folder->commit();
   }
   return resultDict(run, std::move(result), operators);

@@ -1,5 +1,6 @@
 #include "stcontact/strategies/registry.hpp"
 
+#include <memory>
 #include <stdexcept>
 
 #include "stcontact/fas/aposteriori/solve_fas_aposteriori.hpp"
@@ -36,15 +37,36 @@ SolveResult linearSolveFailed(Strategy strategy, const Problem& problem, const L
   out.summary.reason = out.summary.message = failure.what();
   return out;
 }
+
+// The Krylov iterations of every operator prepared in `operators` so far.
+long long krylovIterationsOf(const PreparedOperators& operators) {
+  long long total = 0;
+  for (const Preparation& p : operators.preparations()) total += p.krylov.iterations;
+  return total;
+}
+
+SolveResult solveWith(const StrategyRegistration& r, const Problem& problem, const SolverSpec& spec,
+                      const SolveInputs& inputs) {
+  try {
+    return r.solve(problem, spec, inputs);
+  } catch (const LinearSolveFailure& failure) {
+    return linearSolveFailed(r.strategy, problem, failure);
+  }
+}
 }  // namespace
 
 SolveResult solve(Strategy strategy, const Problem& problem, const SolverSpec& spec, const SolveInputs& inputs) {
+  // Without the run's operators, the solve's own, on spec's linear backend.
+  SolveInputs with = inputs;
+  std::unique_ptr<PreparedOperators> own;
+  if (!with.operators) with.operators = (own = std::make_unique<PreparedOperators>(spec.linearAtTolerance())).get();
+  const long long before = krylovIterationsOf(*with.operators);
   for (const StrategyRegistration& r : strategyRegistry())
-    if (r.strategy == strategy) try {
-        return r.solve(problem, spec, inputs);
-      } catch (const LinearSolveFailure& failure) {
-        return linearSolveFailed(strategy, problem, failure);
-      }
+    if (r.strategy == strategy) {
+      SolveResult result = solveWith(r, problem, spec, with);
+      result.summary.krylov_iterations = krylovIterationsOf(*with.operators) - before;
+      return result;
+    }
   throw std::logic_error("strategy without a registration: " + std::string(nameOf(strategy)));
 }
 

@@ -24,7 +24,9 @@ struct StrategyRegistration {
 /// The registered strategies, in the order of kStrategies.
 const std::array<StrategyRegistration, kStrategies.size()>& strategyRegistry();
 
-/// Solves `problem` with `strategy`, its options taken from `spec`.
+/// Solves `problem` with `strategy`, its options taken from `spec`, its operators from
+/// inputs.operators (without them, its own on spec.linearAtTolerance(): InputError for a linear
+/// tolerance looser than it allows); summary.krylov_iterations counts what its linear solves took.
 SolveResult solve(Strategy strategy, const Problem& problem, const SolverSpec& spec, const SolveInputs& inputs = {});
 
 /// Solves `problem` with the strategy `spec` names (solver.name).

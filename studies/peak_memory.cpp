@@ -1,10 +1,11 @@
 #include "stcontact/studies/peak_memory.hpp"
 
 #include <malloc.h>
-#include <sys/resource.h>
 
 #include <fstream>
 #include <sstream>
+
+#include "stcontact/core/memory.hpp"
 
 namespace stc {
 namespace {
@@ -32,11 +33,7 @@ bool resetHighWaterMark() {
   return static_cast<bool>(clear);
 }
 
-double processPeakSinceStartMb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in kB on Linux
-}
+double processPeakSinceStartMb() { return peakResidentBytes() / (1024.0 * 1024.0); }
 
 }  // namespace
 

@@ -50,6 +50,12 @@ double availableMemoryBytes() {
   return std::min(machineAvailableBytes(), left);
 }
 
+double peakResidentBytes() {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0) return 0.0;
+  return static_cast<double>(usage.ru_maxrss) * 1024.0;  // ru_maxrss is in kB on Linux
+}
+
 void requireUsableAddressSpace() {
   const double limit = addressSpaceLimitBytes();
   if (limit >= kMinAddressSpaceBytes) return;

@@ -21,6 +21,10 @@ double addressSpaceLimitBytes();
 /// current size (/proc/self/statm).
 double availableMemoryBytes();
 
+/// The process's peak resident size since it started, in bytes (getrusage's ru_maxrss): what a
+/// run needed of the machine's memory so far, 0 where unknown.
+double peakResidentBytes();
+
 /// Throws InputError when the address-space limit is below kMinAddressSpaceBytes.
 void requireUsableAddressSpace();
 

@@ -1,11 +1,13 @@
 #include "stcontact/io/run_writer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <optional>
 #include <sstream>
 
+#include "stcontact/core/memory.hpp"
 #include "stcontact/core/overloaded.hpp"
 #include "stcontact/core/threads.hpp"
 #include "stcontact/fem/elasticity.hpp"
@@ -186,6 +188,10 @@ std::vector<JsonObject> preparationsJson(const std::vector<Preparation>& prepara
     entry.add("operator", p.name).add("backend", p.backend).add("rows", p.rows);
     if (p.contact_nodes > 0) entry.add("contact_nodes", p.contact_nodes);
     entry.add("factor_nonzeros", p.factor_nonzeros).add("seconds", p.seconds).add("uses", p.uses);
+    if (p.iterative)
+      entry.add("krylov_solves", p.krylov.solves)
+          .add("krylov_iterations", p.krylov.iterations)
+          .add("krylov_max_iterations", p.krylov.max_iterations);
     out.push_back(std::move(entry));
   }
   return out;
@@ -195,6 +201,10 @@ std::vector<JsonObject> preparationsJson(const std::vector<Preparation>& prepara
 
 std::string summaryJson(const Problem& problem, const SolveSummary& summary, const RunInfo& info,
                         const std::vector<Preparation>& preparations) {
+  // The writing rank's peak includes the writing so far.
+  std::vector<double> peaks = info.peak_memory_bytes.empty() ? std::vector<double>{0.0} : info.peak_memory_bytes;
+  double& own = peaks[static_cast<std::size_t>(std::min<int>(currentRanks().rank, static_cast<int>(peaks.size()) - 1))];
+  own = std::max(own, peakResidentBytes());
   JsonObject json;
   json.add("solver", summary.solver)
       .add("termination", toString(summary.termination))
@@ -202,6 +212,7 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
       .add("iterations", summary.iterations)
       .add("relaxations", summary.relaxations)
       .add("sparse_solves", summary.sparseSolves())
+      .add("krylov_iterations", summary.krylov_iterations)
       .add("indicator", summary.indicator)
       .add("error", summary.error)
       .add("error_estimate", std::isfinite(summary.error_estimate) ? std::optional<double>(summary.error_estimate)
@@ -210,6 +221,8 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
       .add("sub_grid", subGridJson(summary))
       .add("threads", threadCount())
       .add("ranks", currentRanks().size)
+      .add("peak_memory_bytes", *std::max_element(peaks.begin(), peaks.end()))
+      .add("peak_memory_bytes_per_rank", peaks)
       .add("blas_kernels", linalg::blasKernels())
       .add("n_dofs", problem.numDofs())
       .add("n_contact_nodes", problem.contact.size())

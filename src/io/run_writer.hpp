@@ -16,6 +16,10 @@ namespace stc {
 struct RunInfo {
   std::string parameters_json = "{}";  ///< the scene as read (Scene::parameters_json)
   std::string version;                 ///< stcontact version, recorded in summary.json
+  /// Each rank's peak resident size in bytes (valuesOfEveryRank(peakResidentBytes()) after the
+  /// solve, made by every rank); the writing rank's is read again when summary.json is written
+  /// (empty: one process, read then).
+  std::vector<double> peak_memory_bytes;
 };
 
 /// The frames take K_ff from `operators` (the run's: prepared once, shared with its reference and

@@ -27,15 +27,16 @@ struct SpdSolverHints {
 
 /// `auto` (docs/linear_solvers.md, "The crossover"): a direct factor is 18 to 39 times faster per
 /// right-hand side than CG + GAMG from 7k to 335k dofs and a space-time solve needs hundreds, so
-/// CHOLMOD wherever its factor fits in kFactorMemoryShare of the memory available (its symbolic
-/// analysis says, before any numerical work), else CG + GAMG (with PETSc); on several ranks MUMPS,
-/// the direct factor that runs on them (2.7 times CG + GAMG's speed on 2 ranks at 52k dofs; CHOLMOD
-/// runs in one process only). Without PETSc: CHOLMOD, unbounded.
+/// the direct factor wherever it fits in kFactorMemoryShare of the memory available to the rank
+/// (its analysis says, before any numerical work), else CG + GAMG (with PETSc): CHOLMOD in one
+/// process, MUMPS on several ranks (CHOLMOD runs in one process only; MUMPS there is 2.7 times CG +
+/// GAMG's speed on 2 ranks at 52k dofs). Without PETSc: CHOLMOD, unbounded.
 struct AutoBackend {
   LinearBackend backend;    ///< the backend to prepare with
-  double max_factor_bytes;  ///< Cholmod: the factor's bound, beyond which CG + GAMG prepares instead
+  double max_factor_bytes;  ///< the direct factor's bound (per rank), beyond which CG + GAMG prepares instead
 };
 inline constexpr double kFactorMemoryShare = 0.5;
+/// `available_bytes`: what this rank may use (the machine's available memory shared by its ranks).
 AutoBackend autoBackend(int ranks, bool petsc, double available_bytes);
 
 /// A prepared by options.backend (`auto`: autoBackend), which must be built

@@ -45,4 +45,18 @@ Ranks startRanks() {
 
 Ranks currentRanks() { return started; }
 
+int ranksOnThisMachine() {
+  if (started.size <= 1) return 1;
+  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"})
+    if (const char* value = std::getenv(name)) return std::clamp(std::atoi(value), 1, started.size);
+  return started.size;
+}
+
+std::vector<double> valuesOfEveryRank(double value) {
+#if STC_HAVE_PETSC
+  if (started.size > 1) return petscAllGather(value);
+#endif
+  return {value};
+}
+
 }  // namespace stc

@@ -5,6 +5,8 @@
 // over the ranks and solved together by a PETSc backend, and every rank receives each solution
 // whole, so that all take the same steps in the same order (one thread each); rank 0 alone writes.
 // Without a launcher: rank 0 of 1, as before ranks existed.
+#include <vector>
+
 namespace stc {
 
 struct Ranks {
@@ -20,5 +22,13 @@ struct Ranks {
 Ranks startRanks();
 /// The ranks started (rank 0 of 1 before startRanks, or without a launcher).
 Ranks currentRanks();
+
+/// The ranks started on this machine (the launcher's OMPI_COMM_WORLD_LOCAL_SIZE, MPI_LOCALNRANKS),
+/// which share its memory; all of them when it does not say; 1 in one process.
+int ranksOnThisMachine();
+
+/// `value` of every rank, in rank order, on every rank: a collective call on several ranks (each must
+/// make it, in the same order), {value} on one.
+std::vector<double> valuesOfEveryRank(double value);
 
 }  // namespace stc

@@ -29,6 +29,13 @@ class LinearSolveFailure : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A direct factor refused before its numerical work because its analysis says it would exceed
+/// the memory bound it was given (`auto`'s: src/linalg/prepare_spd_solver.hpp).
+class FactorTooLarge : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// What the Krylov solves of an iterative backend took so far (zero for a direct one).
 struct KrylovCounts {
   long long solves = 0;      ///< right-hand sides solved

@@ -75,7 +75,7 @@ std::shared_ptr<const SpdSolver> PreparedOperators::stiffnessFree(const Problem&
                                      hintsFor(problem, ordering));
   stiffness_fingerprint_ = print;
   Preparation record{"K_ff", stiffness_free_->backend(), problem.numFreeDofs(), 0, stiffness_free_->factorNonZeros(),
-                     secondsSince(start), 1};
+                     secondsSince(start), 1, !stiffness_free_->isDirect(), {}};
   records_.push_back(record);
   stiffness_record_ = records_.size() - 1;
   return stiffness_free_;
@@ -95,14 +95,17 @@ std::shared_ptr<const SearchOperator> PreparedOperators::searchOperator(const Pr
       prepareSpdSolver(matrix, "K + B^T k B", linear_, hintsFor(problem, ordering));
   auto op = std::make_shared<const SearchOperator>(SearchOperator{std::move(matrix), std::move(factor)});
   records_.push_back({"K_ff + B^T k B", op->factor->backend(), problem.numFreeDofs(), problem.contact.size(),
-                      op->factor->factorNonZeros(), secondsSince(start), 1});
+                      op->factor->factorNonZeros(), secondsSince(start), 1, !op->factor->isDirect(), {}});
   search_.push_back({ordering, op, records_.size() - 1});
   return op;
 }
 
 std::vector<Preparation> PreparedOperators::preparations() const {
   const std::lock_guard<std::mutex> lock(mutex_);
-  return records_;
+  std::vector<Preparation> out = records_;
+  if (stiffness_free_) out[stiffness_record_].krylov = stiffness_free_->krylovCounts();
+  for (const Search& s : search_) out[s.record].krylov = s.op->factor->krylovCounts();
+  return out;
 }
 
 PreparedOperators& operatorsOr(PreparedOperators* operators, std::unique_ptr<PreparedOperators>& own) {

@@ -34,6 +34,8 @@ struct Preparation {
   double factor_nonzeros = 0.0;  ///< entries of its Cholesky factor (SpdSolver::factorNonZeros)
   double seconds = 0.0;          ///< the preparation's wall time
   int uses = 0;                  ///< how many times it was handed out
+  bool iterative = false;        ///< a Krylov backend (SpdSolver::isDirect false): its counts below
+  KrylovCounts krylov;           ///< its Krylov solves so far (zero for a direct one)
 };
 
 /// How a factor orders the dofs its caller condenses on (CholmodFactor's trailing constructor): the

@@ -58,6 +58,9 @@ struct SolveSummary {
   double error_estimate = 0.0;    ///< of the last iteration (0 for the exact incremental solver)
   std::optional<double> error;
   double wall_s = 0.0;
+  /// Krylov iterations of the solve's linear solves on an iterative backend (0 on a direct one),
+  /// counted by stc::solve (strategies/registry.hpp) from the operators it solved with.
+  long long krylov_iterations = 0;
 
   bool converged() const { return termination == Termination::Converged; }
   /// Right-hand sides solved with a sparse factor over the whole solve (its stages included): the

@@ -5,7 +5,7 @@
 #   - mumps: the iterations and the reactions of one process, to 1e-8 relative (round-off apart);
 #   - cg-gamg: converged, its true error (against the incremental reference the ranks compute
 #     together) within the tolerance;
-# each summary saying 2 ranks and its backend; `auto` takes mumps on 2 ranks; `solver.linear =
+# each summary saying 2 ranks, its backend, each rank's peak memory (and cg-gamg's Krylov iterations); `auto` takes mumps on 2 ranks; `solver.linear =
 # "cholmod"` and another command than solve are refused there. Exit 0 when every check held; each failure is printed.
 set -uo pipefail
 program=$(realpath "$1") source=$(realpath "$2") work=$3
@@ -32,6 +32,12 @@ def check(cond, what):
         print("  " + what); ok = False
 check(s1["ranks"] == 1 and s2["ranks"] == 2, f"ranks {s1['ranks']}, {s2['ranks']}")
 check(all(p["backend"] == backend for p in s1["preparations"] + s2["preparations"]), "backend")
+peaks = s2["peak_memory_bytes_per_rank"]
+check(len(peaks) == 2 and min(peaks) > 0 and s2["peak_memory_bytes"] == max(peaks), f"peak memory per rank {peaks}")
+if backend == "cg-gamg":
+    # the solve's iterations, within those of its operators (which the reference used too)
+    check(0 < s2["krylov_iterations"] <= sum(p["krylov_iterations"] for p in s2["preparations"]),
+          f"krylov iterations {s2['krylov_iterations']}")
 check(s2["termination"] == "converged", f"2 ranks: {s2['termination']} ({s2['message']})")
 if backend == "mumps":
     check(abs(s1["iterations"] - s2["iterations"]) <= 1, f"iterations {s1['iterations']} against {s2['iterations']}")

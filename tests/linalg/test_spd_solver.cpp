@@ -12,12 +12,16 @@
 
 #include "fixtures/hemisphere_scene.hpp"
 #include "fixtures/seed_scene.hpp"
+#include "stcontact/build_config.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/linalg/prepare_spd_solver.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/operators/rigid_body_modes.hpp"
 #include "stcontact/problem/problem.hpp"
+#if STC_HAVE_PETSC
+#include "stcontact/linalg/backends/petsc/petsc_solver.hpp"
+#endif
 
 namespace {
 
@@ -189,7 +193,9 @@ TEST(AutoBackend, TakesTheDirectFactorWhereItFitsAndTheIterativeOneElsewhere) {
   EXPECT_EQ(one.backend, LinearBackend::Cholmod);
   EXPECT_LE(4 * gb, one.max_factor_bytes);  // a 4 GB factor is CHOLMOD's
   EXPECT_GT(9 * gb, one.max_factor_bytes);  // a 9 GB one gives way to CG + GAMG (CholmodFactorBound)
-  EXPECT_EQ(stc::autoBackend(2, true, 17 * gb).backend, LinearBackend::Mumps);
+  const stc::AutoBackend ranks = stc::autoBackend(2, true, 17 * gb);  // MUMPS, bounded as CHOLMOD
+  EXPECT_EQ(ranks.backend, LinearBackend::Mumps);
+  EXPECT_EQ(ranks.max_factor_bytes, one.max_factor_bytes);
   const stc::AutoBackend without_petsc = stc::autoBackend(1, false, 17 * gb);
   EXPECT_EQ(without_petsc.backend, LinearBackend::Cholmod);
   EXPECT_LE(9 * gb, without_petsc.max_factor_bytes);  // unbounded: there is nothing to give way to
@@ -203,6 +209,22 @@ TEST(AutoBackend, TakesTheDirectFactorWhereItFitsAndTheIterativeOneElsewhere) {
 TEST(CholmodFactorBound, RefusesAFactorAboveItsMemoryBoundBeforeAnyNumericalWork) {
   const auto& A = seed().stiffness_free;
   const double bytes = stc::CholmodFactor::bytesOf(stc::CholmodFactor(A, "K_ff").factorNonZeros());
-  EXPECT_THROW(stc::CholmodFactor(A, "K_ff", {}, 1e8, 0.5 * bytes), stc::CholmodFactor::TooLarge);
+  EXPECT_THROW(stc::CholmodFactor(A, "K_ff", {}, 1e8, 0.5 * bytes), stc::FactorTooLarge);
   EXPECT_NO_THROW(stc::CholmodFactor(A, "K_ff", {}, 1e8, 2.0 * bytes));
+}
+
+// MUMPS's analysis estimates its factorisation's memory (INFOG(16)): beyond the bound, the factor is
+// refused before the numerical work, and `auto`'s preparation on ranks gives way to CG + GAMG.
+TEST(MumpsFactorBound, RefusesAFactorAboveItsMemoryBoundBeforeAnyNumericalWork) {
+#if !STC_HAVE_PETSC
+  GTEST_SKIP() << "a build without PETSc has no MUMPS";
+#else
+  const auto& A = seed().stiffness_free;
+  stc::LinearSolverOptions o;
+  o.backend = stc::LinearBackend::Mumps;
+  EXPECT_THROW(stc::preparePetscSolver(A, "K_ff", o, {}, 1e3), stc::FactorTooLarge);  // 1 kB: no factor fits
+  const auto fits = stc::preparePetscSolver(A, "K_ff", o, {}, 1e12);
+  EXPECT_EQ(fits->backend(), "mumps");
+  EXPECT_GT(fits->factorNonZeros(), 0.0);
+#endif
 }

@@ -13,6 +13,8 @@
 //     Delassus operator) and agrees with itself on CHOLMOD to 1e-8 (mumps) or τ (cg-gamg).
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <iostream>
 #include <map>
 #include <memory>
@@ -21,6 +23,7 @@
 
 #include "fixtures/hemisphere_scene.hpp"
 #include "fixtures/seed_scene.hpp"
+#include "stcontact/io/run_writer.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
 #include "strategies/strategy_fixture.hpp"
 
@@ -130,5 +133,44 @@ TEST(LinearBackendFailure, EndsTheRunAsANumericalIssueNamingTheBackend) {
     EXPECT_NE(r.summary.message.find("cg-gamg"), std::string::npos) << r.summary.message;
     EXPECT_NE(r.summary.message.find("DIVERGED_ITS"), std::string::npos) << r.summary.message;
     EXPECT_EQ(r.interface.lambda.norm(), 0.0) << strategy;
+  }
+}
+
+// What an iterative backend spent reaches summary.json: each cg-gamg operator's Krylov solves and
+// iterations, and the solve's total (zero where every operator is direct); and so does the
+// process's peak resident memory, one entry per rank. A solve given no operators prepares its own
+// on the scene's backend.
+TEST(LinearBackendCounts, KrylovIterationsAndPeakMemoryReachTheSummary) {
+  for (stc::LinearBackend backend : {stc::LinearBackend::Cholmod, stc::LinearBackend::CgGamg}) {
+    if (backend != stc::LinearBackend::Cholmod && !stc::petscBackendsBuilt()) continue;
+    stc::Scene scene = stc::test::seedScene(21, 11);
+    scene.solver.linear.backend = backend;
+    const stc::Problem problem = stc::buildProblem(scene);
+    stc::PreparedOperators operators(scene.solver.linearAtTolerance());
+    const stc::SolveResult r =
+        stc::solve(stc::strategyNamed("fas-apriori"), problem, scene.solver, {.operators = &operators});
+    ASSERT_TRUE(r.summary.converged()) << r.summary.message;
+    const stc::SolveResult alone = stc::solve(stc::strategyNamed("fas-apriori"), problem, scene.solver);
+    EXPECT_EQ(alone.summary.krylov_iterations, r.summary.krylov_iterations);  // the same solves, its own operators
+    long long solves = 0, iterations = 0;
+    for (const stc::Preparation& p : operators.preparations()) {
+      EXPECT_EQ(p.iterative, backend == stc::LinearBackend::CgGamg) << p.name;
+      solves += p.krylov.solves;
+      iterations += p.krylov.iterations;
+      if (p.krylov.solves > 0) EXPECT_LE(p.krylov.max_iterations, scene.solver.linear.max_iterations);
+    }
+    if (backend == stc::LinearBackend::CgGamg) {
+      EXPECT_GE(solves, r.summary.sparseSolves());  // every column the stage solved was a Krylov solve
+      EXPECT_GT(iterations, solves);                // a relative residual of 1e-10 takes more than one
+    } else {
+      EXPECT_EQ(solves + iterations, 0);
+    }
+    const nlohmann::json json =
+        nlohmann::json::parse(stc::summaryJson(problem, r.summary, {"{}", "test", {}}, operators.preparations()));
+    EXPECT_EQ(r.summary.krylov_iterations, iterations);  // the solve's: no other user of the operators
+    EXPECT_EQ(json.at("krylov_iterations").get<long long>(), iterations);
+    ASSERT_EQ(json.at("peak_memory_bytes_per_rank").size(), 1u);
+    EXPECT_GT(json.at("peak_memory_bytes").get<double>(), 1e6);  // the libraries alone hold more
+    EXPECT_EQ(json.at("peak_memory_bytes").get<double>(), json.at("peak_memory_bytes_per_rank")[0].get<double>());
   }
 }

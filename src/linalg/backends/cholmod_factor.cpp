@@ -134,7 +134,7 @@ void CholmodFactor::factorise(const Eigen::SparseMatrix<double>& A, const std::s
   cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
   f.L = cholmod_analyze(&view, &f.common);
   if (f.L && bytesOf(f.common.lnz) > max_bytes)
-    throw TooLarge("the CHOLMOD factor of " + what + " would take about " + std::to_string(bytesOf(f.common.lnz) / 1e9) +
+    throw FactorTooLarge("the CHOLMOD factor of " + what + " would take about " + std::to_string(bytesOf(f.common.lnz) / 1e9) +
                    " GB");
   const double count = static_cast<double>(trailing.size());
   const bool ordered_last = f.L && count > 0 && count * f.common.lnz >= min_work &&

@@ -30,7 +30,7 @@ class CholmodFactor final : public SpdSolver {
   /// holds at most kTrailingBytes; else the plain factor. The trailing block of L is the Cholesky
   /// factor of the Schur complement of A on J (linalg/detail/cholmod_trailing.hpp), kept dense, and
   /// condensed() uses it.
-  /// `max_bytes`: TooLarge when bytesOf(the plain factor's entries) exceeds it.
+  /// `max_bytes`: FactorTooLarge when bytesOf(the plain factor's entries) exceeds it.
   CholmodFactor(const Eigen::SparseMatrix<double>& A, const std::string& what, const std::vector<int>& trailing,
                 double min_work = kTrailingWork, double max_bytes = kNoMemoryBound);
   static constexpr double kNoMemoryBound = 1e300;
@@ -68,9 +68,6 @@ class CholmodFactor final : public SpdSolver {
   Eigen::MatrixXd solveFromTrailing(const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& U) const override;
   /// A factor that would exceed the memory a caller allows (the last constructor argument): thrown
   /// after the symbolic analysis, before any numerical work.
-  struct TooLarge : std::runtime_error {
-    using std::runtime_error::runtime_error;
-  };
   /// The memory of a factor with `entries` entries of L: 8 bytes each, times kBytesPerEntry for the
   /// explicit zeros of supernodal amalgamation and the workspace (measured: 4.14 GB of resident
   /// growth for 4.04e8 entries on the half-ball at 335k dofs, docs/linear_solvers.md).

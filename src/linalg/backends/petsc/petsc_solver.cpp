@@ -105,14 +105,16 @@ void setNearNullSpace(Mat M, const Eigen::MatrixXd& R, MPI_Comm comm, const RowB
 class PetscSolver final : public SpdSolver {
  public:
   PetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what, const LinearSolverOptions& options,
-              const std::function<Eigen::MatrixXd()>& near_null_space)
+              const std::function<Eigen::MatrixXd()>& near_null_space, double max_factor_bytes)
       : n_(static_cast<int>(A.rows())), backend_(options.backend), ranks_(currentRanks()),
         comm_(ranks_.size > 1 ? PETSC_COMM_WORLD : PETSC_COMM_SELF),
         rows_(rowBlockOf(static_cast<PetscInt>(A.rows()), ranks_)) {
     ensurePetsc();
     try {
-      prepare(A, what, options, near_null_space);
-    } catch (...) {  // a refused operator (not positive definite) leaves no PETSc object behind
+      matrix_ = toPetsc(A, comm_, rows_);
+      if (backend_ == LinearBackend::Mumps) factorise(what, max_factor_bytes);
+      else prepareKrylov(options, near_null_space);
+    } catch (...) {  // a refused operator (not positive definite, too large) leaves no PETSc object behind
       destroy();
       throw;
     }
@@ -146,66 +148,81 @@ class PetscSolver final : public SpdSolver {
   MPI_Comm comm_;
   RowBlock rows_;  ///< this rank's rows
   Mat matrix_ = nullptr;
-  KSP ksp_ = nullptr;
+  Mat factor_ = nullptr;  ///< mumps: MUMPS's factor of matrix_
+  KSP ksp_ = nullptr;     ///< cg-gamg
   double factor_entries_ = 0.0;
   mutable std::mutex mutex_;
   mutable KrylovCounts counts_;
 
-  // The factorisation (mumps) or the AMG hierarchy (cg-gamg) of A, PETSc's options applied last.
-  void prepare(const Eigen::SparseMatrix<double>& A, const std::string& what, const LinearSolverOptions& options,
-               const std::function<Eigen::MatrixXd()>& near_null_space) {
-    matrix_ = toPetsc(A, comm_, rows_);
+  // MUMPS's Cholesky factor of A (SYM = 2: LDLᵀ, its negative pivots counted), PETSc's options
+  // (prefix "stc_": -stc_mat_mumps_icntl_14 …) read at the analysis. Refused after the analysis
+  // when its estimate of the factorisation's memory on the largest rank exceeds `max_bytes`;
+  // refused after the factorisation when A is not positive definite.
+  void factorise(const std::string& what, double max_bytes) {
+    check(MatGetFactor(matrix_, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &factor_), "MatGetFactor (MUMPS)");
+    check(MatSetOptionsPrefix(factor_, "stc_"), "MatSetOptionsPrefix");
+    MatFactorInfo info;
+    check(MatFactorInfoInitialize(&info), "MatFactorInfoInitialize");
+    IS rows = nullptr, cols = nullptr;  // MUMPS orders A itself
+    check(MatGetOrdering(matrix_, MATORDERINGNATURAL, &rows, &cols), "MatGetOrdering");
+    const PetscErrorCode analysed = MatCholeskyFactorSymbolic(factor_, matrix_, rows, &info);
+    ISDestroy(&rows);
+    ISDestroy(&cols);
+    check(analysed, "MatCholeskyFactorSymbolic (MUMPS)");
+    // INFOG(16) in whole MB, so for a small factor its entries (INFOG(20), −millions when large)
+    // shared by the ranks.
+    const double entries = infog(20) >= 0 ? static_cast<double>(infog(20)) : -1e6 * static_cast<double>(infog(20));
+    const double estimate = std::max(1e6 * static_cast<double>(infog(16)), 8.0 * entries / ranks_.size);
+    if (estimate > max_bytes)
+      throw FactorTooLarge("the MUMPS factor of " + what + " would take about " + std::to_string(estimate / 1e9) +
+                           " GB on a rank, more than the " + std::to_string(max_bytes / 1e9) + " GB allowed");
+    check(MatCholeskyFactorNumeric(factor_, matrix_, &info), "MatCholeskyFactorNumeric (MUMPS)");
+    checkFactor(what);
+  }
+
+  // CG on the unpreconditioned residual with GAMG, the near-null space given; the AMG hierarchy set
+  // up now, PETSc's options (prefix "stc_") applied last.
+  void prepareKrylov(const LinearSolverOptions& options, const std::function<Eigen::MatrixXd()>& near_null_space) {
+    if (near_null_space) setNearNullSpace(matrix_, near_null_space(), comm_, rows_);
     check(KSPCreate(comm_, &ksp_), "KSPCreate");
     check(KSPSetOptionsPrefix(ksp_, "stc_"), "KSPSetOptionsPrefix");
     check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
+    check(KSPSetType(ksp_, KSPCG), "KSPSetType");
+    check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+    check(KSPSetTolerances(ksp_, options.rtol > 0.0 ? options.rtol : LinearSolverOptions::kRtolFloor, 0.0,
+                           PETSC_DEFAULT, options.max_iterations),
+          "KSPSetTolerances");
     PC pc = nullptr;
     check(KSPGetPC(ksp_, &pc), "KSPGetPC");
-    if (backend_ == LinearBackend::Mumps) {
-      check(KSPSetType(ksp_, KSPPREONLY), "KSPSetType");
-      check(PCSetType(pc, PCCHOLESKY), "PCSetType");
-      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
-    } else {
-      if (near_null_space) setNearNullSpace(matrix_, near_null_space(), comm_, rows_);
-      check(KSPSetType(ksp_, KSPCG), "KSPSetType");
-      check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
-      check(KSPSetTolerances(ksp_, options.rtol > 0.0 ? options.rtol : LinearSolverOptions::kRtolFloor, 0.0,
-                             PETSC_DEFAULT, options.max_iterations),
-            "KSPSetTolerances");
-      check(PCSetType(pc, PCGAMG), "PCSetType");
-    }
+    check(PCSetType(pc, PCGAMG), "PCSetType");
     check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
-    check(KSPSetUp(ksp_), "KSPSetUp");  // the factorisation, or the AMG hierarchy
-    if (backend_ == LinearBackend::Mumps) checkFactor(what);
+    check(KSPSetUp(ksp_), "KSPSetUp");  // the AMG hierarchy
   }
 
   void destroy() {
     KSPDestroy(&ksp_);
+    MatDestroy(&factor_);
     MatDestroy(&matrix_);
+  }
+
+  PetscInt infog(PetscInt i) const {
+    PetscInt value = 0;
+    check(MatMumpsGetInfog(factor_, i, &value), "MatMumpsGetInfog");
+    return value;
   }
 
   // MUMPS's verdict on A: singular (INFOG(1) < 0) or with negative pivots (INFOG(12) > 0) is not
   // positive definite; INFOG(29) is the number of entries in the factors.
   void checkFactor(const std::string& what) {
-    PC pc = nullptr;
-    Mat F = nullptr;
-    check(KSPGetPC(ksp_, &pc), "KSPGetPC");
-    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
-    PetscInt status = 0, negative = 0, entries = 0;
-    check(MatMumpsGetInfog(F, 1, &status), "MatMumpsGetInfog");
-    check(MatMumpsGetInfog(F, 12, &negative), "MatMumpsGetInfog");
-    check(MatMumpsGetInfog(F, 29, &entries), "MatMumpsGetInfog");
-    if (status < 0 || negative > 0)
+    if (infog(1) < 0 || infog(12) > 0)
       throw InputError(what + " is not positive definite (do the Dirichlet conditions fix every rigid-body motion?)");
-    factor_entries_ = static_cast<double>(entries);
+    factor_entries_ = static_cast<double>(infog(29));
   }
 
   // X = A⁻¹ B by MUMPS's multiple right-hand-side solve: this rank's rows of B in, every rank's rows
   // of X gathered.
   void solveDirect(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
-    PC pc = nullptr;
-    Mat F = nullptr, b = nullptr, x = nullptr;
-    check(KSPGetPC(ksp_, &pc), "KSPGetPC");
-    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    Mat b = nullptr, x = nullptr;
     const auto cols = static_cast<PetscInt>(B.cols());
     Eigen::MatrixXd local_b = B.middleRows(rows_.begin, rows_.count), local_x(rows_.count, B.cols());
     if (ranks_.size == 1) {
@@ -215,7 +232,7 @@ class PetscSolver final : public SpdSolver {
       check(MatCreateDense(comm_, rows_.count, PETSC_DECIDE, n_, cols, local_b.data(), &b), "MatCreateDense");
       check(MatCreateDense(comm_, rows_.count, PETSC_DECIDE, n_, cols, local_x.data(), &x), "MatCreateDense");
     }
-    const PetscErrorCode code = MatMatSolve(F, b, x);
+    const PetscErrorCode code = MatMatSolve(factor_, b, x);
     MatDestroy(&b);
     MatDestroy(&x);
     check(code, "MatMatSolve (MUMPS)");
@@ -282,12 +299,22 @@ Ranks petscRanks() {
   return {rank, size};
 }
 
+std::vector<double> petscAllGather(double value) {
+  ensurePetsc();
+  PetscMPIInt size = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  std::vector<double> values(static_cast<std::size_t>(size));
+  MPI_Allgather(&value, 1, MPI_DOUBLE, values.data(), 1, MPI_DOUBLE, PETSC_COMM_WORLD);
+  return values;
+}
+
 std::unique_ptr<SpdSolver> preparePetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,
                                               const LinearSolverOptions& options,
-                                              const std::function<Eigen::MatrixXd()>& near_null_space) {
+                                              const std::function<Eigen::MatrixXd()>& near_null_space,
+                                              double max_factor_bytes) {
   if (options.backend == LinearBackend::Cholmod)
     throw std::logic_error("preparePetscSolver: cholmod is not a PETSc backend");
-  return std::make_unique<PetscSolver>(A, what, options, near_null_space);
+  return std::make_unique<PetscSolver>(A, what, options, near_null_space, max_factor_bytes);
 }
 
 }  // namespace stc
