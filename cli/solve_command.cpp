@@ -1,8 +1,11 @@
 // stcontact solve SCENE: choose the solver, compute the incremental reference for the true error
 // (scenes small enough, unless --no-reference), solve, write every output file.
+#include <chrono>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +16,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/memory.hpp"
 #include "stcontact/core/interruption.hpp"
+#include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/run_folder.hpp"
 #include "stcontact/io/run_writer.hpp"
 #include "stcontact/linalg/ranks.hpp"
@@ -33,7 +37,10 @@ std::unique_ptr<ErrorReference> referenceOrWarning(const Problem& problem, Termi
     const RunProgress run(&progress, "reference (incremental)");
     reference = solveReference(problem, run.callback(), warning, operators);
   }
-  if (!warning.empty()) std::cerr << "warning: " << warning << std::endl;
+  if (!warning.empty()) {
+    std::cerr << "warning: " << warning << std::endl;
+    progress.record("warning: " + warning);
+  }
   return reference;
 }
 
@@ -50,20 +57,23 @@ void requireBackendForRanks(const Scene& scene, const Ranks& ranks) {
 OutputSpec outputsOn(const Scene& scene, const Ranks& ranks) {
   OutputSpec output = scene.output;
   if (ranks.size > 1 && output.vtu) {
-    std::cerr << "note: no VTU frames on " << ranks.size << " ranks (output.vtu is for one process)" << std::endl;
+    if (ranks.writes()) std::cerr << "note: no VTU frames on " << ranks.size << " ranks (output.vtu is for one process)" << std::endl;
     output.vtu = false;
   }
   return output;
 }
 
+// The solve; a space-time strategy hands its displacement history in separated form when frames
+// are written (they come from it, no solve in the writer).
 SolveResult runSolver(const Problem& problem, const Scene& scene, const ErrorReference* reference,
-                      TerminalProgress& progress, PreparedOperators& operators) {
+                      TerminalProgress& progress, PreparedOperators& operators, const OutputSpec& output) {
   const RunProgress run(&progress, std::string(scene.solver.name()));
   SolveInputs inputs;
   inputs.reference = reference;
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
   inputs.callback = run.callback();
   inputs.spatial_modes = false;  // not written
+  inputs.separated_displacement = output.vtu;
   inputs.operators = &operators;
   return solve(problem, scene.solver, inputs);
 }
@@ -88,7 +98,37 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
   return cmd;
 }
 
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The lines, each ended by a newline (a line that has its own keeps it).
+std::string joinedLines(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) text += line.empty() || line.back() != '\n' ? line + "\n" : line;
+  return text;
+}
+
+// The final report: how the solve ended, its figures, and the whole run's time beside the solver's
+// (what a user waited: the set-up, the reference and the writing too).
+std::string finalReport(const std::string& solver, const SolveSummary& s, const std::filesystem::path& out,
+                        double run_s, std::optional<double> reference_s, double write_s) {
+  std::ostringstream text;
+  text << solver << ": " << toString(s.termination) << " — " << s.message << "\n"
+       << "  iterations " << s.iterations << ", indicator " << s.indicator;
+  if (s.error) text << ", true error " << *s.error;
+  text << ", " << s.wall_s << " s solving\n  the whole run " << std::setprecision(3) << run_s << " s (";
+  if (reference_s) text << "reference " << *reference_s << " s, ";
+  text << "writing " << write_s << " s)\n  results in " << out.string() << "/\n";
+  return text.str();
+}
+
+}  // namespace
+
 int runSolve(const SolveArgs& args) {
+  const auto started = std::chrono::steady_clock::now();
   const Scene scene = readScene(args.scene, withSolverOptions(args.overrides, args.solver, args.tolerance, args.max_iterations));
   const std::string solver(scene.solver.name());
   const std::filesystem::path out = args.out ? std::filesystem::path(*args.out)
@@ -104,23 +144,27 @@ int runSolve(const SolveArgs& args) {
   // each operator prepared once, by the scene's backend: the reference, the solve, the frames
   PreparedOperators operators(linear);
   std::unique_ptr<ErrorReference> reference;
-  if (scene.solver.strategy != Strategy::Incremental && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes)
+  std::optional<double> reference_s;
+  if (scene.solver.strategy != Strategy::Incremental && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes) {
+    const auto begun = std::chrono::steady_clock::now();
     reference = referenceOrWarning(problem, progress, operators);
-  const SolveResult result = runSolver(problem, scene, reference.get(), progress, operators);
+    reference_s = secondsSince(begun);
+  }
+  const OutputSpec output = outputsOn(scene, ranks);
+  const SolveResult result = runSolver(problem, scene, reference.get(), progress, operators, output);
   throwIfInterrupted();  // a solve stopped by a signal writes nothing
   std::vector<double> peaks = valuesOfEveryRank(peakResidentBytes());  // every rank takes part
   if (!ranks.writes()) return result.summary.converged() ? 0 : 2;
-  writeRunOutputs(folder->path(), problem, result, {scene.parameters_json, STC_VERSION, std::move(peaks)},
-                  outputsOn(scene, ranks), operators);
+  if (output.vtu) progress.note("writing " + out.string() + "/ with its VTU frames");
+  const auto writing = std::chrono::steady_clock::now();
+  writeRunOutputs(folder->path(), problem, result,
+                  {scene.parameters_json, STC_VERSION, std::move(peaks), started, reference_s}, output, operators);
+  const std::string report =
+      finalReport(solver, result.summary, out, secondsSince(started), reference_s, secondsSince(writing));
+  progress.record(report);
+  writeFileAtomically(folder->path() / "run.log", joinedLines(progress.lines()));  // what the terminal showed
   folder->commit();
-
-  if (!args.quiet) {
-    const auto& s = result.summary;
-    std::cout << solver << ": " << toString(s.termination) << " — " << s.message << "\n"
-              << "  iterations " << s.iterations << ", indicator " << s.indicator;
-    if (s.error) std::cout << ", true error " << *s.error;
-    std::cout << ", " << s.wall_s << " s\n  results in " << out.string() << "/\n";
-  }
+  if (!args.quiet) std::cout << report;
   return result.summary.converged() ? 0 : 2;
 }
 

@@ -51,6 +51,7 @@ IterationCallback TerminalProgress::begin(const std::string& label) {
   last_ = std::chrono::steady_clock::now();  // a log's first line comes one interval after the start
   return [this](const IterationRecord& r) {
     if (interruptionRequested()) return false;  // SIGINT, SIGTERM: the solve stops at this iteration
+    lines_.push_back("progress: " + describe(r));
     if (quiet_ || (!tty_ && log_interval <= 0.0)) return true;
     const auto now = std::chrono::steady_clock::now();
     const std::chrono::duration<double> wait(tty_ ? 0.2 : log_interval);
@@ -70,6 +71,7 @@ void TerminalProgress::end() {
 }
 
 void TerminalProgress::note(const std::string& line) {
+  lines_.push_back(line);
   if (!quiet_) std::cout << line << std::endl;
 }
 

@@ -17,10 +17,13 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
   counted.origin.sparse_solves += stage.sparseSolves();
   SolveResult result = latin::solveLatinWith(problem, stage, options.latin, counted, "latin-pgd");
   result.interface_directions = stage.basis().directions();
-  // The spatial modes need the responses, which a condensed interface has not solved yet
-  // (response_basis.hpp): the last record counts those solves.
+  // The spatial modes and the separated displacement need responses, which a condensed interface
+  // has not solved yet (response_basis.hpp): the last record counts those solves.
   const long before = stage.sparseSolves();
   if (inputs.spatial_modes) result.spatial_modes = energyModes(stage.basis(), stage.coordinates());
+  if (inputs.separated_displacement)
+    result.displacement = separatedDisplacement(stage.basis(), stage.coordinates(),
+                                                truncationBudget(result.summary, options.latin.stop.tolerance));
   result.summary.addSolvesAfterIteration(stage.sparseSolves() - before);
   return result;
 }

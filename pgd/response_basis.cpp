@@ -142,6 +142,13 @@ ResponseBasis::View ResponseBasis::responses() const {
   return X_.view();
 }
 
+Eigen::MatrixXd ResponseBasis::responsesOf(const Eigen::MatrixXd& M) const {
+  const Eigen::Index p = M.rows();
+  if (X_.cols() >= p) return X_.view().leftCols(p) * M;
+  sparse_solves_ += M.cols();
+  return solveColumns(problem_.contact.B.transpose() * (Z_.view().leftCols(p) * M));
+}
+
 Eigen::MatrixXd ResponseBasis::liftedInterface(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& M) const {
   const Eigen::Index p = M.rows();
   if (B_rows.rows() == 0) return Eigen::MatrixXd(0, M.cols());  // no row to lift to: no solve

@@ -72,6 +72,9 @@ class ResponseBasis {
   /// instants, everything else (directions, responses, energy factor) is spatial and kept. Throws
   /// std::invalid_argument when `grid` has other load vectors, free dofs or interface rows.
   void retime(const Problem& grid);
+  /// X_p M (n_free × k) for the first p = M.rows() directions: with X when their responses are
+  /// known, else A⁻¹ Bᵀ (Z_p M), k solves.
+  Eigen::MatrixXd responsesOf(const Eigen::MatrixXd& M) const;
   /// Right-hand sides solved so far (loads included).
   long sparseSolves() const { return sparse_solves_; }
   /// Whether the traces come from D = B A⁻¹ Bᵀ of the factor's trailing block (no solve per direction).

@@ -89,6 +89,30 @@ Eigen::MatrixXd modeTraces(const ResponseBasis& basis, const Eigen::MatrixXd& co
   return BY;
 }
 
+double truncationBudget(const SolveSummary& summary, double tolerance) {
+  if (!summary.converged() || summary.history.empty()) return 0.0;
+  const IterationRecord& last = summary.history.back();
+  if (!last.energy || !(last.error_estimate < tolerance)) return 0.0;
+  const double slack = tolerance - last.error_estimate;
+  return slack * slack * *last.energy;
+}
+
+SeparatedDisplacement separatedDisplacement(const ResponseBasis& basis, const Eigen::MatrixXd& c, double energy_budget) {
+  const Eigen::Index q = basis.loadResponses().cols();
+  const EnergySvd svd = energySvd(basis, c, static_cast<int>(q) + basis.size());
+  Eigen::Index rho = svd.singular_values.size();
+  for (double tail = 0.0; rho > 0 && tail + svd.singular_values[rho - 1] * svd.singular_values[rho - 1] <= energy_budget;
+       --rho)
+    tail += svd.singular_values[rho - 1] * svd.singular_values[rho - 1];
+  const Eigen::MatrixXd C = svd.combination.leftCols(rho);
+  SeparatedDisplacement out;
+  out.held = true;
+  out.modes = basis.loadResponses() * C.topRows(q);
+  if (C.rows() > q) out.modes += basis.responsesOf(C.bottomRows(C.rows() - q));
+  out.time = svd.time_functions.topRows(rho);
+  return out;
+}
+
 Eigen::MatrixXd energyModes(const ResponseBasis& basis, const Eigen::MatrixXd& c) {
   const int all = static_cast<int>(basis.loadResponses().cols()) + basis.size();
   return spatialModes(basis, energySvd(basis, c, all).combination);

@@ -13,6 +13,7 @@
 #include <Eigen/SparseCore>
 
 #include "stcontact/pgd/response_basis.hpp"
+#include "stcontact/solver/solve_result.hpp"
 
 namespace stc::pgd {
 
@@ -45,6 +46,18 @@ EnergySvd energySvd(const ResponseBasis& basis, const Eigen::MatrixXd& c, int co
 Eigen::MatrixXd spatialModes(const ResponseBasis& basis, const Eigen::MatrixXd& combination);
 /// Their traces B Y = [V_F T] · combination (d n_C × r).
 Eigen::MatrixXd modeTraces(const ResponseBasis& basis, const Eigen::MatrixXd& combination);
+
+/// The energy a converged solve may still spend on truncations of its outputs (the far nodes' lift,
+/// the separated displacement): with the last record's estimate e ≤ τ and history energy E,
+/// (τ − e)² E, so that the truncated history's relative error stays within τ; 0 for a solve that did
+/// not converge or has no energy on record.
+double truncationBudget(const SolveSummary& summary, double tolerance);
+
+/// The history with interface coordinates `c` in separated form (SolveResult::displacement): the
+/// fewest ρ leading modes of its energy SVD whose dropped energy Σ_{i>ρ} σ_i² = Σ_k ‖u_k − u_ρ,k‖²_A
+/// is at most `energy_budget` (every mode for a budget ≤ 0), the modes Y_ρ = [U_F X] C_ρ (at most ρ
+/// solves, none when the responses are known) and their time functions Σ_ρ W_ρᵀ.
+SeparatedDisplacement separatedDisplacement(const ResponseBasis& basis, const Eigen::MatrixXd& c, double energy_budget);
 
 /// Every mode of the energy SVD of the history (n_free × r): SolveResult::spatial_modes.
 Eigen::MatrixXd energyModes(const ResponseBasis& basis, const Eigen::MatrixXd& c);

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -143,7 +144,7 @@ py::dict resultDict(const SceneHandle& run, SolveResult&& result, const Prepared
   out["solver"] = std::string(scene.solver.name());
   out["dimension"] = problem->dimension;
   out["summary_json"] =
-      summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION, {}}, operators.preparations());
+      summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION, {}, {}, {}}, operators.preparations());
   out["history"] = historyArrays(result.summary);
   out["reactions"] = reactionArrays(*problem, result);
   out["times"] = movedToNumpy(std::vector<double>(problem->times));
@@ -159,12 +160,15 @@ py::dict resultDict(const SceneHandle& run, SolveResult&& result, const Prepared
 
 /// The reference (unless not wanted, see solve_command.cpp), then the strategy; the lock released.
 SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_reference, SolveInputs inputs,
-                     CallbackBridge& bridge, std::string& warning) {
+                     CallbackBridge& bridge, std::string& warning, std::optional<double>& reference_s) {
   py::gil_scoped_release unlocked;
   std::unique_ptr<ErrorReference> reference;
   if (scene.solver.strategy != Strategy::Incremental && with_reference &&
-      problem.contact.size() <= kMaxReferenceContactNodes)
+      problem.contact.size() <= kMaxReferenceContactNodes) {
+    const auto begun = std::chrono::steady_clock::now();
     reference = solveReference(problem, bridge.signalsOnly(), warning, *inputs.operators);
+    reference_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+  }
   if (bridge.interrupted()) return {};
   inputs.reference = reference.get();
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
@@ -173,6 +177,7 @@ SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_refer
 }
 
 py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart warm, py::object callback) {
+  const auto started = std::chrono::steady_clock::now();
   const ThreadsForCall threads(options.threads);
   const SceneHandle run = handle.withOverrides(
       withSolverOptions(options.sets, options.solver, options.tolerance, options.max_iterations));
@@ -186,16 +191,19 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   PreparedOperators operators(linear);
   SolveInputs inputs;
   inputs.spatial_modes = options.spatial_modes;
+  inputs.separated_displacement = options.out && scene.output.vtu;  // the frames come from it
   inputs.operators = &operators;
   applyWarmStart(warm, *problem, start, inputs);
 
   CallbackBridge bridge(std::move(callback));
   std::string warning;
-  SolveResult result = runSolve(*problem, scene, options.reference, inputs, bridge, warning);
+  std::optional<double> reference_s;
+  SolveResult result = runSolve(*problem, scene, options.reference, inputs, bridge, warning, reference_s);
   bridge.rethrowPending();
   if (!warning.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
   if (folder) {
-    writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION, {}}, scene.output, operators);
+    writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION, {}, started, reference_s},
+                    scene.output, operators);
     folder->commit();
   }
   return resultDict(run, std::move(result), operators);

@@ -2,7 +2,7 @@
 # Description: checks that two builds of the program give the same numbers (a refactoring's
 # promise: "behaviour, output files and numbers unchanged"). Runs the same solves with both
 # programs and compares every output file, leaving out what legitimately differs from run to run:
-# wall times (history.csv's wall_s, summary.json's wall_s, its sub_grid's, its peak memory and version, the timing
+# wall times (history.csv's wall_s, summary.json's times, its sub_grid's, its peak memory and version, run.log, the timing
 # columns of the reports) and the messages' seconds. Everything else must be byte-identical: iterations,
 # relaxations, indicators, true errors, estimates, ranks, reactions, contact tables, VTU series.
 # Sample run:
@@ -33,11 +33,11 @@ timed_columns() {
 normalise() {
   case $1 in
     */summary.json)
-      sed -E '/^ +"peak_memory_bytes_per_rank": \[/,/^ +\],?$/d; /^ +"(wall_s|version|seconds|peak_memory_bytes)":/d
+      sed -E '/^ +"peak_memory_bytes_per_rank": \[/,/^ +\],?$/d; /^ +"(wall_s|reference_s|write_s|run_s|version|seconds|peak_memory_bytes)":/d
               s/[0-9.e+-]+ s\)/# s)/g' "$1" |
         if [ "${2:-1}" = 1 ]; then cat; else sed '/^  "preparations": \[/,/^  \],$/d'; fi ;;
     *.csv) timed_columns , < "$1" ;;
-    *.md|*.png|*.gp) echo "(not compared: times and figures)" ;;
+    *.md|*.png|*.gp|*/run.log) echo "(not compared: times and figures)" ;;
     *.vtu) cat "$1" ;;  # binary frames: compared byte for byte
     *) sed -E 's/[0-9.]+ s\)/# s)/g' "$1" ;;
   esac

@@ -7,22 +7,6 @@
 #include "stcontact/pgd/separated_history.hpp"
 
 namespace stc::fas {
-namespace {
-
-// The energy the far nodes' lift may drop (ResponseBasis::displacementOn): what the converged
-// estimate leaves of the tolerance, (τ − ε_est)² E, E the last iterate's energy. With ε_est bounding
-// the true error e, the lifted field is within e + (τ − ε_est) ≤ τ of the reference in the true
-// error's measure (triangle inequality). Nothing (the exact lift) when the solve did not converge.
-double liftBudget(const SolveSummary& summary, double tolerance) {
-  if (!summary.converged() || summary.history.empty()) return 0.0;
-  const IterationRecord& last = summary.history.back();
-  if (!last.energy || !(last.error_estimate < tolerance)) return 0.0;
-  const double slack = tolerance - last.error_estimate;
-  return slack * slack * *last.energy;
-}
-
-}  // namespace
-
 SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
                            const Eigen::SparseMatrix<double>& B_far, Eigen::MatrixXd& far_v,
                            const SeparatedCoarseBasis& coarse_basis) {
@@ -37,9 +21,15 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   result.interface_directions = stage.basis().directions();
   // What follows the iteration may solve: the responses of the spatial modes, the far nodes' lift
   // (response_basis.hpp); the last record counts those solves.
+  // The far nodes' lift and the separated displacement may each drop what the converged estimate
+  // leaves of the tolerance (pgd::truncationBudget): with ε_est bounding the true error e, each is
+  // within e + (τ − ε_est) ≤ τ of the reference in the true error's measure (triangle inequality).
   const long before = stage.sparseSolves();
+  const double budget = pgd::truncationBudget(result.summary, options.fas.stop.tolerance);
   if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
-  far_v = stage.basis().displacementOn(B_far, stage.coordinates(), liftBudget(result.summary, options.fas.stop.tolerance));
+  if (inputs.separated_displacement)
+    result.displacement = pgd::separatedDisplacement(stage.basis(), stage.coordinates(), budget);
+  far_v = stage.basis().displacementOn(B_far, stage.coordinates(), budget);
   result.summary.addSolvesAfterIteration(stage.sparseSolves() - before);
   return result;
 }

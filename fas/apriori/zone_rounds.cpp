@@ -52,6 +52,7 @@ SolveResult liftedResult(SolveResult r, const std::vector<int>& rows, const std:
   out.interface_directions = Eigen::MatrixXd::Zero(all_rows, r.interface_directions.cols());
   out.interface_directions(rows, Eigen::all) = r.interface_directions;
   out.spatial_modes = std::move(r.spatial_modes);
+  out.displacement = std::move(r.displacement);  // the free dofs': the same body on every zone
   out.summary = std::move(r.summary);
   return out;
 }
@@ -104,6 +105,7 @@ class ZoneRounds {
     round.start = &start;
     round.basis_seed = seed_ ? &part_seed : nullptr;
     round.spatial_modes = inputs_.spatial_modes;
+    round.separated_displacement = inputs_.separated_displacement;
     round.operators = inputs_.operators;
     round.origin = originOfNextRound();
     Eigen::MatrixXd far_v;

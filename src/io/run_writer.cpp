@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "stcontact/core/memory.hpp"
 #include "stcontact/core/overloaded.hpp"
@@ -164,6 +165,10 @@ std::string historyCsv(const SolveSummary& summary) {
 
 namespace {
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 // The solve on a sub-grid of instants that nested iteration started from (docs/method.md §5), its
 // counts and time included in the solve's; null when there was none.
 std::optional<JsonObject> subGridJson(const SolveSummary& summary) {
@@ -200,7 +205,7 @@ std::vector<JsonObject> preparationsJson(const std::vector<Preparation>& prepara
 }  // namespace
 
 std::string summaryJson(const Problem& problem, const SolveSummary& summary, const RunInfo& info,
-                        const std::vector<Preparation>& preparations) {
+                        const std::vector<Preparation>& preparations, const WriterCounts& writer) {
   // The writing rank's peak includes the writing so far.
   std::vector<double> peaks = info.peak_memory_bytes.empty() ? std::vector<double>{0.0} : info.peak_memory_bytes;
   double& own = peaks[static_cast<std::size_t>(std::min<int>(currentRanks().rank, static_cast<int>(peaks.size()) - 1))];
@@ -213,11 +218,15 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
       .add("relaxations", summary.relaxations)
       .add("sparse_solves", summary.sparseSolves())
       .add("krylov_iterations", summary.krylov_iterations)
+      .add("writer_sparse_solves", writer.sparse_solves)
       .add("indicator", summary.indicator)
       .add("error", summary.error)
       .add("error_estimate", std::isfinite(summary.error_estimate) ? std::optional<double>(summary.error_estimate)
                                                                    : std::nullopt)
       .add("wall_s", summary.wall_s)
+      .add("reference_s", info.reference_s)
+      .add("write_s", writer.seconds)
+      .add("run_s", info.started ? std::optional<double>(secondsSince(*info.started)) : std::nullopt)
       .add("sub_grid", subGridJson(summary))
       .add("threads", threadCount())
       .add("ranks", currentRanks().size)
@@ -233,10 +242,13 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
   return json.str() + "\n";
 }
 
-void writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
+long writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
                          int stride, VtuPrecision precision, PreparedOperators& operators) {
   ensureWritableDirectory(dir / "vtu");
-  const std::shared_ptr<const SpdSolver> factor = operators.stiffnessFree(problem);
+  const SeparatedDisplacement& held = result.displacement;
+  if (held.held && (held.modes.rows() != problem.numFreeDofs() || held.time.cols() != problem.numSteps()))
+    throw std::logic_error("writeSolutionSeries: the held displacement is another problem's");
+  const std::shared_ptr<const SpdSolver> factor = held.held ? nullptr : operators.stiffnessFree(problem);
   const ContactStateTable states(problem.contact, result.admissible());
   const FrameLayout layout = frameLayout(problem, precision);
   const std::vector<int> steps = frameSteps(problem.numSteps(), stride);
@@ -246,7 +258,10 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
   parallelFor(static_cast<int>(steps.size()), threads, [&](int item, int thread) {
     const int k = steps[static_cast<std::size_t>(item)];
     const Eigen::VectorXd u = problem.absoluteDisplacement(
-        freeDisplacementAt(problem, *factor, result.interface.lambda.col(k), k, workspaces[static_cast<std::size_t>(thread)]), k);
+        held.held ? held.at(k)
+                  : freeDisplacementAt(problem, *factor, result.interface.lambda.col(k), k,
+                                       workspaces[static_cast<std::size_t>(thread)]),
+        k);
     Eigen::MatrixXd force, state;
     contactFields(problem, result, states, k, force, state);
     const FrameFields fields = frameFields(problem, u, force, state, layout.bodies);
@@ -261,10 +276,12 @@ void writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
   for (int k : steps)
     for (int b = 0; b < layout.parts(); ++b) frames.push_back(layout.dataSet(problem, k, b));
   writeFileAtomically(dir / "solution.pvd", pvdDocument(frames));
+  return held.held ? 0 : static_cast<long>(steps.size());
 }
 
 void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
                      const RunInfo& info, const OutputSpec& output, PreparedOperators& operators) {
+  const auto start = std::chrono::steady_clock::now();
   ensureWritableDirectory(dir);
   {
     AtomicFile file(dir / "reactions.csv");
@@ -278,9 +295,12 @@ void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, c
   }
   writeFileAtomically(dir / "history.csv", historyCsv(result.summary));
   // The VTU writer refuses non-finite values: a run that broke down numerically gets no VTU series.
+  WriterCounts writer;
   if (output.vtu && result.interface.lambda.allFinite() && result.interface.v.allFinite())
-    writeSolutionSeries(dir, problem, result, output.vtu_stride, output.vtu_precision, operators);
-  writeFileAtomically(dir / "summary.json", summaryJson(problem, result.summary, info, operators.preparations()));  // last: marks a complete run
+    writer.sparse_solves = writeSolutionSeries(dir, problem, result, output.vtu_stride, output.vtu_precision, operators);
+  writer.seconds = secondsSince(start);
+  writeFileAtomically(dir / "summary.json",  // last: marks a complete run
+                      summaryJson(problem, result.summary, info, operators.preparations(), writer));
 }
 
 }  // namespace stc

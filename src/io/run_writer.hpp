@@ -3,6 +3,8 @@
 // atomically (temporary file, then rename): reactions.csv, contact.csv, history.csv,
 // summary.json, and solution.pvd + vtu/ when asked.
 #include <filesystem>
+#include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,22 +22,37 @@ struct RunInfo {
   /// solve, made by every rank); the writing rank's is read again when summary.json is written
   /// (empty: one process, read then).
   std::vector<double> peak_memory_bytes;
+  /// When the run began (the front end's clock), for summary.json's run_s; none: not recorded.
+  std::optional<std::chrono::steady_clock::time_point> started;
+  /// The seconds the true error's reference took (summary.json's reference_s), none without one.
+  std::optional<double> reference_s;
 };
 
-/// The frames take K_ff from `operators` (the run's: prepared once, shared with its reference and
-/// its solve), and summary.json lists what the run prepared.
+/// The frames come from the displacement the strategy holds (SolveResult::displacement) or, for a
+/// strategy that holds none, from λ with K_ff taken from `operators` (the run's: prepared once,
+/// shared with its reference and its solve); summary.json lists what the run prepared and counts the
+/// writer's solves.
 void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
                      const RunInfo& info, const OutputSpec& output, PreparedOperators& operators);
 
 /// history.csv: iteration,relaxations,indicator,error,rank,wall_s (error empty when unknown).
 std::string historyCsv(const SolveSummary& summary);
-/// summary.json, with the operators the run prepared.
+/// What writing a run folder took: the writer's sparse solves (VTU frames solved from λ) and its
+/// seconds before summary.json.
+struct WriterCounts {
+  long sparse_solves = 0;
+  double seconds = 0.0;
+};
+
+/// summary.json, with the operators the run prepared and what its writer took.
 std::string summaryJson(const Problem& problem, const SolveSummary& summary, const RunInfo& info,
-                        const std::vector<Preparation>& preparations);
+                        const std::vector<Preparation>& preparations, const WriterCounts& writer = {});
 
 /// solution.pvd + vtu/step_XXXXX.vtu: displacement, contact force and state (nodes), stress tensor
-/// and von Mises stress (elements) at every `stride`-th instant and the last one.
-void writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
+/// and von Mises stress (elements) at every `stride`-th instant and the last one. The displacement
+/// is result.displacement's where held (no factor, no solve), else solved from λ. Returns the
+/// sparse solves made (one per frame, or none).
+long writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
                          int stride, VtuPrecision precision, PreparedOperators& operators);
 
 }  // namespace stc

@@ -37,6 +37,11 @@ struct SolveInputs {
   /// nodes, 0.15 s of a 1.07 s solve), and, where the traces came from the factor's trailing block,
   /// the p responses' solves (pgd/response_basis.hpp): programs that do not read them turn this off.
   bool spatial_modes = true;
+  /// Whether `fas-apriori` and `latin-pgd` return SolveResult::displacement, their displacement
+  /// history in separated form (the run's frames come from it, pgd/separated_history.hpp): after
+  /// the last iteration, at most its rank in solves where the factor condensed the interface (the
+  /// responses were not solved), none otherwise.
+  bool separated_displacement = false;
   /// The run's operators (src/operators/prepared_operators.hpp): a solve takes its factors from
   /// there, preparing each at most once, and leaves them for the run's other users (the reference,
   /// the writer). Null: the solve prepares its own, each once within it.

@@ -8,6 +8,15 @@
 
 namespace stc {
 
+/// A displacement history in separated form: u_free(t_k) = modes · time.col(k) (n_free × r modes,
+/// r × m time functions), what a space-time strategy holds of its solution.
+struct SeparatedDisplacement {
+  bool held = false;     ///< false: the strategy did not hand one (the writer then solves from λ)
+  Eigen::MatrixXd modes;  ///< n_free × r
+  Eigen::MatrixXd time;   ///< r × m
+  Eigen::VectorXd at(Eigen::Index k) const { return modes * time.col(k); }  ///< u_free(t_k)
+};
+
 struct SolveResult {
   InterfaceHistory interface;  ///< the solution: for LATIN the last global-stage (equilibrated) iterate
   SolveSummary summary;
@@ -22,6 +31,10 @@ struct SolveResult {
   /// pgd/response_basis.hpp); empty for the others. A solve of a neighbouring problem may start its
   /// directions from them (SolveInputs::basis_seed): a warm start.
   Eigen::MatrixXd interface_directions;
+  /// The free dofs' displacement history the strategy holds (fas-apriori, latin-pgd, when asked:
+  /// SolveInputs::separated_displacement), truncated in energy within the tolerance's slack; not
+  /// held by the others. The writer forms its frames from it without a solve.
+  SeparatedDisplacement displacement;
 
   const InterfaceHistory& admissible() const { return contact_admissible ? *contact_admissible : interface; }
 };

@@ -44,8 +44,10 @@ foreach(solver latin-pgd fas-aposteriori fas-apriori)
 endforeach()
 # The default solver (the scene's [solver] name, fas-apriori) converges without --solver.
 stc_cli_test(solve_default_is_fas_apriori 0 "fas-apriori: converged" solve ${seed} ${small} --out ${out}/default)
+# ... run.log keeps its progress and its final report, and summary.json its times: the run's reference,
+# solve and writing are parts of the whole run.
 add_test(NAME cli.solve_writes_every_output
-         COMMAND bash -c "for f in reactions.csv contact.csv history.csv summary.json solution.pvd vtu/step_00020.vtu; do test -s ${out}/latin3/$f || { echo missing $f; exit 1; }; done; grep -q '\"termination\": \"max_iterations\"' ${out}/latin3/summary.json")
+         COMMAND bash -c "for f in reactions.csv contact.csv history.csv summary.json solution.pvd vtu/step_00020.vtu run.log; do test -s ${out}/latin3/$f || { echo missing $f; exit 1; }; done; grep -q '\"termination\": \"max_iterations\"' ${out}/latin3/summary.json && grep -q '^progress: latin: iteration 3 ' ${out}/latin3/run.log && grep -q '^  the whole run .* s (reference .* s, writing .* s)$' ${out}/latin3/run.log && python3 -c \"import json, sys; s = json.load(open(sys.argv[1])); sys.exit(0 if s['run_s'] >= s['reference_s'] + s['wall_s'] + s['write_s'] > 0 else 1)\" ${out}/latin3/summary.json")
 set_tests_properties(cli.solve_writes_every_output PROPERTIES DEPENDS cli.solve_not_converged_exits_2 LABELS cli)
 
 # A moving obstacle: check says so.

@@ -106,7 +106,7 @@ TEST(RunWriter, HistoryAndSummaryCarryTheSparseSolvesSpent) {
     EXPECT_EQ(row.substr(row.rfind(',') + 1), std::to_string(spent)) << row;
   }
   EXPECT_EQ(rows, 11);
-  const std::string json = stc::summaryJson(problem, result.summary, {"{}", "test", {}}, {});
+  const std::string json = stc::summaryJson(problem, result.summary, {"{}", "test", {}, {}, {}}, {});
   EXPECT_NE(json.find("\"relaxations\": 0,\n  \"sparse_solves\": " + std::to_string(spent) + ","), std::string::npos)
       << json;
   EXPECT_NE(json.find("\"sub_grid\": null,"), std::string::npos) << json;
@@ -125,7 +125,7 @@ TEST(RunWriter, SummaryCarriesTheSubGridSolve) {
   sub_grid.sparse_solves = 185;
   sub_grid.wall_s = 0.25;
   summary.stages = {sub_grid, zone};
-  const std::string json = stc::summaryJson(problem, summary, {"{}", "test", {}}, {});
+  const std::string json = stc::summaryJson(problem, summary, {"{}", "test", {}, {}, {}}, {});
   EXPECT_NE(json.find("\"sub_grid\": {\n    \"relaxations\": 19,\n    \"sparse_solves\": 185,\n    \"wall_s\": 0.25\n  },"),
             std::string::npos)
       << json;
@@ -153,4 +153,6 @@ TEST(RunWriter, FramesUseTheRunsFactorAndTheSummaryListsIt) {
             std::string::npos)
       << json;
   EXPECT_NE(json.find("\"uses\": 2"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"writer_sparse_solves\": 3,"), std::string::npos) << json;  // frames 0, 5, 10
 }
+

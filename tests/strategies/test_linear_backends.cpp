@@ -166,7 +166,7 @@ TEST(LinearBackendCounts, KrylovIterationsAndPeakMemoryReachTheSummary) {
       EXPECT_EQ(solves + iterations, 0);
     }
     const nlohmann::json json =
-        nlohmann::json::parse(stc::summaryJson(problem, r.summary, {"{}", "test", {}}, operators.preparations()));
+        nlohmann::json::parse(stc::summaryJson(problem, r.summary, {"{}", "test", {}, {}, {}}, operators.preparations()));
     EXPECT_EQ(r.summary.krylov_iterations, iterations);  // the solve's: no other user of the operators
     EXPECT_EQ(json.at("krylov_iterations").get<long long>(), iterations);
     ASSERT_EQ(json.at("peak_memory_bytes_per_rank").size(), 1u);
