@@ -89,6 +89,7 @@ double estimateOrNan(double error_estimate) {
 /// the true error and the error estimate are NaN where the file's cell is empty.
 py::dict historyArrays(const SolveSummary& summary) {
   std::vector<int> iteration, relaxations, rank, sparse_solves;
+  std::vector<long long> krylov_iterations;
   std::vector<double> indicator, error, wall_s, error_estimate;
   for (const IterationRecord& r : summary.history) {
     iteration.push_back(r.iteration);
@@ -97,6 +98,7 @@ py::dict historyArrays(const SolveSummary& summary) {
     error.push_back(r.error.value_or(std::numeric_limits<double>::quiet_NaN()));
     rank.push_back(r.rank);
     sparse_solves.push_back(r.sparse_solves);
+    krylov_iterations.push_back(r.krylov_iterations);
     wall_s.push_back(r.wall_s);
     error_estimate.push_back(estimateOrNan(r.error_estimate));
   }
@@ -109,6 +111,7 @@ py::dict historyArrays(const SolveSummary& summary) {
   history["wall_s"] = movedToNumpy(std::move(wall_s));
   history["error_estimate"] = movedToNumpy(std::move(error_estimate));
   history["sparse_solves"] = movedToNumpy(std::move(sparse_solves));
+  history["krylov_iterations"] = movedToNumpy(std::move(krylov_iterations));
   return history;
 }
 

@@ -61,6 +61,7 @@ SolveResult solve(Strategy strategy, const Problem& problem, const SolverSpec& s
   std::unique_ptr<PreparedOperators> own;
   if (!with.operators) with.operators = (own = std::make_unique<PreparedOperators>(spec.linearAtTolerance())).get();
   const long long before = krylovIterationsOf(*with.operators);
+  with.origin.krylov = [operators = with.operators, before] { return krylovIterationsOf(*operators) - before; };
   for (const StrategyRegistration& r : strategyRegistry())
     if (r.strategy == strategy) {
       SolveResult result = solveWith(r, problem, spec, with);

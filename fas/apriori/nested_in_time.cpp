@@ -77,8 +77,8 @@ SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalSt
   stage.retime(subgrid);
   const InterfaceHistory subgrid_start = atInstants(start, kept);
   // Its own counts (no callback, no true error), on the whole solve's clock.
-  const SolveResult coarse = solveOnGrid(subgrid, stage, subgrid_options,
-                                         {.start = &subgrid_start, .origin = {.clock = origin.clock}}, coarse_basis);
+  const SolveInputs own{.start = &subgrid_start, .origin = {.clock = origin.clock, .krylov = origin.krylov}};
+  const SolveResult coarse = solveOnGrid(subgrid, stage, subgrid_options, own, coarse_basis);
   stage.retime(problem);
   SubgridCost cost{subgrid.numSteps(), q, coarse.summary.relaxations,
                    static_cast<int>(stage.sparseSolves() - solves_before), 0.0, coarse.summary.converged()};

@@ -172,6 +172,7 @@ class ZoneRounds {
     RecordOrigin o = done_;
     o.wall_s = -measure_s_;
     o.clock = from_.clock;
+    o.krylov = inputs_.origin.krylov;  // the whole solve's count
     return o;
   }
   // The iteration cap holds for the rounds together, and a restricted round gets half of what is

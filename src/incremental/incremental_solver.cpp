@@ -168,12 +168,18 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// When the march began, and the Krylov iterations of the solve so far (RecordOrigin::krylov).
+struct MarchClock {
+  Clock::time_point at;
+  std::function<long long()> krylov;
+};
+
 // Marches over the instants: `solve_at(k, λ_{k−1}, v_{k−1})` solves instant k (zero fields before
 // k = 0); `sparse_solves()` counts the solves so far. Fills the history, summary and message.
 template <class SolveAt, class SparseSolves>
-SolveResult march(const Problem& problem, const IterationCallback& callback, Clock::time_point start,
+SolveResult march(const Problem& problem, const IterationCallback& callback, const MarchClock& start,
                   SolveAt&& solve_at, SparseSolves&& sparse_solves) {
-  const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start.at).count(); };
   const int m = problem.numSteps();
   SolveResult result;
   result.interface = InterfaceHistory::zeros(problem.contact, m);
@@ -195,7 +201,8 @@ SolveResult march(const Problem& problem, const IterationCallback& callback, Clo
     v = o.v;
     result.interface.lambda.col(k) = o.lambda;
     result.interface.v.col(k) = o.v;
-    summary.history.push_back({k + 1, 0, o.residual, 0.0, std::nullopt, 0, sparse_solves(), elapsed(), std::nullopt});
+    summary.history.push_back({k + 1, 0, o.residual, 0.0, std::nullopt, 0, sparse_solves(), elapsed(), std::nullopt,
+                               start.krylov ? start.krylov() : 0});
     summary.indicator = std::max(summary.indicator, o.residual);
     if (callback && !callback(summary.history.back())) {
       summary.termination = Termination::StoppedByCallback;
@@ -211,7 +218,7 @@ SolveResult march(const Problem& problem, const IterationCallback& callback, Clo
 
 // The plane law with the dense Delassus operator of `condensed` (the header's method).
 SolveResult solvePlaneOn(const Problem& problem, CondensedInterface& condensed, const IncrementalOptions& options,
-                         const IterationCallback& callback, Clock::time_point start) {
+                         const IterationCallback& callback, const MarchClock& start) {
   giveHeldRowsCompliance(problem.contact, condensed.delassus);
   const int nc = problem.contact.size();
   const Eigen::VectorXd rho = condensed.delassus.diagonal().cwiseInverse();  // ρ = 1 / diag(W)
@@ -227,7 +234,7 @@ SolveResult solvePlaneOn(const Problem& problem, CondensedInterface& condensed, 
 }
 
 SolveResult solvePlaneOnEveryNode(const Problem& problem, const IncrementalOptions& options,
-                                  const IterationCallback& callback, Clock::time_point start, const SpdSolver& factor) {
+                                  const IterationCallback& callback, const MarchClock& start, const SpdSolver& factor) {
   CondensedInterface condensed = CondensedInterface::build(problem, factor);
   return solvePlaneOn(problem, condensed, options, callback, start);
 }
@@ -245,11 +252,11 @@ std::string nodesText(std::size_t count, int n) {
 // counting the zone's solves too.
 template <class OnEveryNode>
 SolveResult liftedOrWhole(const Problem& problem, const SpdSolver& factor, const ZoneCondensation& c,
-                          SolveResult on_zone, Clock::time_point start, OnEveryNode&& on_every_node) {
+                          SolveResult on_zone, const MarchClock& start, OnEveryNode&& on_every_node) {
   SolveSummary& summary = on_zone.summary;
   long lift_solves = 0;
   on_zone.interface = c.lift(problem.contact, factor, on_zone.interface, summary.iterations, lift_solves);
-  summary.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  summary.wall_s = std::chrono::duration<double>(Clock::now() - start.at).count();
   summary.addSolvesAfterIteration(lift_solves);
   if (!summary.history.empty()) summary.history.back().wall_s = summary.wall_s;
   const int n = problem.contact.size();
@@ -275,7 +282,7 @@ SolveResult liftedOrWhole(const Problem& problem, const SpdSolver& factor, const
 // The plane law on the nodes within reach of the prescribed motion (reach_zone.hpp), lifted to every
 // node; on every node when there is no such zone, or when a node left out penetrates.
 SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
-                       Clock::time_point start, const SpdSolver& factor, const std::optional<std::vector<int>>& zone) {
+                       const MarchClock& start, const SpdSolver& factor, const std::optional<std::vector<int>>& zone) {
   if (!zone) return solvePlaneOnEveryNode(problem, options, callback, start, factor);
   ZoneCondensation c = ZoneCondensation::build(problem, factor, *zone);
   Problem part = problem;
@@ -288,7 +295,7 @@ SolveResult solvePlane(const Problem& problem, const IncrementalOptions& options
 // The cone law on `problem`'s nodes with `delassus`, from the free response v0; the columns and
 // scaling of `prepared`'s nodes are learnt before the march (ConeLaw::prepare).
 SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
-                          Clock::time_point start, const Eigen::MatrixXd& v0, LazyDelassus& delassus,
+                          const MarchClock& start, const Eigen::MatrixXd& v0, LazyDelassus& delassus,
                           int load_solves, const std::vector<int>& prepared) {
   ConeLaw law(problem, delassus);
   law.prepare(prepared);
@@ -303,7 +310,7 @@ SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& opti
 // of `zone`'s nodes first, in blocks on every thread (most of those the march would ask for a few at
 // a time).
 SolveResult solveConeOnEveryNode(const Problem& problem, const IncrementalOptions& options,
-                                 const IterationCallback& callback, Clock::time_point start, const SpdSolver& factor,
+                                 const IterationCallback& callback, const MarchClock& start, const SpdSolver& factor,
                                  const std::optional<std::vector<int>>& zone) {
   const Eigen::MatrixXd v0 = freeInterfaceResponse(problem, factor);
   LazyDelassus delassus(problem, factor);
@@ -321,7 +328,7 @@ SolveResult solveConeOnEveryNode(const Problem& problem, const IncrementalOption
 // lifted to every node; on every node, lazily, when the factor does not condense the zone or a node
 // left out penetrates.
 SolveResult solveCone(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
-                      Clock::time_point start, const SpdSolver& factor, const std::optional<std::vector<int>>& zone) {
+                      const MarchClock& start, const SpdSolver& factor, const std::optional<std::vector<int>>& zone) {
   const auto on_every_node = [&] { return solveConeOnEveryNode(problem, options, callback, start, factor, zone); };
   if (!zone || !factor.condenses(restrictToNodes(problem.contact, *zone).B)) return on_every_node();
   ZoneCondensation c = ZoneCondensation::build(problem, factor, *zone);
@@ -345,7 +352,7 @@ SolveResult solveCone(const Problem& problem, const IncrementalOptions& options,
 SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& options, const SolveInputs& inputs) {
   const IterationCallback& callback = inputs.callback;
   options.validate();
-  const auto start = Clock::now();
+  const MarchClock start{Clock::now(), inputs.origin.krylov};
   // The zone's dofs ordered last: its Delassus operator from the factorisation (reach_zone.hpp).
   const std::optional<std::vector<int>> zone = options.zone_within_reach ? reachZone(problem) : std::nullopt;
   const std::vector<int> zone_dofs = zone ? dofsReadBy(restrictToNodes(problem.contact, *zone).B) : std::vector<int>();

@@ -152,13 +152,13 @@ FrameFields frameFields(const Problem& problem, const Eigen::VectorXd& u, const 
 std::string historyCsv(const SolveSummary& summary) {
   std::ostringstream out;
   out.precision(12);
-  out << "iteration,relaxations,indicator,error,rank,wall_s,error_estimate,sparse_solves\n";
+  out << "iteration,relaxations,indicator,error,rank,wall_s,error_estimate,sparse_solves,krylov_iterations\n";
   for (const auto& r : summary.history) {
     out << r.iteration << ',' << r.relaxations << ',' << r.indicator << ',';
     if (r.error) out << *r.error;
     out << ',' << r.rank << ',' << r.wall_s << ',';
     if (std::isfinite(r.error_estimate)) out << r.error_estimate;
-    out << ',' << r.sparse_solves << '\n';
+    out << ',' << r.sparse_solves << ',' << r.krylov_iterations << '\n';
   }
   return out.str();
 }

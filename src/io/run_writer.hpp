@@ -35,7 +35,8 @@ struct RunInfo {
 void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
                      const RunInfo& info, const OutputSpec& output, PreparedOperators& operators);
 
-/// history.csv: iteration,relaxations,indicator,error,rank,wall_s (error empty when unknown).
+/// history.csv: iteration,relaxations,indicator,error,rank,wall_s,error_estimate,sparse_solves,
+/// krylov_iterations (error and estimate empty when unknown).
 std::string historyCsv(const SolveSummary& summary);
 /// What writing a run folder took: the writer's sparse solves (VTU frames solved from λ) and its
 /// seconds before summary.json.

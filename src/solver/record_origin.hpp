@@ -7,6 +7,7 @@
 // began, the true-error measures left out); the summary's stages say what each part was. The one
 // mechanism for every chained part (SolveInputs::origin).
 #include <chrono>
+#include <functional>
 #include <optional>
 
 #include "stcontact/solver/solve_summary.hpp"
@@ -22,12 +23,16 @@ struct RecordOrigin {
   double wall_s = 0.0;
   /// Where the whole solve's clock started; none: where this solve's monitor starts.
   std::optional<Clock::time_point> clock;
+  /// The Krylov iterations of the whole solve so far (set by stc::solve from the operators it solves
+  /// with); none: 0 in every record.
+  std::function<long long()> krylov;
 
   /// `r` counted from this origin (its wall time is the monitor's, read on `clock`).
   IterationRecord applied(IterationRecord r) const {
     r.iteration += iterations;
     r.relaxations += relaxations;
     r.sparse_solves += static_cast<int>(sparse_solves);
+    if (krylov) r.krylov_iterations = krylov();
     return r;
   }
   /// The same origin with `solves` more sparse solves before the part (a stage's set-up).

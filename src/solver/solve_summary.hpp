@@ -26,6 +26,9 @@ struct IterationRecord {
   /// E = Σ_k u_kᵀ K u_k of the iterate (src/solver/equilibrium_energy.hpp: the true error's
   /// normalisation), when the solver measures it for its estimate.
   std::optional<double> energy;
+  /// Krylov iterations of the solve's linear solves so far on an iterative backend (0 on a direct
+  /// one): RecordOrigin::krylov's reading when the record was made.
+  long long krylov_iterations = 0;
 };
 
 /// A part of a solve beside its main iteration (docs/method.md §5): the solve on a sub-grid of

@@ -45,7 +45,7 @@ def test_reactions_and_history_columns(latin):
     assert latin.reactions["n_contact"][0] == 0 and np.isnan(latin.reactions["contact_xmin"][0])
     assert latin.reactions["n_contact"][-1] > 0
     assert {"iteration", "relaxations", "indicator", "error", "rank", "wall_s", "error_estimate",
-            "sparse_solves"} == set(latin.history)
+            "sparse_solves", "krylov_iterations"} == set(latin.history)
     assert all(column.shape == (latin.iterations,) for column in latin.history.values())
     assert latin.history["indicator"][-1] <= 1e-5 and latin.converged
     assert latin.error == pytest.approx(latin.history["error"][-1], rel=1e-15)

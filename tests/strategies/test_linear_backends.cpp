@@ -165,6 +165,12 @@ TEST(LinearBackendCounts, KrylovIterationsAndPeakMemoryReachTheSummary) {
     } else {
       EXPECT_EQ(solves + iterations, 0);
     }
+    // history.csv's column: the solve's count so far, never decreasing, within the summary's total
+    // (the lift after the last iteration solves too), and counting on the iterative backend.
+    const std::vector<stc::IterationRecord>& h = r.summary.history;
+    for (std::size_t i = 1; i < h.size(); ++i) EXPECT_LE(h[i - 1].krylov_iterations, h[i].krylov_iterations);
+    EXPECT_LE(h.back().krylov_iterations, r.summary.krylov_iterations);
+    EXPECT_EQ(h.back().krylov_iterations > 0, backend == stc::LinearBackend::CgGamg);
     const nlohmann::json json =
         nlohmann::json::parse(stc::summaryJson(problem, r.summary, {"{}", "test", {}, {}, {}}, operators.preparations()));
     EXPECT_EQ(r.summary.krylov_iterations, iterations);  // the solve's: no other user of the operators
@@ -172,5 +178,13 @@ TEST(LinearBackendCounts, KrylovIterationsAndPeakMemoryReachTheSummary) {
     ASSERT_EQ(json.at("peak_memory_bytes_per_rank").size(), 1u);
     EXPECT_GT(json.at("peak_memory_bytes").get<double>(), 1e6);  // the libraries alone hold more
     EXPECT_EQ(json.at("peak_memory_bytes").get<double>(), json.at("peak_memory_bytes_per_rank")[0].get<double>());
+    // The incremental solver's records (one per instant) count the same way.
+    const stc::SolveResult marched = stc::solve(stc::strategyNamed("incremental"), problem, scene.solver);
+    const std::vector<stc::IterationRecord>& instants = marched.summary.history;
+    ASSERT_FALSE(instants.empty());
+    for (std::size_t i = 1; i < instants.size(); ++i)
+      EXPECT_LE(instants[i - 1].krylov_iterations, instants[i].krylov_iterations);
+    EXPECT_EQ(instants.back().krylov_iterations, marched.summary.krylov_iterations);
+    EXPECT_EQ(marched.summary.krylov_iterations > 0, backend == stc::LinearBackend::CgGamg);
   }
 }
