@@ -23,7 +23,7 @@ status=0
 # or a memory figure (wall_s, time_to_1e-4_s, time_ratio_*, peak_rss_mb, "solve s", ...).
 timed_columns() {
   awk -F"$1" -v OFS="$1" 'NR == 1 || /^\| case/ {
-      for (i = 1; i <= NF; i++) drop[i] = ($i ~ /(_s$|_s_|time|ratio|rss|memory| s *$)/) }
+      for (i = 1; i <= NF; i++) drop[i] = ($i ~ /(_s$|_s_|time|(^|_)ratio|rss|memory| s *$)/) }
     { for (i = 1; i <= NF; i++) if (drop[i]) $i = "#"; print }'
 }
 
