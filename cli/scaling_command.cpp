@@ -15,6 +15,7 @@
 #include "stcontact/cli/compare_command.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
 #include "stcontact/cli/threads_option.hpp"
+#include "stcontact/core/clock.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/interruption.hpp"
 #include "stcontact/io/run_folder.hpp"
@@ -204,7 +205,7 @@ int runScaling(const ScalingArgs& a) {
   }
   study.memory_method = study.points.front().comparison.memory_method;
   study.load_after = loadAverage();
-  study.run_s = std::chrono::duration<double>(Clock::now() - start).count();
+  study.run_s = secondsSince(start);
   throwIfInterrupted();
   writeScaling(folder.path(), study);
   std::string warning;

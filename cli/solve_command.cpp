@@ -13,6 +13,7 @@
 #include "stcontact/cli/stopping_help.hpp"
 #include "stcontact/cli/terminal_progress.hpp"
 #include "stcontact/cli/threads_option.hpp"
+#include "stcontact/core/clock.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/memory.hpp"
 #include "stcontact/core/interruption.hpp"
@@ -99,10 +100,6 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
 }
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The lines, each ended by a newline (a line that has its own keeps it).
 std::string joinedLines(const std::vector<std::string>& lines) {

@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "stcontact/cli/commands.hpp"
+#include "stcontact/core/clock.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/interruption.hpp"
 #include "stcontact/io/atomic_file.hpp"
@@ -38,10 +39,6 @@ constexpr const char* kEnergyLabels[] = {"99%", "99.9%", "99.99%"};
 constexpr double kBandDepths[] = {0.05, 0.1, 0.2};
 constexpr double kFigureDisplacement = 0.12;  // largest displacement of a drawn mode, × length scale
 
-double seconds(std::chrono::steady_clock::time_point since) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
-
 struct Analysis {
   pgd::SpaceTimeSvd svd;
   double svd_s = 0.0;
@@ -57,7 +54,7 @@ Analysis analyse(const Eigen::MatrixXd& U, const Eigen::SparseMatrix<double>& K,
   Analysis a;
   const auto start = std::chrono::steady_clock::now();
   a.svd = arpackEnergySvd(U, K, wanted);
-  a.svd_s = seconds(start);
+  a.svd_s = secondsSince(start);
   if (m <= kMaxDenseCheck) {
     const pgd::SpaceTimeSvd dense = pgd::energySvd(U, K);
     a.compared = std::min({kComparedValues, a.svd.size(), a.svd.resolved});

@@ -38,13 +38,6 @@ SolveResult linearSolveFailed(Strategy strategy, const Problem& problem, const L
   return out;
 }
 
-// The Krylov iterations of every operator prepared in `operators` so far.
-long long krylovIterationsOf(const PreparedOperators& operators) {
-  long long total = 0;
-  for (const Preparation& p : operators.preparations()) total += p.krylov.iterations;
-  return total;
-}
-
 SolveResult solveWith(const StrategyRegistration& r, const Problem& problem, const SolverSpec& spec,
                       const SolveInputs& inputs) {
   try {
@@ -60,12 +53,12 @@ SolveResult solve(Strategy strategy, const Problem& problem, const SolverSpec& s
   SolveInputs with = inputs;
   std::unique_ptr<PreparedOperators> own;
   if (!with.operators) with.operators = (own = std::make_unique<PreparedOperators>(spec.linearAtTolerance())).get();
-  const long long before = krylovIterationsOf(*with.operators);
-  with.origin.krylov = [operators = with.operators, before] { return krylovIterationsOf(*operators) - before; };
+  const long long before = with.operators->krylovIterations();
+  with.origin.krylov = [operators = with.operators, before] { return operators->krylovIterations() - before; };
   for (const StrategyRegistration& r : strategyRegistry())
     if (r.strategy == strategy) {
       SolveResult result = solveWith(r, problem, spec, with);
-      result.summary.krylov_iterations = krylovIterationsOf(*with.operators) - before;
+      result.summary.krylov_iterations = with.origin.krylov();
       return result;
     }
   throw std::logic_error("strategy without a registration: " + std::string(nameOf(strategy)));

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "stcontact/contact/contact_state.hpp"
+#include "stcontact/core/clock.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/cone_newton.hpp"
@@ -179,7 +180,7 @@ struct MarchClock {
 template <class SolveAt, class SparseSolves>
 SolveResult march(const Problem& problem, const IterationCallback& callback, const MarchClock& start,
                   SolveAt&& solve_at, SparseSolves&& sparse_solves) {
-  const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start.at).count(); };
+  const auto elapsed = [&] { return secondsSince(start.at); };
   const int m = problem.numSteps();
   SolveResult result;
   result.interface = InterfaceHistory::zeros(problem.contact, m);
@@ -256,7 +257,7 @@ SolveResult liftedOrWhole(const Problem& problem, const SpdSolver& factor, const
   SolveSummary& summary = on_zone.summary;
   long lift_solves = 0;
   on_zone.interface = c.lift(problem.contact, factor, on_zone.interface, summary.iterations, lift_solves);
-  summary.wall_s = std::chrono::duration<double>(Clock::now() - start.at).count();
+  summary.wall_s = secondsSince(start.at);
   summary.addSolvesAfterIteration(lift_solves);
   if (!summary.history.empty()) summary.history.back().wall_s = summary.wall_s;
   const int n = problem.contact.size();

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "stcontact/core/clock.hpp"
 #include "stcontact/core/memory.hpp"
 #include "stcontact/core/overloaded.hpp"
 #include "stcontact/core/threads.hpp"
@@ -164,10 +165,6 @@ std::string historyCsv(const SolveSummary& summary) {
 }
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The solve on a sub-grid of instants that nested iteration started from (docs/method.md §5), its
 // counts and time included in the solve's; null when there was none.

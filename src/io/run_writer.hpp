@@ -2,8 +2,8 @@
 // Writes every output file of a solved run into one folder (docs/interface.md "Output files"), each
 // atomically (temporary file, then rename): reactions.csv, contact.csv, history.csv,
 // summary.json, and solution.pvd + vtu/ when asked.
-#include <filesystem>
 #include <chrono>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>

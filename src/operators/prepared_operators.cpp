@@ -4,6 +4,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "stcontact/core/clock.hpp"
 #include "stcontact/linalg/prepare_spd_solver.hpp"
 #include "stcontact/operators/rigid_body_modes.hpp"
 
@@ -11,8 +12,6 @@ namespace stc {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // FNV-1a over the bytes of `count` values at `data`.
 template <class T>
@@ -106,6 +105,13 @@ std::vector<Preparation> PreparedOperators::preparations() const {
   if (stiffness_free_) out[stiffness_record_].krylov = stiffness_free_->krylovCounts();
   for (const Search& s : search_) out[s.record].krylov = s.op->factor->krylovCounts();
   return out;
+}
+
+long long PreparedOperators::krylovIterations() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  long long total = stiffness_free_ ? stiffness_free_->krylovCounts().iterations : 0;
+  for (const Search& s : search_) total += s.op->factor->krylovCounts().iterations;
+  return total;
 }
 
 PreparedOperators& operatorsOr(PreparedOperators* operators, std::unique_ptr<PreparedOperators>& own) {

@@ -75,6 +75,8 @@ class PreparedOperators {
 
   /// Every operator prepared so far, in the order prepared.
   std::vector<Preparation> preparations() const;
+  /// The Krylov iterations of every operator prepared so far (0 when all are direct).
+  long long krylovIterations() const;
   const LinearSolverOptions& linear() const { return linear_; }
 
  private:

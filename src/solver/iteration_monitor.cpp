@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "stcontact/core/clock.hpp"
 #include "stcontact/solver/contact_free_certificate.hpp"
 
 namespace stc {
@@ -45,14 +46,14 @@ IterationMonitor::IterationMonitor(std::string solver, StoppingRule rule, const 
 // observation of the run, not part of the solver's work: an error run and a run without the
 // reference then tell the same time).
 double IterationMonitor::elapsed() const {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() - measure_s_ + origin_.wall_s;
+  return secondsSince(start_) - measure_s_ + origin_.wall_s;
 }
 
 std::optional<double> IterationMonitor::measureError(const Eigen::MatrixXd& lambda) {
   if (!reference_ || !reference_->defined()) return std::nullopt;
   const auto start = std::chrono::steady_clock::now();
   const double error = reference_->relativeError(lambda);
-  measure_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  measure_s_ += secondsSince(start);
   return error;
 }
 

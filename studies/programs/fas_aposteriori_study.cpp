@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "stcontact/core/clock.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/fas/aposteriori/aposteriori_basis.hpp"
 #include "stcontact/fas/aposteriori/fixed_basis_provider.hpp"
@@ -59,7 +60,7 @@ using stc::fas::CoarseStart;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+using stc::secondsSince;
 
 constexpr double kStopError = 1e-8;  // a run stops once its true error is below this (callback)
 constexpr int kMaxModes = 20;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "stcontact/core/clock.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/solver/solve_summary.hpp"
@@ -77,7 +78,7 @@ template <class Work>
 double secondsOf(Work&& work) {
   const auto start = std::chrono::steady_clock::now();
   work();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return secondsSince(start);
 }
 
 }  // namespace stc::study
