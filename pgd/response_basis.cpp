@@ -169,10 +169,7 @@ Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>&
   const linalg::Svd svd = linalg::singularValueDecomposition(whitenedHistory(*this, c),
                                                              linalg::SvdMethod::divide_and_conquer,
                                                              linalg::kThinU | linalg::kThinV);
-  // ρ: the fewest leading modes whose tail Σ_{i>ρ} σ_i² is within the budget.
-  Eigen::Index rho = svd.values.size();
-  for (double tail = 0.0; rho > 0 && tail + svd.values[rho - 1] * svd.values[rho - 1] <= energy_budget; --rho)
-    tail += svd.values[rho - 1] * svd.values[rho - 1];
+  const Eigen::Index rho = modesWithinBudget(svd.values, energy_budget);
   if (rho == svd.values.size()) return displacementOn(B_rows, c);
   const Eigen::MatrixXd C = energy_.combination(svd.U.leftCols(rho));  // (q + p) × ρ
   const Eigen::MatrixXd time = svd.values.head(rho).asDiagonal() * svd.V.leftCols(rho).transpose();

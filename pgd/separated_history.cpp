@@ -89,6 +89,13 @@ Eigen::MatrixXd modeTraces(const ResponseBasis& basis, const Eigen::MatrixXd& co
   return BY;
 }
 
+Eigen::Index modesWithinBudget(const Eigen::VectorXd& singular_values, double energy_budget) {
+  Eigen::Index rho = singular_values.size();
+  for (double tail = 0.0; rho > 0 && tail + singular_values[rho - 1] * singular_values[rho - 1] <= energy_budget; --rho)
+    tail += singular_values[rho - 1] * singular_values[rho - 1];
+  return rho;
+}
+
 double truncationBudget(const SolveSummary& summary, double tolerance) {
   if (!summary.converged() || summary.history.empty()) return 0.0;
   const IterationRecord& last = summary.history.back();
@@ -100,10 +107,7 @@ double truncationBudget(const SolveSummary& summary, double tolerance) {
 SeparatedDisplacement separatedDisplacement(const ResponseBasis& basis, const Eigen::MatrixXd& c, double energy_budget) {
   const Eigen::Index q = basis.loadResponses().cols();
   const EnergySvd svd = energySvd(basis, c, static_cast<int>(q) + basis.size());
-  Eigen::Index rho = svd.singular_values.size();
-  for (double tail = 0.0; rho > 0 && tail + svd.singular_values[rho - 1] * svd.singular_values[rho - 1] <= energy_budget;
-       --rho)
-    tail += svd.singular_values[rho - 1] * svd.singular_values[rho - 1];
+  const Eigen::Index rho = modesWithinBudget(svd.singular_values, energy_budget);
   const Eigen::MatrixXd C = svd.combination.leftCols(rho);
   SeparatedDisplacement out;
   out.held = true;

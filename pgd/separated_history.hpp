@@ -47,6 +47,10 @@ Eigen::MatrixXd spatialModes(const ResponseBasis& basis, const Eigen::MatrixXd& 
 /// Their traces B Y = [V_F T] · combination (d n_C × r).
 Eigen::MatrixXd modeTraces(const ResponseBasis& basis, const Eigen::MatrixXd& combination);
 
+/// ρ: the fewest leading modes of singular values σ (decreasing) whose dropped energy
+/// Σ_{i>ρ} σ_i² is at most `energy_budget` (every mode for a budget below the smallest σ_i²).
+Eigen::Index modesWithinBudget(const Eigen::VectorXd& singular_values, double energy_budget);
+
 /// The energy a converged solve may still spend on truncations of its outputs (the far nodes' lift,
 /// the separated displacement): with the last record's estimate e ≤ τ and history energy E,
 /// (τ − e)² E, so that the truncated history's relative error stays within τ; 0 for a solve that did

@@ -19,11 +19,11 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   counted.origin.sparse_solves += stage.sparseSolves();
   SolveResult result = solveFasNestedInTime(problem, stage, options, counted, coarse_basis);
   result.interface_directions = stage.basis().directions();
-  // What follows the iteration may solve: the responses of the spatial modes, the far nodes' lift
-  // (response_basis.hpp); the last record counts those solves.
-  // The far nodes' lift and the separated displacement may each drop what the converged estimate
-  // leaves of the tolerance (pgd::truncationBudget): with ε_est bounding the true error e, each is
-  // within e + (τ − ε_est) ≤ τ of the reference in the true error's measure (triangle inequality).
+  // What follows the iteration may solve: the responses of the spatial modes and of the separated
+  // displacement, the far nodes' lift (response_basis.hpp); the last record counts those solves.
+  // The lift and the separated displacement may each drop what the converged estimate leaves of the
+  // tolerance (pgd::truncationBudget): with ε_est bounding the true error e, each is within
+  // e + (τ − ε_est) ≤ τ of the reference in the true error's measure (triangle inequality).
   const long before = stage.sparseSolves();
   const double budget = pgd::truncationBudget(result.summary, options.fas.stop.tolerance);
   if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());

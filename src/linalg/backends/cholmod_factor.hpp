@@ -66,8 +66,6 @@ class CholmodFactor final : public SpdSolver {
   /// backward solve with Lᵀ is sparse: about half a solve per column. On this thread, by chunks as
   /// solve(B). Throws std::invalid_argument for another R.
   Eigen::MatrixXd solveFromTrailing(const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& U) const override;
-  /// A factor that would exceed the memory a caller allows (the last constructor argument): thrown
-  /// after the symbolic analysis, before any numerical work.
   /// The memory of a factor with `entries` entries of L: 8 bytes each, times kBytesPerEntry for the
   /// explicit zeros of supernodal amalgamation and the workspace (measured: 4.14 GB of resident
   /// growth for 4.04e8 entries on the half-ball at 335k dofs, docs/linear_solvers.md).
