@@ -252,14 +252,23 @@ std::string recordText(const IterationRecord& r) {
 
 py::tuple recordState(const IterationRecord& r) {
   return py::make_tuple(r.iteration, r.relaxations, r.indicator, r.error_estimate, r.error, r.rank, r.sparse_solves,
-                        r.wall_s);
+                        r.wall_s, r.krylov_iterations);
 }
 
 IterationRecord recordFromState(const py::tuple& state) {
-  if (state.size() != 8) throw std::invalid_argument("a pickled IterationRecord holds 8 values");
-  // In the order of stc::IterationRecord's members, as recordState wrote them.
-  return {state[0].cast<int>(), state[1].cast<int>(), state[2].cast<double>(), state[3].cast<double>(),
-          state[4].cast<std::optional<double>>(), state[5].cast<int>(), state[6].cast<int>(), state[7].cast<double>()};
+  if (state.size() != 9) throw std::invalid_argument("a pickled IterationRecord holds 9 values");
+  // In the order of stc::IterationRecord's members, as recordState wrote them (the energy, which
+  // only the solver's estimate reads, is not kept).
+  return {state[0].cast<int>(),
+          state[1].cast<int>(),
+          state[2].cast<double>(),
+          state[3].cast<double>(),
+          state[4].cast<std::optional<double>>(),
+          state[5].cast<int>(),
+          state[6].cast<int>(),
+          state[7].cast<double>(),
+          std::nullopt,
+          state[8].cast<long long>()};
 }
 
 void bindRecord(py::module_& module) {
@@ -271,6 +280,7 @@ void bindRecord(py::module_& module) {
       .def_property_readonly("error_estimate", [](const IterationRecord& r) { return estimateOrNone(r.error_estimate); })
       .def_readonly("rank", &IterationRecord::rank)
       .def_readonly("sparse_solves", &IterationRecord::sparse_solves)
+      .def_readonly("krylov_iterations", &IterationRecord::krylov_iterations)
       .def_readonly("wall_s", &IterationRecord::wall_s)
       .def("__repr__", &recordText)
       .def(py::pickle(&recordState, &recordFromState));

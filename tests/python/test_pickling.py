@@ -58,8 +58,8 @@ def test_iteration_records_round_trip(small_scene):
     stcontact.solve(small_scene, "latin", max_iterations=4, callback=records.append)
     copies = round_trip(records)
     assert [repr(r) for r in copies] == [repr(r) for r in records]
-    assert [(r.sparse_solves, r.error, r.error_estimate) for r in copies] == [
-        (r.sparse_solves, r.error, r.error_estimate) for r in records]
+    assert [(r.sparse_solves, r.krylov_iterations, r.error, r.error_estimate) for r in copies] == [
+        (r.sparse_solves, r.krylov_iterations, r.error, r.error_estimate) for r in records]
 
 
 def test_an_svd_result_round_trips(small_scene):
