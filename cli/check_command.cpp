@@ -5,6 +5,8 @@
 #include <string_view>
 
 #include "stcontact/cli/commands.hpp"
+#include "stcontact/io/frame_fields.hpp"
+#include "stcontact/io/run_writer.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 
@@ -23,6 +25,24 @@ std::string masterMaterial(const Problem& p) {
 std::string_view searchLawFormula(SearchLaw law) {
   return law == SearchLaw::Local ? "k = kappa E l_i hbar / (L h_i) (law local, hbar = sum l / sum (l / h))"
                                  : "k = kappa E l_i / L (law tributary)";
+}
+
+// What `solve` writes beside the small tables: the frames (their format, instants and count) and
+// whether contact.csv is written (docs/interface.md, "Output files of solve").
+std::string outputsLine(const OutputSpec& output, const Problem& p) {
+  std::ostringstream line;
+  line << "solution.h5";
+  if (output.frames) {
+    const int stride = frameStride(p, output.frame_stride);
+    const std::size_t frames = frameSteps(p.numSteps(), stride).size();
+    line << (output.format == OutputFormat::Hdf5 ? " + solution.xdmf" : ", solution.pvd + vtu/") << ", " << frames
+         << " frames (" << (stride == 1 ? std::string("every instant") : "one in " + std::to_string(stride) + " instants")
+         << (output.frame_stride == 0 ? ", output.frame_stride auto" : "") << ")";
+  } else {
+    line << ", no frames";
+  }
+  line << (writesContactCsv(p, output) ? ", contact.csv" : ", no contact.csv (output.contact_csv)");
+  return line.str();
 }
 
 }  // namespace
@@ -61,7 +81,8 @@ int runCheck(const CheckArgs& args) {
             << ", L = "
             << p.length_scale << ", kappa E / L = " << c.search_scale_per_length << ", k in ["
             << c.search_direction.minCoeff() << ", " << c.search_direction.maxCoeff() << "]\n"
-            << "solver           " << scene.solver.name() << ", tolerance " << scene.solver.tolerance() << "\n";
+            << "solver           " << scene.solver.name() << ", tolerance " << scene.solver.tolerance() << "\n"
+            << "outputs          " << outputsLine(scene.output, p) << "\n";
   return 0;
 }
 

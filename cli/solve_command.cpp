@@ -57,9 +57,9 @@ void requireBackendForRanks(const Scene& scene, const Ranks& ranks) {
 // would have to solve for in one order (docs/linear_solvers.md, "Ranks").
 OutputSpec outputsOn(const Scene& scene, const Ranks& ranks) {
   OutputSpec output = scene.output;
-  if (ranks.size > 1 && output.vtu) {
-    if (ranks.writes()) std::cerr << "note: no VTU frames on " << ranks.size << " ranks (output.vtu is for one process)" << std::endl;
-    output.vtu = false;
+  if (ranks.size > 1 && output.frames) {
+    if (ranks.writes()) std::cerr << "note: no frames on " << ranks.size << " ranks (output.frames is for one process; solution.h5 holds the rest)" << std::endl;
+    output.frames = false;
   }
   return output;
 }
@@ -74,7 +74,7 @@ SolveResult runSolver(const Problem& problem, const Scene& scene, const ErrorRef
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
   inputs.callback = run.callback();
   inputs.spatial_modes = false;  // not written
-  inputs.separated_displacement = output.vtu;
+  inputs.separated_displacement = output.frames;
   inputs.operators = &operators;
   return solve(problem, scene.solver, inputs);
 }
@@ -152,7 +152,7 @@ int runSolve(const SolveArgs& args) {
   throwIfInterrupted();  // a solve stopped by a signal writes nothing
   std::vector<double> peaks = valuesOfEveryRank(peakResidentBytes());  // every rank takes part
   if (!ranks.writes()) return result.summary.converged() ? 0 : 2;
-  if (output.vtu) progress.note("writing " + out.string() + "/ with its VTU frames");
+  if (output.frames) progress.note("writing " + out.string() + "/ with its frames");
   const auto writing = std::chrono::steady_clock::now();
   writeRunOutputs(folder->path(), problem, result,
                   {scene.parameters_json, STC_VERSION, std::move(peaks), started, reference_s}, output, operators);

@@ -66,3 +66,20 @@ if(STC_WITH_PETSC)
     message(STATUS "PETSc or MPI not found: linear backend cholmod only (libpetsc-real-dev adds mumps, cg-gamg)")
   endif()
 endif()
+
+# HDF5 writes solution.h5 (src/io/hdf5_file.cpp). One HDF5 in a process: with PETSc, the build
+# PETSc links (Debian's links libhdf5_openmpi, from libhdf5-openmpi-dev, which it depends on); without
+# it, the serial one (libhdf5-dev). Found through pkg-config; linked by path, as PETSc is.
+find_package(PkgConfig QUIET)
+stc_require(PkgConfig_FOUND pkg-config "pkg-config")
+if(STC_HAVE_PETSC)
+  pkg_check_modules(STC_HDF5 QUIET hdf5-openmpi)
+  stc_require(STC_HDF5_FOUND libhdf5-openmpi-dev "HDF5 (the Open MPI build PETSc links)")
+else()
+  pkg_check_modules(STC_HDF5 QUIET hdf5-serial)
+  if(NOT STC_HDF5_FOUND)
+    pkg_check_modules(STC_HDF5 QUIET hdf5)
+  endif()
+  stc_require(STC_HDF5_FOUND libhdf5-dev "HDF5")
+endif()
+message(STATUS "HDF5 ${STC_HDF5_VERSION}: ${STC_HDF5_LINK_LIBRARIES}")

@@ -137,6 +137,29 @@ py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
   return reactions;
 }
 
+/// contact.csv's per-node columns beside λ (stc::interfaceTable, the writer's own): the tributary
+/// lengths or areas ℓ_i, and n_C × m gap and state (0 open, 1 stick, 2 slip), (d − 1) n_C × m slip
+/// (rows (d − 1) i + a), in the library's layout (column k: instant k).
+py::dict contactArrays(const Problem& problem, const SolveResult& result) {
+  const InterfaceTable table = interfaceTable(problem, result);
+  const int n = table.nodes, m = table.steps, t = table.tangential;
+  Eigen::MatrixXd gap(n, m), slip(static_cast<Eigen::Index>(t) * n, m);
+  Eigen::MatrixXi state(n, m);
+  for (int k = 0; k < m; ++k)
+    for (int i = 0; i < n; ++i) {
+      const auto at = static_cast<std::size_t>(k) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i);
+      gap(i, k) = table.gap[at];
+      state(i, k) = table.state[at];
+      for (int a = 0; a < t; ++a) slip(t * i + a, k) = table.slip[at * static_cast<std::size_t>(t) + static_cast<std::size_t>(a)];
+    }
+  py::dict contact;
+  contact["tributary"] = movedToNumpy(Eigen::VectorXd(problem.contact.tributary));
+  contact["gap"] = movedToNumpy(std::move(gap));
+  contact["slip"] = movedToNumpy(std::move(slip));
+  contact["state"] = movedToNumpy(std::move(state));
+  return contact;
+}
+
 /// Everything the Python SolveResult holds. Texts and tables first, while `result` is whole; then
 /// the large matrices are moved into their arrays. Call within the call's thread count (the
 /// summary records it).
@@ -150,6 +173,7 @@ py::dict resultDict(const SceneHandle& run, SolveResult&& result, const Prepared
       summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION, {}, {}, {}}, operators.preparations());
   out["history"] = historyArrays(result.summary);
   out["reactions"] = reactionArrays(*problem, result);
+  out["contact"] = contactArrays(*problem, result);
   out["times"] = movedToNumpy(std::vector<double>(problem->times));
   out["contact_nodes"] = movedToNumpy(std::vector<int>(problem->contact.nodes));
   out["master_nodes"] = movedToNumpy(std::vector<int>(problem->contact.master_nodes));
@@ -194,7 +218,7 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   PreparedOperators operators(linear);
   SolveInputs inputs;
   inputs.spatial_modes = options.spatial_modes;
-  inputs.separated_displacement = options.out && scene.output.vtu;  // the frames come from it
+  inputs.separated_displacement = options.out && scene.output.frames;  // the frames come from it
   inputs.operators = &operators;
   applyWarmStart(warm, *problem, start, inputs);
 

@@ -45,7 +45,7 @@ while IFS="|" read -r name scene full small_sets _bound; do
   case $name in ''|'#'*) continue ;; esac
   if [ -n "$only_cases" ] && ! grep -qw -- "$name" <<<"$only_cases"; then continue; fi
   sets=$([ $small = 1 ] && trim "$small_sets" || trim "$full")
-  args=(--set output.vtu=false)  # the suite reads summaries and CSVs; no ParaView fields
+  args=(--set output.frames=false)  # the suite reads summaries and CSVs; no ParaView fields
   for s in $sets "${extra_sets[@]}"; do args+=(--set "$s"); done
   for solver in $solvers; do
     dir=$out/$name/$solver

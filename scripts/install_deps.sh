@@ -12,6 +12,8 @@
 # no code with the writer. python3-gmsh: the mesh scripts of examples/meshes/ (docs/meshing.md).
 # PETSc (with MUMPS, GAMG, hypre) and Open MPI: the linear backends mumps and cg-gamg
 # (docs/linear_solvers.md); a build without them has the cholmod backend alone.
+# HDF5 writes solution.h5 (libhdf5-dev; with PETSc, the Open MPI build PETSc links, which its package
+# brings); python3-h5py reads it back in the tests and in stcontact.load_run.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
@@ -22,5 +24,5 @@ apt-get install -y -qq --no-install-recommends \
   gnuplot-nox clang-14 libclang-rt-14-dev llvm-14 \
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-meshio \
   python3-venv python3-setuptools python3-wheel python3-gmsh \
-  libpetsc-real3.18-dev openmpi-bin >/dev/null
+  libhdf5-dev python3-h5py libpetsc-real3.18-dev openmpi-bin >/dev/null
 echo "dependencies installed"

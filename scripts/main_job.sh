@@ -29,5 +29,5 @@ gnuplot -e "run='$out'" scripts/plots/seed_figures.gp
 ls "$out"/figures/*.png
 echo "== 5. work against precision: every available strategy, 3 timed repeats, medians; --tol 1e-8 so that each runs past true error 1e-6 (docs/compare.md)"
 "$stc" compare "$scene" --repeats 3 --tol 1e-8 --out "$out/compare"
-echo "results in $root/$out/ (open solution.pvd in ParaView for the fields)"
+echo "results in $root/$out/ (open solution.xdmf in ParaView for the fields)"
 echo "work-precision report: $root/$out/compare/summary.md (plots: $root/$out/compare/error_vs_*.png)"

@@ -35,7 +35,7 @@ def epsilon_rank(singular_values, eps):
 
 
 def measure(label, path, sets):
-    scene = stcontact.load_scene(path).with_sets(*sets, "output.vtu=false")
+    scene = stcontact.load_scene(path).with_sets(*sets, "output.frames=false")
     exact = stcontact.solve(scene, "incremental")
     singular_values = np.linalg.svd(exact.interface_forces, compute_uv=False)
     solved = stcontact.compare(scene, "fas-apriori", repeats=1, tol=TOLERANCE).summary[0]

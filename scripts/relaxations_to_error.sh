@@ -38,7 +38,7 @@ while IFS="|" read -r name scene full _small _bound; do
   name=$(trim "$name")
   case $name in ''|'#'*) continue ;; esac
   if [ -n "$only_cases" ] && ! grep -qw -- "$name" <<<"$only_cases"; then continue; fi
-  args=(--set output.vtu=false)
+  args=(--set output.frames=false)
   for s in $(trim "$full") $extra; do args+=(--set "$s"); done
   dir=$out/$name
   rm -rf "$dir"

@@ -27,6 +27,23 @@ timed_columns() {
     { for (i = 1; i <= NF; i++) if (drop[i]) $i = "#"; print }'
 }
 
+# h5_digest FILE: every dataset of an HDF5 file with a digest of its values, and the file's
+# attributes, but the times (the attribute and history column "wall_s") and the version.
+h5_digest() {
+  /usr/bin/python3 - "$1" <<'PY'
+import hashlib, sys
+import h5py
+with h5py.File(sys.argv[1], "r") as f:
+    for key, value in sorted(f.attrs.items()):
+        if key not in ("wall_s", "version"):
+            print("@%s = %s" % (key, value))
+    def show(name, item):
+        if isinstance(item, h5py.Dataset) and name != "history/wall_s":
+            print(name, item.dtype, item.shape, hashlib.sha256(item[()].tobytes()).hexdigest())
+    f.visititems(show)
+PY
+}
+
 # normalise FILE [BOTH]: the file without what differs between two runs of the same build. A
 # summary.json keeps its "preparations" (the operators the run prepared, without their seconds) only
 # when BOTH programs write them (BOTH = 1): a program from before they were listed writes none.
@@ -39,6 +56,7 @@ normalise() {
     *.csv) timed_columns , < "$1" ;;
     *.md|*.png|*.gp|*/run.log) echo "(not compared: times and figures)" ;;
     *.vtu) cat "$1" ;;  # binary frames: compared byte for byte
+    *.h5) h5_digest "$1" ;;
     *) sed -E 's/[0-9.]+ s\)/# s)/g' "$1" ;;
   esac
 }
@@ -72,22 +90,22 @@ run() {
   compare "$name"
 }
 
-seed=(--set output.vtu_stride=50)
+seed=(--set output.frame_stride=50)
 for s in $solvers; do run "seed_$s" solve "$scenes/hemicylinder.toml" --solver "$s" "${seed[@]}" --quiet; done
 if [ "$quick" != --quick ]; then
-  small3d=(--set mesh.divisions=4 --set time.steps=41 --set output.vtu_stride=20)
+  small3d=(--set mesh.divisions=4 --set time.steps=41 --set output.frame_stride=20)
   for s in $solvers; do run "hemisphere_$s" solve "$scenes/hemisphere.toml" --solver "$s" "${small3d[@]}" --quiet; done
   for s in $solvers; do
-    run "punch_$s" solve "$scenes/punch.toml" --solver "$s" --set time.steps=41 --set output.vtu=false --quiet
+    run "punch_$s" solve "$scenes/punch.toml" --solver "$s" --set time.steps=41 --set output.frames=false --quiet
   done
-  run slab_apriori solve "$scenes/slab.toml" --set time.steps=41 --set output.vtu=false --quiet
-  run seed_nested solve "$scenes/hemicylinder.toml" --set time.steps=801 --set output.vtu=false --quiet
+  run slab_apriori solve "$scenes/slab.toml" --set time.steps=41 --set output.frames=false --quiet
+  run seed_nested solve "$scenes/hemicylinder.toml" --set time.steps=801 --set output.frames=false --quiet
   run seed_whole_interface solve "$scenes/hemicylinder.toml" --set solver.reduce_interface=false \
-    --set solver.coarse_zone=false --set output.vtu=false --quiet
+    --set solver.coarse_zone=false --set output.frames=false --quiet
   run seed_mismatch solve "$scenes/hemicylinder.toml" --solver fas-aposteriori --set solver.coarse_start=mismatch \
-    --set solver.safeguard_growth=2 --set output.vtu=false --quiet
+    --set solver.safeguard_growth=2 --set output.frames=false --quiet
   run seed_relaxed solve "$scenes/hemicylinder.toml" --solver latin-pgd --set solver.relaxation=0.8 \
-    --set solver.pgd_gap_share=0.1 --set output.vtu=false --quiet
+    --set solver.pgd_gap_share=0.1 --set output.frames=false --quiet
   run sweep sweep "$scenes/hemicylinder.toml" --set-range contact.friction=0.1:0.3:3 --set mesh.arc_nodes=41 \
     --set time.steps=41 --quiet
   run compare compare "$scenes/hemicylinder.toml" --set mesh.arc_nodes=31 --set time.steps=31 --repeats 1 --quiet

@@ -55,7 +55,7 @@ run_one() {
   mkdir -p "$dir"
   local cmd=("$bin" solve "$scene" --solver latin)
   [[ $ref == 1 ]] || cmd+=(--no-reference)
-  cmd+=(--quiet --set output.vtu=false)
+  cmd+=(--quiet --set output.frames=false)
   local s
   for s in "$@"; do cmd+=(--set "$s"); done
   cmd+=(--set "solver.search_scale=$kappa" --set "solver.relaxation=$omega"

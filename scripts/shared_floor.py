@@ -44,7 +44,7 @@ TOLERANCE = 1e-6
 def timed_solve(binary, scene, sets, solver, out):
     """One solve at TOLERANCE; returns (set-up, iterations, lift, whole) in seconds from its outputs."""
     command = [binary, "solve", scene, "--solver", solver, "--tol", str(TOLERANCE), "--no-reference",
-               "--set", "output.vtu=false", "--out", out]
+               "--set", "output.frames=false", "--out", out]
     for item in sets:
         command += ["--set", item]
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)

@@ -31,7 +31,7 @@ run() {  # run SOLVER OUT [extra arguments]: exit 0 or 2 are results, anything e
   shift 2
   local rc=0
   "$bin" solve "$scene" --solver "$solver" --tol "$tol" --out "$out" --quiet \
-    --set output.vtu=false "${sets[@]}" "$@" || rc=$?
+    --set output.frames=false "${sets[@]}" "$@" || rc=$?
   if [[ $rc -ne 0 && $rc -ne 2 ]]; then
     echo "error: $solver exited with $rc" >&2
     exit 1

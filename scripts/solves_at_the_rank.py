@@ -42,7 +42,7 @@ def main():
     print("|---|---:|---:|---:|---:|---:|---:|---:|")
     for name in args.scenes:
         for divisions in args.divisions:
-            sets = [f"mesh.divisions={divisions}", "output.vtu=false", f'solver.linear="{args.linear}"']
+            sets = [f"mesh.divisions={divisions}", "output.frames=false", f'solver.linear="{args.linear}"']
             result = stcontact.solve(os.path.join(ROOT, SCENES[name]), "fas-apriori", sets=sets, reference=False,
                                      spatial_modes=False)
             summary = result.summary

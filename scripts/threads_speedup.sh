@@ -24,7 +24,7 @@ scene=examples/scenes/hemicylinder.toml
 # wall_s and iterations of one run: "seconds iterations".
 run() {  # solver arc_nodes threads index
   local dir=$out/$1_$2_t$3_$4
-  "$bin" solve "$scene" --solver "$1" --set mesh.arc_nodes="$2" --set output.vtu=false --no-reference --quiet \
+  "$bin" solve "$scene" --solver "$1" --set mesh.arc_nodes="$2" --set output.frames=false --no-reference --quiet \
     --threads "$3" --out "$dir" || [[ $? == 2 ]]
   local wall iterations
   wall=$(grep -o '"wall_s": [0-9.e+-]*' "$dir/summary.json" | head -1 | awk '{print $2}')

@@ -97,7 +97,7 @@ class Probe:
             strategy = self.rng.choice(STRATEGIES)
             keys = self.rng.sample(sorted(DRAWS), self.rng.choice([1, 2, 3]))
             sets = SMALL[scene] + ['%s=%.17g' % (k, DRAWS[k](self.rng)) for k in keys] + ['solver.max_iterations=300',
-                                                                                      'output.vtu=false']
+                                                                                      'output.frames=false']
             out = os.path.join(self.work, 'stop_%d' % i)
             cmd = [self.program, 'solve', os.path.join(SCENES, scene), '--solver', strategy, '--quiet', '--out', out]
             for s in sets:
@@ -123,7 +123,7 @@ class Probe:
     def files(self, runs):
         seed = os.path.join(SCENES, 'hemicylinder.toml')
         base = [self.program, 'solve', seed, '--solver', 'latin', '--quiet', '--set', 'mesh.arc_nodes=21',
-                '--set', 'time.steps=21', '--set', 'output.vtu_stride=10']
+                '--set', 'time.steps=21', '--set', 'output.frame_stride=10', '--set', 'output.format="vtu"']
         kinds = ['hidden', 'link', 'empty_dir', 'output_name_in_subdir', 'csv_of_ones_own', 'deep', 'fifo',
                  'readonly_file', 'nested_run', 'vtu_extra']
         for i in range(runs):

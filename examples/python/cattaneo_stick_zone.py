@@ -40,7 +40,7 @@ FRICTION = 0.5
 def sets(arc_nodes):
     t_press = PRESS / (PRESS + SLIDE)
     return [f"mesh.arc_nodes={arc_nodes}", "mesh.grading=1.05", f"contact.friction={FRICTION}",
-            f"time.steps={PRESS + SLIDE + 1}", "output.vtu=false",
+            f"time.steps={PRESS + SLIDE + 1}", "output.frames=false",
             f"dirichlet[2].times=[0.0, {t_press!r}, 1.0]", f"dirichlet[2].values=[0.0, 0.0, {DRIVE!r}]",
             f"dirichlet[3].times=[0.0, {t_press!r}, 1.0]", f"dirichlet[3].values=[0.0, {-APPROACH!r}, {-APPROACH!r}]"]
 

@@ -9,6 +9,7 @@ The command line's work from Python (docs/python.md):
     result.reactions["normal_force"], result.history["error"], result.summary["termination"]
     warm = stcontact.solve(scene.with_sets("contact.friction=0.2"), start=result)
     stcontact.svd(scene), stcontact.compare(scene, ["latin", "fas-apriori"], repeats=1)
+    run = stcontact.load_run("results/first")           # a run folder: run.pressure, run.frame(k), ...
 
 A scene is a TOML file, a TOML text or a dict with the file's keys; either way the command line's
 reader checks it, and bad input raises InputError (a ValueError) with the command line's message
@@ -26,6 +27,7 @@ from typing import Any, Callable, Sequence, Union
 
 from . import _core
 from ._results import CompareResult, SolveResult, Strategy, SvdResult
+from ._run_files import Run, load_run
 from ._scene_toml import SceneValueError, override_text, scene_toml
 
 __version__ = _core.__version__
@@ -39,7 +41,7 @@ _PathLike = Union[str, "os.PathLike[str]"]
 _SceneLike = Union["Scene", _PathLike, "Mapping[str, Any]"]
 _Sets = Union[str, Sequence[str], "Mapping[str, Any]", None]
 
-__all__ = ["Scene", "load_scene", "check", "solve", "svd", "compare", "available_solvers", "InputError",
+__all__ = ["Scene", "load_scene", "check", "solve", "svd", "compare", "available_solvers", "load_run", "Run", "InputError",
            "IterationRecord", "SolveResult", "SvdResult", "CompareResult", "Strategy", "__version__",
            "blas_kernels"]
 

@@ -26,6 +26,11 @@ class SolveResult:
                                n_C x m    views of the rows above (no copy); tangential: along tau_1
       tangential_forces_2, tangential_displacements_2
                                n_C x m    3D only: along tau_2
+    contact.csv's columns (n_C x m, the writer's own numbers; 3D adds shear_2, slip_2 along tau_2):
+      pressure, shear          the forces over tributary (n_C,: the tributary length, or area in 3D)
+      gap                      g0 + v_n
+      slip                     v_t(t_k) - v_t(t_{k-1}) where the node is in contact, 0 where open
+      state                    0 open, 1 stick, 2 slip
     Node i of the interface is mesh node contact_nodes[i]; with two bodies (contact.master) it is paired
     with mesh node master_nodes[i] (empty for a rigid obstacle) and its rows are the relative
     displacement u_s - u_m and the force on the slave (its opposite acts on the master).
@@ -48,6 +53,37 @@ class SolveResult:
         self.spatial_modes = data["spatial_modes"]
         self.interface_directions = data["interface_directions"]
         self.problem = data["problem"]
+        self.tributary = data["contact"]["tributary"]
+        self.gap = data["contact"]["gap"]
+        self.state = data["contact"]["state"]
+        self._slip = data["contact"]["slip"]
+
+    @property
+    def pressure(self):
+        """lambda_n over the tributary length or area, n_C x m (contact.csv's pressure)."""
+        return self.normal_forces / self.tributary[:, None]
+
+    @property
+    def shear(self):
+        """lambda_t (along tau_1) over the tributary length or area, n_C x m."""
+        return self.tangential_forces / self.tributary[:, None]
+
+    @property
+    def shear_2(self):
+        """3D: lambda_t along tau_2 over the tributary area, n_C x m."""
+        return self.tangential_forces_2 / self.tributary[:, None]
+
+    @property
+    def slip(self):
+        """The slip along tau_1 (0 where open), n_C x m."""
+        return self._slip[0::self.dimension - 1]
+
+    @property
+    def slip_2(self):
+        """3D: the slip along tau_2, n_C x m."""
+        if self.dimension != 3:
+            raise ValueError("the second tangential component exists in 3D scenes only")
+        return self._slip[1::2]
 
     @property
     def normal_forces(self):

@@ -37,4 +37,4 @@ set xlabel "x"
 set ylabel "pressure (MPa)"
 set xrange [-0.4:0.4]
 plot for [k in "60 100 150 200"] run."/incremental/contact.csv" \
-     using (column(1) == k+0 ? column(3) : NaN):7 with linespoints pt 7 ps 0.5 title "t = ".sprintf("%.2f", (k+0)/200.0)
+     using (column(1) == k+0 ? column(4) : NaN):8 with linespoints pt 7 ps 0.5 title "t = ".sprintf("%.2f", (k+0)/200.0)

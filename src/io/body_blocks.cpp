@@ -39,7 +39,7 @@ std::vector<Field> columnsAt(const std::vector<Field>& fields, const std::vector
 
 }  // namespace
 
-std::vector<BodyBlock> bodyBlocks(const BodyMesh& body, const std::vector<int>& part_of, VtuPrecision precision) {
+std::vector<BodyBlock> bodyBlocks(const BodyMesh& body, const std::vector<int>& part_of, FieldPrecision precision) {
   const int parts = part_of.empty() ? 0 : *std::max_element(part_of.begin(), part_of.end()) + 1;
   std::vector<BodyBlock> blocks;
   for (int part = 0; part < parts; ++part)

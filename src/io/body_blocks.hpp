@@ -19,7 +19,7 @@ struct BodyBlock {
 
 /// A block per connected part of the mesh, `part_of` each node's (mesh/connected_parts.hpp,
 /// partOfNodes), numbered as the parts.
-std::vector<BodyBlock> bodyBlocks(const BodyMesh& body, const std::vector<int>& part_of, VtuPrecision precision);
+std::vector<BodyBlock> bodyBlocks(const BodyMesh& body, const std::vector<int>& part_of, FieldPrecision precision);
 
 /// The block's document of a frame: the columns of `points` at its nodes, of `cells` at its elements.
 void writeBlock(std::ostream& out, const BodyBlock& block, const std::vector<PointField>& points,

@@ -10,30 +10,21 @@
 
 #include "stcontact/core/clock.hpp"
 #include "stcontact/core/memory.hpp"
-#include "stcontact/core/overloaded.hpp"
 #include "stcontact/core/threads.hpp"
-#include "stcontact/fem/elasticity.hpp"
-#include "stcontact/fem/elasticity_3d.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/body_blocks.hpp"
 #include "stcontact/io/contact_tables.hpp"
+#include "stcontact/io/frame_fields.hpp"
+#include "stcontact/io/solution_file.hpp"
 #include "stcontact/io/json_writer.hpp"
 #include "stcontact/io/vtu_writer.hpp"
 #include "stcontact/linalg/ranks.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/mesh/connected_parts.hpp"
-#include "stcontact/operators/displacement.hpp"
 #include "stcontact/spacetime/contact_state_table.hpp"
 
 namespace stc {
 namespace {
-
-std::vector<int> frameSteps(int steps, int stride) {
-  std::vector<int> frames;
-  for (int k = 0; k < steps; k += stride) frames.push_back(k);
-  if (frames.back() != steps - 1) frames.push_back(steps - 1);
-  return frames;
-}
 
 // vtu/step_NNNNN.vtu, or vtu/step_NNNNN_body<b>.vtu for body b of several.
 std::string frameName(int k, int body = -1) {
@@ -43,40 +34,7 @@ std::string frameName(int k, int body = -1) {
   return name;
 }
 
-// Nodal contact force (λ_n n + Σ_a λ_{t,a} τ_a; its opposite, times w_j, on the master nodes j of two
-// bodies) and state code (−1: not a contact node, 0 open, 1 stick, 2 slip; a master node shared by
-// several pairs shows the highest).
-void contactFields(const Problem& problem, const SolveResult& result, const ContactStateTable& states, int k,
-                   Eigen::MatrixXd& force, Eigen::MatrixXd& state) {
-  const auto& c = problem.contact;
-  const int d = c.dimension;
-  force = Eigen::MatrixXd::Zero(d, problem.numNodes());
-  state = Eigen::MatrixXd::Constant(1, problem.numNodes(), -1.0);
-  for (int i = 0; i < c.size(); ++i) {
-    const int node = c.nodes[i];
-    force.col(node) = inGlobalFrame(c, i, result.interface.lambda.col(k).segment(c.normalRow(i), d));
-    state(0, node) = static_cast<double>(states.state(i, k));
-    if (!c.isPair()) continue;
-    for (Eigen::Index j = 0; j < c.master_facets.rows() && c.master_facets(j, i) >= 0; ++j) {  // action and reaction
-      const int master = c.master_facets(j, i);
-      const Eigen::VectorXd share = -c.master_weights(j, i) * force.col(node);
-      if (state(0, master) < 0.0) force.col(master) = share;  // its first pair (node to node: its only one)
-      else force.col(master) += share;
-      state(0, master) = std::max(state(0, master), state(0, node));
-    }
-  }
-}
-
-/// The symmetric tensor of `stress` in VTK's order xx, yy, zz, xy, yz, xz (vtu_writer.hpp): row k of
-/// the result is row rows[k] of `stress`, or 0 where rows[k] is −1.
-Eigen::MatrixXd inVtkOrder(const Eigen::Ref<const Eigen::MatrixXd>& stress, const std::array<int, 6>& rows) {
-  Eigen::MatrixXd tensor = Eigen::MatrixXd::Zero(6, stress.cols());
-  for (int k = 0; k < 6; ++k)
-    if (rows[k] >= 0) tensor.row(k) = stress.row(rows[k]);
-  return tensor;
-}
-
-VtuGrid gridOf(const Problem& problem, VtuPrecision precision) {
+VtuGrid gridOf(const Problem& problem, FieldPrecision precision) {
   return std::visit([precision](const auto& mesh) { return VtuGrid(mesh, precision); }, problem.body);
 }
 
@@ -96,56 +54,12 @@ struct FrameLayout {
   }
 };
 
-FrameLayout frameLayout(const Problem& problem, VtuPrecision precision) {
+FrameLayout frameLayout(const Problem& problem, FieldPrecision precision) {
   if (!problem.contact.isPair()) return {gridOf(problem, precision), {}, {}};
   const std::vector<int> part = partOfNodes(problem.body);
   Eigen::MatrixXd codes(1, static_cast<Eigen::Index>(part.size()));
   for (std::size_t i = 0; i < part.size(); ++i) codes(0, static_cast<Eigen::Index>(i)) = part[i];
   return {std::nullopt, bodyBlocks(problem.body, part, precision), std::move(codes)};
-}
-
-// The fields of a frame: displacement, contact force and state (and the body, when two) on the
-// nodes; the stress tensor and von Mises on the elements.
-struct FrameFields {
-  std::vector<PointField> nodal;
-  std::vector<CellField> cells;
-};
-
-FrameFields frameFields(const Problem& problem, const Eigen::VectorXd& u, const Eigen::MatrixXd& force,
-                        const Eigen::MatrixXd& state, const Eigen::MatrixXd& bodies) {
-  const Eigen::MatrixXd displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), problem.dimension, problem.numNodes());
-  std::vector<PointField> nodal{{"displacement", displacement},
-                                {"contact_force", force},
-                                {"contact_state", state, FieldKind::Code}};
-  if (bodies.size() > 0) nodal.push_back({"body", bodies, FieldKind::Code});
-  const auto cellFields = [](const Eigen::MatrixXd& stress, const std::array<int, 6>& vtkRows) {
-    return std::vector<CellField>{{"stress", inVtkOrder(stress, vtkRows), FieldKind::SymmetricTensor},
-                                  {"von_mises", stress.bottomRows(1)}};
-  };
-  // Each element's stresses with its body's material (two bodies of two materials: both computed,
-  // each element's taken).
-  const auto perElement = [&](auto&& stresses) {
-    auto out = stresses(problem.material);
-    if (!problem.master_material) return out;
-    const auto master = stresses(*problem.master_material);
-    for (Eigen::Index e = 0; e < out.cols(); ++e)
-      if (problem.master_elements[static_cast<std::size_t>(e)]) out.col(e) = master.col(e);
-    return out;
-  };
-  const std::vector<CellField> cells = std::visit(
-      Overloaded{[&](const TriMesh& m) {
-                   // rows σ_xx, σ_yy, σ_xy, σ_zz, von Mises (σ_zz = ν(σ_xx + σ_yy) in plane strain,
-                   // 0 in plane stress); σ_yz = σ_xz = 0
-                   return cellFields(perElement([&](const MaterialSpec& mat) { return elementStresses(m, mat, problem.plane, u); }),
-                                     {0, 1, 3, 2, -1, -1});
-                 },
-                 [&](const TetMesh& m) {
-                   // rows σ_xx, σ_yy, σ_zz, σ_yz, σ_xz, σ_xy, von Mises
-                   return cellFields(perElement([&](const MaterialSpec& mat) { return elementStresses(m, mat, u); }),
-                                     {0, 1, 2, 5, 3, 4});
-                 }},
-      problem.body);
-  return {std::move(nodal), cells};
 }
 
 }  // namespace
@@ -240,28 +154,17 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
 }
 
 long writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
-                         int stride, VtuPrecision precision, PreparedOperators& operators) {
+                         int stride, FieldPrecision precision, PreparedOperators& operators) {
   ensureWritableDirectory(dir / "vtu");
-  const SeparatedDisplacement& held = result.displacement;
-  if (held.held && (held.modes.rows() != problem.numFreeDofs() || held.time.cols() != problem.numSteps()))
-    throw std::logic_error("writeSolutionSeries: the held displacement is another problem's");
-  const std::shared_ptr<const SpdSolver> factor = held.held ? nullptr : operators.stiffnessFree(problem);
+  const int threads = threadCount();
+  FrameDisplacement displacement(problem, result, operators, threads);
   const ContactStateTable states(problem.contact, result.admissible());
   const FrameLayout layout = frameLayout(problem, precision);
-  const std::vector<int> steps = frameSteps(problem.numSteps(), stride);
-  // The frames are independent: each thread solves with its own workspace and writes its own files.
-  const int threads = threadCount();
-  std::vector<SpdSolver::Workspace> workspaces(static_cast<std::size_t>(threads));
+  const std::vector<int> steps = frameSteps(problem.numSteps(), frameStride(problem, stride));
+  // The frames are independent: each thread forms (or solves) its own and writes its own files.
   parallelFor(static_cast<int>(steps.size()), threads, [&](int item, int thread) {
     const int k = steps[static_cast<std::size_t>(item)];
-    const Eigen::VectorXd u = problem.absoluteDisplacement(
-        held.held ? held.at(k)
-                  : freeDisplacementAt(problem, *factor, result.interface.lambda.col(k), k,
-                                       workspaces[static_cast<std::size_t>(thread)]),
-        k);
-    Eigen::MatrixXd force, state;
-    contactFields(problem, result, states, k, force, state);
-    const FrameFields fields = frameFields(problem, u, force, state, layout.bodies);
+    const FrameFields fields = frameFields(problem, result, states, k, displacement.at(k, thread), layout.bodies);
     for (int b = 0; b < layout.parts(); ++b) {
       AtomicFile file(dir / layout.dataSet(problem, k, b).file);
       if (layout.grid) layout.grid->write(file.stream(), fields.nodal, fields.cells);
@@ -273,31 +176,69 @@ long writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
   for (int k : steps)
     for (int b = 0; b < layout.parts(); ++b) frames.push_back(layout.dataSet(problem, k, b));
   writeFileAtomically(dir / "solution.pvd", pvdDocument(frames));
-  return held.held ? 0 : static_cast<long>(steps.size());
+  return displacement.solves() ? static_cast<long>(steps.size()) : 0;
+}
+
+long writeSolutionFile(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
+                       const RunTables& tables, const RunInfo& info, const OutputSpec& output, bool frames,
+                       PreparedOperators& operators) {
+  const int threads = threadCount();
+  std::optional<FrameDisplacement> displacement;
+  FramePlan plan;
+  if (frames) {
+    displacement.emplace(problem, result, operators, threads);
+    plan = {frameSteps(problem.numSteps(), frameStride(problem, output.frame_stride)), &*displacement,
+            output.field_precision};
+  }
+  // HDF5 writes to a path, not a stream: a temporary beside the file, renamed over it once closed.
+  const std::filesystem::path file = dir / "solution.h5", temporary = dir / ".solution.h5.tmp";
+  try {
+    writeSolutionH5(temporary, problem, result, tables, {info.version, info.parameters_json}, plan);
+    std::filesystem::rename(temporary, file);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+  if (frames) writeFileAtomically(dir / "solution.xdmf", xdmfDocument("solution.h5", problem, plan.steps, output.field_precision));
+  return frames && displacement->solves() ? static_cast<long>(plan.steps.size()) : 0;
 }
 
 void writeRunOutputs(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
                      const RunInfo& info, const OutputSpec& output, PreparedOperators& operators) {
   const auto start = std::chrono::steady_clock::now();
   ensureWritableDirectory(dir);
+  RunTables tables{interfaceTable(problem, result), {}};
+  tables.reactions = reactionTable(problem, result, tables.interface);
   {
     AtomicFile file(dir / "reactions.csv");
-    writeReactionsCsv(file.stream(), problem, result);
+    writeReactionsCsv(file.stream(), problem, tables.reactions);
     file.commit();
   }
-  {
+  if (writesContactCsv(problem, output)) {
     AtomicFile file(dir / "contact.csv");
-    writeContactCsv(file.stream(), problem, result);
+    writeContactCsv(file.stream(), problem, result, tables.interface);
     file.commit();
   }
   writeFileAtomically(dir / "history.csv", historyCsv(result.summary));
-  // The VTU writer refuses non-finite values: a run that broke down numerically gets no VTU series.
+  // A run that broke down numerically gets no frames (the VTU writer refuses non-finite values).
+  const bool frames = output.frames && result.interface.lambda.allFinite() && result.interface.v.allFinite();
   WriterCounts writer;
-  if (output.vtu && result.interface.lambda.allFinite() && result.interface.v.allFinite())
-    writer.sparse_solves = writeSolutionSeries(dir, problem, result, output.vtu_stride, output.vtu_precision, operators);
+  writer.sparse_solves = writeSolutionFile(dir, problem, result, tables, info, output, frames && output.format == OutputFormat::Hdf5, operators);
+  if (frames && output.format == OutputFormat::Vtu)
+    writer.sparse_solves += writeSolutionSeries(dir, problem, result, output.frame_stride, output.field_precision, operators);
   writer.seconds = secondsSince(start);
   writeFileAtomically(dir / "summary.json",  // last: marks a complete run
                       summaryJson(problem, result.summary, info, operators.preparations(), writer));
+}
+
+bool writesContactCsv(const Problem& problem, const OutputSpec& output) {
+  switch (output.contact_csv) {
+    case ContactCsv::Always: return true;
+    case ContactCsv::Never: return false;
+    case ContactCsv::Auto: break;
+  }
+  return contactCsvBytes(problem) <= kSmallContactCsvBytes;
 }
 
 }  // namespace stc

@@ -1,13 +1,14 @@
 #pragma once
 // Writes every output file of a solved run into one folder (docs/interface.md "Output files"), each
-// atomically (temporary file, then rename): reactions.csv, contact.csv, history.csv,
-// summary.json, and solution.pvd + vtu/ when asked.
+// atomically (temporary file, then rename): reactions.csv, history.csv, solution.h5 (+ solution.xdmf
+// with its frames), contact.csv when small or asked, solution.pvd + vtu/ when asked, summary.json last.
 #include <chrono>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "stcontact/io/solution_file.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/scene/output_spec.hpp"
@@ -50,10 +51,19 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
                         const std::vector<Preparation>& preparations, const WriterCounts& writer = {});
 
 /// solution.pvd + vtu/step_XXXXX.vtu: displacement, contact force and state (nodes), stress tensor
-/// and von Mises stress (elements) at every `stride`-th instant and the last one. The displacement
-/// is result.displacement's where held (no factor, no solve), else solved from λ. Returns the
-/// sparse solves made (one per frame, or none).
+/// and von Mises stress (elements) at every `stride`-th instant (0: io/frame_fields.hpp's
+/// autoFrameStride) and the last one. The displacement is result.displacement's where held (no
+/// factor, no solve), else solved from λ. Returns the sparse solves made (one per frame, or none).
 long writeSolutionSeries(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
-                         int stride, VtuPrecision precision, PreparedOperators& operators);
+                         int stride, FieldPrecision precision, PreparedOperators& operators);
+
+/// solution.h5 (io/solution_file.hpp), with its frames and solution.xdmf when `frames`; returns the
+/// sparse solves its frames made (none when the strategy holds its displacement).
+long writeSolutionFile(const std::filesystem::path& dir, const Problem& problem, const SolveResult& result,
+                       const RunTables& tables, const RunInfo& info, const OutputSpec& output, bool frames,
+                       PreparedOperators& operators);
+
+/// Whether the run writes contact.csv (output.contact_csv; "auto": when it stays small).
+bool writesContactCsv(const Problem& problem, const OutputSpec& output);
 
 }  // namespace stc

@@ -43,10 +43,10 @@ const std::vector<std::string>& componentNames(FieldKind kind, Eigen::Index rows
 
 /// Whether `value` can be stored in a field of this kind: finite, an Int8 integer for a code, within
 /// float's range for Float32.
-bool storable(double value, FieldKind kind, VtuPrecision precision) {
+bool storable(double value, FieldKind kind, FieldPrecision precision) {
   if (!std::isfinite(value)) return false;
   if (kind == FieldKind::Code) return value == std::round(value) && value >= -128 && value <= 127;
-  return precision == VtuPrecision::Float64 || std::abs(value) <= std::numeric_limits<float>::max();
+  return precision == FieldPrecision::Float64 || std::abs(value) <= std::numeric_limits<float>::max();
 }
 
 /// What is wrong with a value that is not storable.
@@ -54,12 +54,12 @@ std::string valueProblem(double value, FieldKind kind) {
   if (!std::isfinite(value)) return "non-finite value";
   if (kind == FieldKind::Code) return "value " + shortNumber(value) + " is not an integer in [-128, 127] (Int8)";
   return "value " + shortNumber(value) +
-         " is beyond Float32's range (|x| <= 3.4e38); write Float64 (output.vtu_precision = \"float64\")";
+         " is beyond Float32's range (|x| <= 3.4e38); write Float64 (output.field_precision = \"float64\")";
 }
 
 template <typename Field>
 void checkFieldsOf(const std::vector<Field>& fields, const char* where, Eigen::Index columns, const char* columnName,
-                   VtuPrecision precision) {
+                   FieldPrecision precision) {
   std::set<std::string> names;
   for (const Field& field : fields) {
     const auto& values = field.values;
@@ -94,13 +94,13 @@ std::string rawValues(Eigen::Index count, ValueAt value) {
 /// `values` (rows = components, cols = tuples) as a floating-point array of `components` per tuple;
 /// rows beyond those of `values` are written as 0.
 EncodedArray realArray(const std::string& name, const Eigen::Ref<const Eigen::MatrixXd>& values, int components,
-                       const std::vector<std::string>& names, VtuPrecision precision) {
+                       const std::vector<std::string>& names, FieldPrecision precision) {
   const auto valueAt = [&](Eigen::Index k) {
     const Eigen::Index i = k % components, j = k / components;
     return i < values.rows() ? values(i, j) : 0.0;
   };
   const Eigen::Index count = components * values.cols();
-  if (precision == VtuPrecision::Float32)
+  if (precision == FieldPrecision::Float32)
     return {"Float32", name, components, names, vtkZlibBlocks(rawValues<float>(count, valueAt))};
   return {"Float64", name, components, names, vtkZlibBlocks(rawValues<double>(count, valueAt))};
 }
@@ -115,11 +115,11 @@ EncodedArray idArray(const char* name, Eigen::Index count, long long largest, Va
 
 }  // namespace
 
-void checkFields(const std::vector<PointField>& fields, Eigen::Index columns, VtuPrecision precision) {
+void checkFields(const std::vector<PointField>& fields, Eigen::Index columns, FieldPrecision precision) {
   checkFieldsOf(fields, "point", columns, "nodes", precision);
 }
 
-void checkFields(const std::vector<CellField>& fields, Eigen::Index columns, VtuPrecision precision) {
+void checkFields(const std::vector<CellField>& fields, Eigen::Index columns, FieldPrecision precision) {
   checkFieldsOf(fields, "cell", columns, "elements", precision);
 }
 
@@ -129,7 +129,7 @@ int storedComponents(FieldKind kind, Eigen::Index rows) {
 }
 
 EncodedArray encodedField(const std::string& name, const Eigen::MatrixXd& values, FieldKind kind,
-                          VtuPrecision precision) {
+                          FieldPrecision precision) {
   if (kind == FieldKind::Code)
     return {"Int8", name, 1, {},
             vtkZlibBlocks(rawValues<std::int8_t>(values.cols(), [&](Eigen::Index j) { return values(0, j); }))};
@@ -137,7 +137,7 @@ EncodedArray encodedField(const std::string& name, const Eigen::MatrixXd& values
                    precision);
 }
 
-EncodedArray pointArray(const Eigen::Ref<const Eigen::MatrixXd>& nodes, VtuPrecision precision) {
+EncodedArray pointArray(const Eigen::Ref<const Eigen::MatrixXd>& nodes, FieldPrecision precision) {
   for (Eigen::Index j = 0; j < nodes.cols(); ++j)
     for (Eigen::Index i = 0; i < nodes.rows(); ++i)
       if (!storable(nodes(i, j), FieldKind::Real, precision))

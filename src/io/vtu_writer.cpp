@@ -72,20 +72,20 @@ void openData(TextBuffer& xml, const char* tag, const std::vector<Field>& fields
 }
 
 template <typename Field>
-void encodeFields(const std::vector<Field>& fields, VtuPrecision precision, std::vector<EncodedArray>& arrays) {
+void encodeFields(const std::vector<Field>& fields, FieldPrecision precision, std::vector<EncodedArray>& arrays) {
   for (const Field& field : fields) arrays.push_back(encodedField(field.name, field.values, field.kind, precision));
 }
 
 }  // namespace
 
-VtuGrid::VtuGrid(const TriMesh& mesh, VtuPrecision precision)
+VtuGrid::VtuGrid(const TriMesh& mesh, FieldPrecision precision)
     : points_(mesh.nodes.cols()),
       cells_(mesh.triangles.cols()),
       precision_(precision),
       pointArray_(pointArray(mesh.nodes, precision)),
       cellArrays_(cellArrays(mesh.triangles, points_, kVtkTriangle)) {}
 
-VtuGrid::VtuGrid(const TetMesh& mesh, VtuPrecision precision)
+VtuGrid::VtuGrid(const TetMesh& mesh, FieldPrecision precision)
     : points_(mesh.nodes.cols()),
       cells_(mesh.tets.cols()),
       precision_(precision),
@@ -134,24 +134,24 @@ void VtuGrid::write(std::ostream& out, const std::vector<PointField>& pointField
 }
 
 void writeVtu(std::ostream& out, const TriMesh& mesh, const std::vector<PointField>& pointFields,
-              const std::vector<CellField>& cellFields, VtuPrecision precision) {
+              const std::vector<CellField>& cellFields, FieldPrecision precision) {
   VtuGrid(mesh, precision).write(out, pointFields, cellFields);
 }
 
 void writeVtu(std::ostream& out, const TetMesh& mesh, const std::vector<PointField>& pointFields,
-              const std::vector<CellField>& cellFields, VtuPrecision precision) {
+              const std::vector<CellField>& cellFields, FieldPrecision precision) {
   VtuGrid(mesh, precision).write(out, pointFields, cellFields);
 }
 
 std::string vtuDocument(const TriMesh& mesh, const std::vector<PointField>& pointFields,
-                        const std::vector<CellField>& cellFields, VtuPrecision precision) {
+                        const std::vector<CellField>& cellFields, FieldPrecision precision) {
   std::ostringstream out;
   writeVtu(out, mesh, pointFields, cellFields, precision);
   return out.str();
 }
 
 std::string vtuDocument(const TetMesh& mesh, const std::vector<PointField>& pointFields,
-                        const std::vector<CellField>& cellFields, VtuPrecision precision) {
+                        const std::vector<CellField>& cellFields, FieldPrecision precision) {
   std::ostringstream out;
   writeVtu(out, mesh, pointFields, cellFields, precision);
   return out.str();

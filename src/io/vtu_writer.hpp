@@ -40,28 +40,28 @@ namespace stc {
 /// then the fields. Everything is checked before the first byte is written (checkFields,
 /// pointArray): std::invalid_argument names the field and the rule broken.
 void writeVtu(std::ostream& out, const TriMesh& mesh, const std::vector<PointField>& pointFields,
-              const std::vector<CellField>& cellFields, VtuPrecision precision = VtuPrecision::Float32);
+              const std::vector<CellField>& cellFields, FieldPrecision precision = FieldPrecision::Float32);
 void writeVtu(std::ostream& out, const TetMesh& mesh, const std::vector<PointField>& pointFields,
-              const std::vector<CellField>& cellFields, VtuPrecision precision = VtuPrecision::Float32);
+              const std::vector<CellField>& cellFields, FieldPrecision precision = FieldPrecision::Float32);
 /// The same document as a string.
 std::string vtuDocument(const TriMesh& mesh, const std::vector<PointField>& pointFields,
-                        const std::vector<CellField>& cellFields, VtuPrecision precision = VtuPrecision::Float32);
+                        const std::vector<CellField>& cellFields, FieldPrecision precision = FieldPrecision::Float32);
 std::string vtuDocument(const TetMesh& mesh, const std::vector<PointField>& pointFields,
-                        const std::vector<CellField>& cellFields, VtuPrecision precision = VtuPrecision::Float32);
+                        const std::vector<CellField>& cellFields, FieldPrecision precision = FieldPrecision::Float32);
 
 /// The documents of a series of frames on one mesh: the points and cells, the same in every frame,
 /// are converted and compressed once, at construction; write() adds the fields (the checks and the
 /// output are those of writeVtu).
 class VtuGrid {
  public:
-  explicit VtuGrid(const TriMesh& mesh, VtuPrecision precision = VtuPrecision::Float32);
-  explicit VtuGrid(const TetMesh& mesh, VtuPrecision precision = VtuPrecision::Float32);
+  explicit VtuGrid(const TriMesh& mesh, FieldPrecision precision = FieldPrecision::Float32);
+  explicit VtuGrid(const TetMesh& mesh, FieldPrecision precision = FieldPrecision::Float32);
   void write(std::ostream& out, const std::vector<PointField>& pointFields,
              const std::vector<CellField>& cellFields) const;
 
  private:
   Eigen::Index points_, cells_;
-  VtuPrecision precision_;
+  FieldPrecision precision_;
   EncodedArray pointArray_;               ///< <Points>
   std::vector<EncodedArray> cellArrays_;  ///< <Cells>: connectivity, offsets, types
 };

@@ -47,35 +47,42 @@ stc_cli_test(solve_default_is_fas_apriori 0 "fas-apriori: converged" solve ${see
 # ... run.log keeps its progress and its final report, and summary.json its times: the run's reference,
 # solve and writing are parts of the whole run.
 add_test(NAME cli.solve_writes_every_output
-         COMMAND bash -c "for f in reactions.csv contact.csv history.csv summary.json solution.pvd vtu/step_00020.vtu run.log; do test -s ${out}/latin3/$f || { echo missing $f; exit 1; }; done; grep -q '\"termination\": \"max_iterations\"' ${out}/latin3/summary.json && grep -q '^progress: latin: iteration 3 ' ${out}/latin3/run.log && grep -q '^  the whole run .* s (reference .* s, writing .* s)$' ${out}/latin3/run.log && python3 -c \"import json, sys; s = json.load(open(sys.argv[1])); sys.exit(0 if s['run_s'] >= s['reference_s'] + s['wall_s'] + s['write_s'] > 0 else 1)\" ${out}/latin3/summary.json")
+         COMMAND bash -c "for f in reactions.csv contact.csv history.csv summary.json solution.h5 solution.xdmf run.log; do test -s ${out}/latin3/$f || { echo missing $f; exit 1; }; done; grep -q 'solution.h5:/frames/step_00020/stress' ${out}/latin3/solution.xdmf && grep -q '\"termination\": \"max_iterations\"' ${out}/latin3/summary.json && grep -q '^progress: latin: iteration 3 ' ${out}/latin3/run.log && grep -q '^  the whole run .* s (reference .* s, writing .* s)$' ${out}/latin3/run.log && python3 -c \"import json, sys; s = json.load(open(sys.argv[1])); sys.exit(0 if s['run_s'] >= s['reference_s'] + s['wall_s'] + s['write_s'] > 0 else 1)\" ${out}/latin3/summary.json")
 set_tests_properties(cli.solve_writes_every_output PROPERTIES DEPENDS cli.solve_not_converged_exits_2 LABELS cli)
 
 # A moving obstacle: check says so.
 stc_cli_test(check_moving_pad 0 "obstacle motion +a rigid translation up to \\|d\\| = 0\\.0632" check ${scenes}/moving_pad.toml)
-# Two bodies at small settings: converged, one block per body in every frame (parts 0 and 1 of the
-# collection, each carrying its body code), one grid without it for one body.
+# Two bodies at small settings: converged; as VTU, one block per body in every frame (parts 0 and 1
+# of the collection, each carrying its body code), one grid without it for one body; in
+# solution.xdmf, the body of each element as a field.
 stc_cli_test(solve_pair_small 0 "fas-apriori: converged" solve ${scenes}/two_cylinders.toml ${small} --out ${out}/pair)
+stc_cli_test(solve_pair_small_vtu 0 "fas-apriori: converged" solve ${scenes}/two_cylinders.toml ${small}
+             --set "output.format=\"vtu\"" --out ${out}/pair_vtu)
+stc_cli_test(solve_default_vtu 0 "fas-apriori: converged" solve ${seed} ${small} --set "output.format=\"vtu\"" --out ${out}/default_vtu)
 add_test(NAME cli.solve_pair_writes_the_body_of_each_node
-         COMMAND bash -c "grep -aq 'Name=\"body\"' ${out}/pair/vtu/step_00020_body1.vtu && grep -q 'part=\"1\" file=\"vtu/step_00020_body1.vtu\" name=\"body 1\"' ${out}/pair/solution.pvd && ! test -e ${out}/pair/vtu/step_00020.vtu && ! grep -aq 'Name=\"body\"' ${out}/default/vtu/step_00020.vtu")
+         COMMAND bash -c "grep -aq 'Name=\"body\"' ${out}/pair_vtu/vtu/step_00020_body1.vtu && grep -q 'part=\"1\" file=\"vtu/step_00020_body1.vtu\" name=\"body 1\"' ${out}/pair_vtu/solution.pvd && ! test -e ${out}/pair_vtu/vtu/step_00020.vtu && ! grep -aq 'Name=\"body\"' ${out}/default_vtu/vtu/step_00020.vtu && grep -q 'Attribute Name=\"body\"' ${out}/pair/solution.xdmf && ! grep -q 'Name=\"body\"' ${out}/default/solution.xdmf")
 set_tests_properties(cli.solve_pair_writes_the_body_of_each_node PROPERTIES
-                     DEPENDS "cli.solve_pair_small;cli.solve_default_is_fas_apriori" LABELS cli)
+                     DEPENDS "cli.solve_pair_small;cli.solve_pair_small_vtu;cli.solve_default_vtu;cli.solve_default_is_fas_apriori" LABELS cli)
 
 # The 3D seed scene (examples/scenes/hemisphere.toml) at small settings: sizes, a solve with its
 # 3D tables and tetrahedron VTU, the svd tables.
 set(hemisphere ${scenes}/hemisphere.toml)
 set(small3d --set mesh.divisions=3 --set time.steps=11)
+# check says what solve will write: the frames the automatic stride keeps, contact.csv or not.
+stc_cli_test(check_says_what_solve_writes 0 "outputs +solution.h5 \\+ solution.xdmf, 12 frames \\(one in 182 instants, output.frame_stride auto\\), no contact.csv"
+             check ${scenes}/hemisphere_fretting.toml)
 stc_cli_test(check_hemisphere_model 0 "model +3D, P1 tetrahedra" check ${hemisphere})
 stc_cli_test(check_hemisphere_interface 0 "contact nodes +737 on boundary 'contact' \\(2211 interface unknowns" check ${hemisphere})
 stc_cli_test(solve_hemisphere_small 0 "fas-apriori: converged" solve ${hemisphere} ${small3d} --out ${out}/hemisphere)
 add_test(NAME cli.solve_hemisphere_writes_3d_tables
-         COMMAND bash -c "head -1 ${out}/hemisphere/reactions.csv | grep -qx 'step,t,normal_force,tangential_force,tangential_force_2,contact_xmin,contact_xmax,n_contact,n_slip,force_x,force_y,force_z' && head -1 ${out}/hemisphere/contact.csv | grep -qx 'step,node,x,y,z,normal_force,tangential_force,tangential_force_2,pressure,shear,shear_2,gap,slip,slip_2,state' && grep -aq 'Tensors=\"stress\"' ${out}/hemisphere/vtu/step_00010.vtu && grep -aq 'NumberOfComponents=\"6\" ComponentName0=\"XX\"' ${out}/hemisphere/vtu/step_00010.vtu")
+         COMMAND bash -c "head -1 ${out}/hemisphere/reactions.csv | grep -qx 'step,t,normal_force,tangential_force,tangential_force_2,contact_xmin,contact_xmax,n_contact,n_slip,force_x,force_y,force_z' && head -1 ${out}/hemisphere/contact.csv | grep -qx 'step,t,node,x,y,z,normal_force,tangential_force,tangential_force_2,pressure,shear,shear_2,gap,slip,slip_2,state' && grep -q 'TopologyType=\"Tetrahedron\"' ${out}/hemisphere/solution.xdmf && grep -q 'Attribute Name=\"stress\" AttributeType=\"Tensor6\" Center=\"Cell\"' ${out}/hemisphere/solution.xdmf")
 set_tests_properties(cli.solve_hemisphere_writes_3d_tables PROPERTIES DEPENDS cli.solve_hemisphere_small LABELS cli)
 # The 3D fretting history (examples/scenes/hemisphere_fretting.toml) at divisions 6 and 401 instants,
 # its ten cycles kept: fas-apriori converged with its true error against the incremental solution
 # within tau (1.3e-7 measured), and the cycles do what the scene says: a partial slip (some nodes of
 # the contact disc slip, not all) and a gross slip (every contact node slips at some instant).
 stc_cli_test(solve_hemisphere_fretting_small 0 "fas-apriori: converged" solve ${scenes}/hemisphere_fretting.toml
-             --set mesh.divisions=6 --set time.steps=401 --set output.vtu=false --out ${out}/hemisphere_fretting)
+             --set mesh.divisions=6 --set time.steps=401 --set output.frames=false --out ${out}/hemisphere_fretting)
 add_test(NAME cli.hemisphere_fretting_within_tolerance_partial_then_gross_slip
          COMMAND python3 -c "import csv, json, sys; d = sys.argv[1]; s = json.load(open(d + '/summary.json')); rows = [(int(r['n_contact']), int(r['n_slip'])) for r in csv.DictReader(open(d + '/reactions.csv'))]; ok = s['termination'] == 'converged' and s['error'] <= 1e-6 and any(0 < k < n for n, k in rows) and any(n > 0 and k == n for n, k in rows); print(s['error'], max(k / n for n, k in rows if n)); sys.exit(0 if ok else 1)" ${out}/hemisphere_fretting)
 set_tests_properties(cli.hemisphere_fretting_within_tolerance_partial_then_gross_slip PROPERTIES
@@ -88,6 +95,11 @@ if(Python3_EXECUTABLE)
   add_test(NAME cli.vtu_frames_read_back
            COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tests/io/vtu_read_back.py ${cli} ${scenes} ${out}/vtu_read_back)
   set_tests_properties(cli.vtu_frames_read_back PROPERTIES LABELS cli SKIP_RETURN_CODE 77 TIMEOUT 600)
+  # solution.xdmf through meshio's XDMF time-series reader (every frame, stress against Hooke's law)
+  # and solution.h5's interface histories through h5py, equal to contact.csv (tests/io/solution_read_back.py).
+  add_test(NAME cli.solution_read_back
+           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tests/io/solution_read_back.py ${cli} ${scenes} ${out}/solution_read_back)
+  set_tests_properties(cli.solution_read_back PROPERTIES LABELS cli SKIP_RETURN_CODE 77 TIMEOUT 600)
 endif()
 stc_cli_test(svd_hemisphere_small 0 "99.9" svd ${hemisphere} ${small3d} --out ${out}/svd3d)
 # The scaling study on the 3D scene: its mesh series varies mesh.divisions (the folder and the CSV
@@ -237,8 +249,8 @@ set_tests_properties(cli.interrupted_runs_leave_whole_folders PROPERTIES LABELS 
 # A re-run into a folder replaces it as a whole: no frame of a longer series stays behind; a folder
 # that holds other files is refused, not replaced.
 add_test(NAME cli.rerun_replaces_the_folder
-         COMMAND bash -c "rm -rf ${refused}/rerun && ${cli} solve ${seed} ${small_text} --solver latin --out ${refused}/rerun --quiet \
-           && ${cli} solve ${seed} ${small_text} --solver latin --out ${refused}/rerun --quiet --set output.vtu_stride=10 \
+         COMMAND bash -c "rm -rf ${refused}/rerun && ${cli} solve ${seed} ${small_text} --solver latin --out ${refused}/rerun --quiet --set output.format=\\\"vtu\\\" \
+           && ${cli} solve ${seed} ${small_text} --solver latin --out ${refused}/rerun --quiet --set output.frame_stride=10 --set output.format=\\\"vtu\\\" \
            && [ \"$(ls ${refused}/rerun/vtu | wc -l)\" = 3 ] && touch ${refused}/rerun/notes.txt && rm ${refused}/rerun/.stcontact-run \
            ${refused}/rerun/summary.json && bash ${expect} 1 \"holds files that are not a run's\" ${cli} solve ${seed} ${small_text} \
            --solver latin --out ${refused}/rerun && [ -f ${refused}/rerun/notes.txt ]")

@@ -68,7 +68,7 @@ for entry in "${scenes[@]}"; do
   for backend in mumps cg-gamg; do
     for ranks in 1 2; do
       out=$work/${name}_${backend}_$ranks
-      mpi "$ranks" "$program" solve "$scene" "${sets[@]}" --set "solver.linear=\"$backend\"" --set output.vtu=false \
+      mpi "$ranks" "$program" solve "$scene" "${sets[@]}" --set "solver.linear=\"$backend\"" --set output.frames=false \
         --out "$out" --quiet > "$out.log" 2>&1 || fail "$name $backend on $ranks ranks: exit $? ($(tail -1 "$out.log"))"
     done
     compare "$work/${name}_${backend}_1" "$work/${name}_${backend}_2" "$backend"
@@ -76,7 +76,7 @@ for entry in "${scenes[@]}"; do
 done
 
 seed=$source/examples/scenes/hemicylinder.toml
-mpi 2 "$program" solve "$seed" --set mesh.arc_nodes=21 --set time.steps=11 --set output.vtu=false --out "$work/auto" \
+mpi 2 "$program" solve "$seed" --set mesh.arc_nodes=21 --set time.steps=11 --set output.frames=false --out "$work/auto" \
   --quiet > "$work/auto.log" 2>&1 || fail "auto on 2 ranks: exit $? ($(tail -1 "$work/auto.log"))"
 grep -q '"backend": "mumps"' "$work/auto/summary.json" 2>/dev/null || fail "auto on 2 ranks did not take mumps"
 err=$(mpi 2 "$program" solve "$seed" --set 'solver.linear="cholmod"' --out "$work/cholmod" 2>&1); status=$?

@@ -49,7 +49,7 @@ class SolvePreparations : public ::testing::Test {
   }
   std::vector<Prepared> solve(const std::string& options) {
     dir_ = test::scratchFolder("preparations");
-    EXPECT_EQ(test::runOnSmallSeed("solve", options + " --set output.vtu_stride=10", dir_), 0);
+    EXPECT_EQ(test::runOnSmallSeed("solve", options + " --set output.frame_stride=10", dir_), 0);
     return preparations(dir_ / "report" / "summary.json");
   }
   fs::path dir_;

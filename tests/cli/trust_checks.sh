@@ -14,7 +14,7 @@
 set -uo pipefail
 program=$(realpath "$1") source=$(realpath "$2") work=$3
 seed=$source/examples/scenes/hemicylinder.toml
-small=(--set mesh.arc_nodes=21 --set time.steps=21 --set output.vtu_stride=10 --solver latin --quiet)
+small=(--set mesh.arc_nodes=21 --set time.steps=21 --set output.frame_stride=10 --solver latin --quiet)
 rm -rf "$work" && mkdir -p "$work"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
@@ -32,13 +32,17 @@ nothing_beside() {  # nothing_beside DIR NAME: only NAME (if present) in DIR
 
 # --- A run folder replaces only what a run wrote.
 out=$work/runs/r1
+vtu=(--set 'output.format="vtu"')  # frames in a folder of the run's own, vtu/
 "$program" solve "$seed" "${small[@]}" --out "$out" || fail "first run"
+grep -q '^solution.h5$' "$out/.stcontact-run" && grep -q '^solution.xdmf$' "$out/.stcontact-run" ||
+  fail "the marker does not list the run's solution file"
+"$program" solve "$seed" "${small[@]}" "${vtu[@]}" --out "$out" || fail "a re-run into a run's own folder"
 grep -q '^vtu/step_00000.vtu$' "$out/.stcontact-run" || fail "the marker does not list the run's files"
-"$program" solve "$seed" "${small[@]}" --out "$out" || fail "a re-run into a run's own folder"
+! test -e "$out/solution.xdmf" || fail "the previous run's solution.xdmf stayed"
 for own in notes.txt vtu/mine.vtu mine/data.csv; do
   mkdir -p "$(dirname "$out/$own")" && echo keep > "$out/$own"
   named=$own; [ "$own" = mine/data.csv ] && named=mine  # a folder of one's own is named itself
-  refuses "own file $own" "holds '$named', which its run did not write" "$program" solve "$seed" "${small[@]}" --out "$out"
+  refuses "own file $own" "holds '$named', which its run did not write" "$program" solve "$seed" "${small[@]}" "${vtu[@]}" --out "$out"
   [ -f "$out/$own" ] || fail "own file $own was deleted"
   rm -rf "$out/$own"; [ "$own" = mine/data.csv ] && rmdir "$out/mine"
 done

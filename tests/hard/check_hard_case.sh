@@ -29,7 +29,7 @@ for solver in latin latin-pgd fas-aposteriori fas-apriori incremental; do
   ran+=" $solver" before=$failures
   if [ $status -ne 0 ] && [ $status -ne 2 ]; then fail "exit status $status"; continue; fi
   missing=""
-  for f in summary.json history.csv reactions.csv contact.csv; do [ -s "$dir/$f" ] || missing+=" $f"; done
+  for f in summary.json history.csv reactions.csv solution.h5; do [ -s "$dir/$f" ] || missing+=" $f"; done
   [ -z "$missing" ] || { fail "missing outputs:$missing"; continue; }
   termination=$(value termination) error=$(value error) indicator=$(value indicator)
   if [ $status -eq 0 ] && [ "$termination" != converged ]; then fail "exit 0 but termination '$termination'"; fi

@@ -19,7 +19,7 @@ namespace {
 TEST(BodyBlocks, TwoBodiesMakeTwoBlocksThatPartitionTheMesh) {
   const Problem pair = buildProblem(test::mirroredPair(test::seedScene(21, 3)));
   const TriMesh& mesh = std::get<TriMesh>(pair.body);
-  const std::vector<BodyBlock> blocks = bodyBlocks(pair.body, partOfNodes(pair.body), VtuPrecision::Float64);
+  const std::vector<BodyBlock> blocks = bodyBlocks(pair.body, partOfNodes(pair.body), FieldPrecision::Float64);
   ASSERT_EQ(blocks.size(), 2u);
   std::vector<int> nodes = blocks[0].nodes, elements = blocks[0].elements;
   nodes.insert(nodes.end(), blocks[1].nodes.begin(), blocks[1].nodes.end());
@@ -39,7 +39,7 @@ TEST(BodyBlocks, TwoBodiesMakeTwoBlocksThatPartitionTheMesh) {
 // A field equal to each node's (and element's) id comes out of the block as the block's own ids.
 TEST(BodyBlocks, ABlocksDocumentCarriesTheFieldsAtItsNodesAndElements) {
   const Problem pair = buildProblem(test::mirroredPair(test::seedScene(21, 3)));
-  const std::vector<BodyBlock> blocks = bodyBlocks(pair.body, partOfNodes(pair.body), VtuPrecision::Float64);
+  const std::vector<BodyBlock> blocks = bodyBlocks(pair.body, partOfNodes(pair.body), FieldPrecision::Float64);
   const int n = pair.numNodes(), e = numElements(pair.body);
   const Eigen::MatrixXd node_ids = Eigen::RowVectorXd::LinSpaced(n, 0, n - 1);
   const Eigen::MatrixXd element_ids = Eigen::RowVectorXd::LinSpaced(e, 0, e - 1);

@@ -27,12 +27,18 @@ TEST(RunWriter, FilesAreTheSameOnOneAndTwoThreads) {
   const stc::SolveResult result = stc::solveIncremental(problem);
   const ScratchDir scratch;
   stc::OutputSpec output;
-  output.vtu_stride = 20;  // frames 0, 20, 40, 60, 80
+  output.frame_stride = 20;  // frames 0, 20, 40, 60, 80
   for (int threads : {1, 2}) {
     const stc::ThreadCountScope scope(threads);
     stc::PreparedOperators operators;
+    output.format = stc::OutputFormat::Vtu;
     stc::writeRunOutputs(scratch.path() / std::to_string(threads), problem, result, {}, output, operators);
+    output.format = stc::OutputFormat::Hdf5;
+    stc::writeRunOutputs(scratch.path() / ("h5_" + std::to_string(threads)), problem, result, {}, output, operators);
   }
+  // solution.h5: its chunks compressed on every thread, the same bytes (no time stamps)
+  for (const char* name : {"solution.h5", "solution.xdmf"})
+    EXPECT_EQ(stc::iotest::readFile(scratch.path() / "h5_1" / name), stc::iotest::readFile(scratch.path() / "h5_2" / name)) << name;
   const fs::path one = scratch.path() / "1", two = scratch.path() / "2";
   int frames = 0;
   for (const auto& entry : fs::directory_iterator(one / "vtu")) {
@@ -54,8 +60,9 @@ TEST(RunWriter, FramesHoldTheStressTensorInVtkOrderAndTheStatesAsInt8) {
   const stc::SolveResult result = stc::solveIncremental(problem);
   const ScratchDir scratch;
   stc::OutputSpec output;
-  output.vtu_stride = 80;
-  output.vtu_precision = stc::VtuPrecision::Float64;
+  output.frame_stride = 80;
+  output.format = stc::OutputFormat::Vtu;
+  output.field_precision = stc::FieldPrecision::Float64;
   stc::PreparedOperators operators;
   stc::writeRunOutputs(scratch.path(), problem, result, {}, output, operators);
   const auto file = stc::iotest::readVtu(stc::iotest::readFile(scratch.path() / "vtu" / "step_00080.vtu"));
@@ -143,7 +150,7 @@ TEST(RunWriter, FramesUseTheRunsFactorAndTheSummaryListsIt) {
   const stc::SolveResult result = stc::solveIncremental(problem, {}, {.operators = &operators});
   const ScratchDir scratch;
   stc::OutputSpec output;
-  output.vtu_stride = 5;
+  output.frame_stride = 5;
   stc::writeRunOutputs(scratch.path(), problem, result, {}, output, operators);
   const std::vector<stc::Preparation> prepared = operators.preparations();
   ASSERT_EQ(prepared.size(), 1u);

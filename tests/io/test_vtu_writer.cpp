@@ -75,7 +75,7 @@ std::vector<double> asFloat32(const std::vector<double>& values) {
 const Eigen::RowVector4d kStates(-1, 0, 1, 2);
 
 /// Displacement (2 components), a nodal scalar and code, an element tensor and scalar.
-std::string sampleDocument(VtuPrecision precision = VtuPrecision::Float32) {
+std::string sampleDocument(FieldPrecision precision = FieldPrecision::Float32) {
   Eigen::MatrixXd displacement(2, 4);
   displacement << 0.1, 0.2, 0.3, 0.4,  //
       -1, -2, -3, -4;
@@ -230,7 +230,7 @@ TEST(VtuDocument, WritesCodesAsInt8AndScalarsWithoutComponentNames) {
 
 TEST(VtuDocument, Float64KeepsEveryBitAndFloat32RoundsToNearest) {
   const Eigen::RowVector4d values(1.0 / 3.0, -2e-9 / 3.0, 12345.678901234, 1e300);
-  const VtuFile exact = readVtu(vtuDocument(unitSquare(), {{"f", values}}, {}, VtuPrecision::Float64));
+  const VtuFile exact = readVtu(vtuDocument(unitSquare(), {{"f", values}}, {}, FieldPrecision::Float64));
   EXPECT_EQ(exact.array("PointData", "f").attributes.at("type"), "Float64");
   EXPECT_EQ(exact.array("PointData", "f").values, (std::vector<double>(values.data(), values.data() + 4)));
   EXPECT_EQ(exact.array("Points", "Points").attributes.at("type"), "Float64");
@@ -247,7 +247,7 @@ TEST(VtuDocument, RefusesValuesBeyondFloat32NamingTheFieldAndTheWayOut) {
   EXPECT_NE(message.find("Float32"), std::string::npos) << message;
   EXPECT_NE(message.find("column 2"), std::string::npos) << message;
   EXPECT_NE(message.find("float64"), std::string::npos) << message;
-  EXPECT_NO_THROW(vtuDocument(unitSquare(), {{"pressure", values}}, {}, VtuPrecision::Float64));
+  EXPECT_NO_THROW(vtuDocument(unitSquare(), {{"pressure", values}}, {}, FieldPrecision::Float64));
 }
 
 TEST(VtuDocument, RefusesCodesThatAreNotInt8Integers) {
@@ -305,7 +305,7 @@ TEST(VtuDocument, RejectsEmptyAndRepeatedNames) {
 }
 
 TEST(VtuDocument, RejectsNonFiniteValuesBeforeWritingAnything) {
-  for (VtuPrecision precision : {VtuPrecision::Float32, VtuPrecision::Float64}) {
+  for (FieldPrecision precision : {FieldPrecision::Float32, FieldPrecision::Float64}) {
     Eigen::MatrixXd values = Eigen::MatrixXd::Zero(1, 4);
     values(0, 2) = std::numeric_limits<double>::quiet_NaN();
     std::ostringstream out;
@@ -402,7 +402,7 @@ TEST(VtuTetDocument, RejectsAFieldWithTheWrongNumberOfColumnsNamingIt) {
 // is the document writeVtu gives for its fields, and the checks still refuse a field of the wrong size.
 TEST(VtuGrid, FramesAreTheDocumentsOfWriteVtu) {
   const TriMesh mesh = unitSquare();
-  for (VtuPrecision precision : {VtuPrecision::Float32, VtuPrecision::Float64}) {
+  for (FieldPrecision precision : {FieldPrecision::Float32, FieldPrecision::Float64}) {
     const VtuGrid grid(mesh, precision);
     for (double scale : {1.0, -2.5e-7}) {
       const Eigen::MatrixXd displacement = scale * Eigen::MatrixXd::Random(2, 4);
@@ -427,7 +427,7 @@ TEST(VtuGrid, RefusesPointsBeyondFloat32) {
   mesh.nodes(0, 1) = 1e39;
   const std::string message = invalidArgumentOf([&] { VtuGrid grid(mesh); });
   EXPECT_NE(message.find("VTU points"), std::string::npos) << message;
-  EXPECT_NO_THROW(VtuGrid(mesh, VtuPrecision::Float64));
+  EXPECT_NO_THROW(VtuGrid(mesh, FieldPrecision::Float64));
 }
 
 }  // namespace stc

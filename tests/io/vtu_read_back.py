@@ -32,7 +32,8 @@ STATE_CODES = {-1, 0, 1, 2}  # not a contact node, open, stick, slip
 
 
 def solve(cli, scene, out, *sets):
-    args = [cli, "solve", str(scene), "--solver", "incremental", "--quiet", "--out", str(out)]
+    args = [cli, "solve", str(scene), "--solver", "incremental", "--quiet", "--out", str(out),
+            "--set", 'output.format="vtu"']
     for s in sets:
         args += ["--set", s]
     subprocess.run(args, check=True)
@@ -211,7 +212,7 @@ def check_with_vtk(path, mesh, dimension, label):
 
 def check_case(cli, scene, work, name, dimension, sets):
     exact_dir, rounded_dir = work / (name + "_float64"), work / (name + "_float32")
-    parameters = solve(cli, scene, exact_dir, *sets, "output.vtu_precision=float64")
+    parameters = solve(cli, scene, exact_dir, *sets, "output.field_precision=float64")
     solve(cli, scene, rounded_dir, *sets)
     exact_files, rounded_files = frames(exact_dir), frames(rounded_dir)
     assert [f.name for f in exact_files] == [f.name for f in rounded_files]
@@ -231,10 +232,10 @@ def check_case(cli, scene, work, name, dimension, sets):
 def main():
     cli, scenes, work = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[3])
     work.mkdir(parents=True, exist_ok=True)
-    small_2d = ["mesh.arc_nodes=21", "time.steps=21", "output.vtu_stride=10"]
+    small_2d = ["mesh.arc_nodes=21", "time.steps=21", "output.frame_stride=10"]
     check_case(cli, scenes / "hemicylinder.toml", work, "plane_strain", 2, small_2d)
     check_case(cli, scenes / "hemicylinder.toml", work, "plane_stress", 2, small_2d + ["model.plane=stress"])
-    small_3d = ["mesh.divisions=4", "time.steps=11", "output.vtu_stride=5"]
+    small_3d = ["mesh.divisions=4", "time.steps=11", "output.frame_stride=5"]
     check_case(cli, scenes / "hemisphere.toml", work, "hemisphere", 3, small_3d)
     print("every frame read back")
 

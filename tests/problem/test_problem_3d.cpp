@@ -26,7 +26,7 @@ stc::Scene cubeScene() {
   scene.dirichlet.push_back({"top", stc::Component::X, {{0.0}, {0.0}}});
   scene.dirichlet.push_back({"top", stc::Component::Y, {{0.0}, {0.0}}});
   scene.dirichlet.push_back({"top", stc::Component::Z, {{0.0, 1.0}, {0.0, -0.02}}});
-  scene.output.vtu = false;
+  scene.output.frames = false;
   return scene;
 }
 

@@ -18,7 +18,7 @@ SOURCE_DIR = Path(os.environ.get("STC_SOURCE_DIR", Path(__file__).resolve().pare
 SEED_SCENE = SOURCE_DIR / "examples" / "scenes" / "hemicylinder.toml"
 BAD_DIR = SOURCE_DIR / "tests" / "cli" / "bad"
 # A small version of the seed scene for the tests that do not compare with the seed itself.
-SMALL = ["mesh.arc_nodes=31", "time.steps=41", "output.vtu=false"]
+SMALL = ["mesh.arc_nodes=31", "time.steps=41", "output.frames=false"]
 
 
 @pytest.fixture(scope="session")

@@ -11,7 +11,7 @@ import pytest
 import stcontact
 from conftest import SEED_SCENE, SMALL, printed, read_csv, read_json, run_cli
 
-NO_VTU = ["output.vtu=false"]
+NO_VTU = ["output.frames=false"]
 # Keys of summary.json that measure the run rather than its result (at any depth: each
 # preparation's "seconds").
 TIMING_KEYS = {"wall_s", "seconds", "reference_s", "write_s", "run_s", "peak_memory_bytes", "peak_memory_bytes_per_rank"}

@@ -15,7 +15,7 @@ from conftest import SEED_SCENE
 
 # A solve that runs for many seconds unless stopped: plain LATIN on a long time grid (about 20 ms
 # an iteration) to an unreachable tolerance (it would stop as stagnated hundreds of iterations on).
-LONG_GRID = ["time.steps=3201", "output.vtu=false"]  # ~40 ms per LATIN iteration: room for ticks between callbacks
+LONG_GRID = ["time.steps=3201", "output.frames=false"]  # ~40 ms per LATIN iteration: room for ticks between callbacks
 ENDLESS = dict(solver="latin", tol=1e-30, max_iterations=1_000_000, reference=False)
 
 

@@ -7,7 +7,7 @@ import stcontact
 from conftest import SOURCE_DIR
 
 SCENES = SOURCE_DIR / "examples" / "scenes"
-SMALL = ["mesh.arc_nodes=21", "time.steps=21", "output.vtu=false"]
+SMALL = ["mesh.arc_nodes=21", "time.steps=21", "output.frames=false"]
 
 
 def test_two_bodies_give_each_contact_node_its_master():
@@ -44,7 +44,7 @@ def test_one_body_has_no_master_nodes():
 
 
 def test_a_moving_obstacles_displacements_are_in_the_scenes_frame():
-    scene = stcontact.load_scene(SCENES / "moving_pad.toml", sets=["mesh.arc_nodes=21", "time.steps=81", "output.vtu=false"])
+    scene = stcontact.load_scene(SCENES / "moving_pad.toml", sets=["mesh.arc_nodes=21", "time.steps=81", "output.frames=false"])
     result = stcontact.solve(scene, solver="incremental")
     assert result.converged
     u = result.displacement_fields()

@@ -8,7 +8,7 @@ import stcontact
 from conftest import SEED_SCENE, SMALL, SOURCE_DIR
 
 HEMISPHERE = SOURCE_DIR / "examples" / "scenes" / "hemisphere.toml"
-SMALL_3D = ["mesh.divisions=3", "time.steps=11", "output.vtu=false"]
+SMALL_3D = ["mesh.divisions=3", "time.steps=11", "output.frames=false"]
 
 
 def test_check_gives_the_dimension_and_the_interface_rows():

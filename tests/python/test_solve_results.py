@@ -180,8 +180,38 @@ def test_out_writes_the_programs_files(small_scene, tmp_path):
     result = stcontact.solve(small_scene, "incremental", out=tmp_path)
     # the program's files, and the marker that lets the next run replace the folder (docs/interface.md)
     assert {p.name for p in tmp_path.iterdir()} == {"reactions.csv", "contact.csv", "history.csv", "summary.json",
-                                                    ".stcontact-run"}
+                                                    "solution.h5", ".stcontact-run"}
     assert result.converged
+
+
+def test_load_run_reads_back_what_the_solve_holds(small_scene, tmp_path):
+    # The run folder read back (solution.h5 through h5py): the interface histories are the solve's own
+    # arrays, pressure and shear are them over the tributary lengths, the reactions the solve's, and
+    # every frame has the fields ParaView shows.
+    scene = small_scene.with_sets({"output.frames": True, "output.frame_stride": 20})
+    result = stcontact.solve(scene, "fas-apriori", out=tmp_path, reference=False)
+    with stcontact.load_run(tmp_path) as run:
+        d, m = result.dimension, len(run.time)
+        n_c = run.contact_nodes.shape[0]
+        assert run.force.shape == (m, n_c, d) and m == 41
+        for a in range(d):
+            np.testing.assert_array_equal(run.force[:, :, a].T, result.interface_forces[a::d, :])
+        np.testing.assert_array_equal(run.pressure, run.force[:, :, 0] / run.tributary)
+        initial_gap = run.gap.T - result.interface_displacements[0::d, :]  # gap = g0 + v_n: g0 at every instant
+        np.testing.assert_allclose(initial_gap, np.repeat(initial_gap[:, :1], m, axis=1), rtol=0, atol=1e-14)
+        assert not run.slip[run.state == 0].any() and (run.state == 2).any()
+        np.testing.assert_array_equal(run.reactions["normal_force"], result.reactions["normal_force"])
+        assert list(run.frame_steps) == [0, 20, 40] and run.summary["solver"] == "fas-apriori"
+        fields = run.frame(20)
+        assert fields["displacement"].shape == (len(run.points), 3) and fields["stress"].shape == (len(run.cells), 6)
+        with pytest.raises(KeyError, match="no frame"):
+            run.frame(5)
+        # the solve's result exposes the same contact columns, node by node (n_C x m)
+        np.testing.assert_array_equal(result.pressure, run.pressure.T)
+        np.testing.assert_array_equal(result.shear, run.shear[:, :, 0].T)
+        np.testing.assert_array_equal(result.gap, run.gap.T)
+        np.testing.assert_array_equal(result.slip, run.slip[:, :, 0].T)
+        np.testing.assert_array_equal(result.state, run.state.T)
 
 
 def test_every_strategy_solves(small_scene):

@@ -71,8 +71,8 @@ TEST(SceneOverrides, ArrayEntryIsAddressedByIndex) {
 }
 
 TEST(SceneOverrides, MissingOptionalSectionIsCreated) {
-  const Scene s = seedWith({"output.vtu=false", "time.end=2"});
-  EXPECT_FALSE(s.output.vtu);
+  const Scene s = seedWith({"output.frames=false", "time.end=2"});
+  EXPECT_FALSE(s.output.frames);
   EXPECT_EQ(s.time.end, 2.0);
 }
 

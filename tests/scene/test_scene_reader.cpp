@@ -119,9 +119,11 @@ TEST(SceneReader, ExampleSeedSceneHasEveryValueOfInterfaceMd) {
   EXPECT_EQ(s.solver.latin.stop.max_iterations, 2000);
   EXPECT_EQ(s.search_direction.scale, 4.0);
   EXPECT_EQ(s.solver.latin.relaxation, 1.0);
-  EXPECT_TRUE(s.output.vtu);
-  EXPECT_EQ(s.output.vtu_stride, 1);
-  EXPECT_EQ(s.output.vtu_precision, VtuPrecision::Float32);
+  EXPECT_TRUE(s.output.frames);
+  EXPECT_EQ(s.output.format, OutputFormat::Hdf5);
+  EXPECT_EQ(s.output.frame_stride, 0);
+  EXPECT_EQ(s.output.field_precision, FieldPrecision::Float32);
+  EXPECT_EQ(s.output.contact_csv, ContactCsv::Auto);
 }
 
 TEST(SceneReader, ExampleSeedSceneEqualsTheSeedOfInterfaceMd) {
@@ -140,9 +142,11 @@ max_iterations = 50
 search_scale = 2
 relaxation = 0.5
 [output]
-vtu = false
-vtu_stride = 5
-vtu_precision = "float64"
+frames = false
+format = "vtu"
+frame_stride = 5
+field_precision = "float64"
+contact_csv = "always"
 [[load]]
 boundary = "top"
 component = "y"
@@ -163,9 +167,11 @@ TEST(SceneReader, OptionalKeysOverrideTheirDefaults) {
   EXPECT_EQ(s.solver.fas_apriori.fas.stop.max_iterations, 50);
   EXPECT_EQ(s.search_direction.scale, 2.0);
   EXPECT_EQ(s.solver.latin.relaxation, 0.5);
-  EXPECT_FALSE(s.output.vtu);
-  EXPECT_EQ(s.output.vtu_stride, 5);
-  EXPECT_EQ(s.output.vtu_precision, VtuPrecision::Float64);
+  EXPECT_FALSE(s.output.frames);
+  EXPECT_EQ(s.output.format, OutputFormat::Vtu);
+  EXPECT_EQ(s.output.frame_stride, 5);
+  EXPECT_EQ(s.output.field_precision, FieldPrecision::Float64);
+  EXPECT_EQ(s.output.contact_csv, ContactCsv::Always);
   ASSERT_EQ(s.loads.size(), 1u);
   EXPECT_EQ(s.loads[0].boundary, "top");
   EXPECT_EQ(s.loads[0].component, Component::Y);
@@ -180,7 +186,7 @@ TEST(SceneReader, OmittedOptionalSectionsTakeDefaults) {
   EXPECT_EQ(s.plane, PlaneModel::Strain);
   EXPECT_EQ(s.solver.strategy, stc::Strategy::FasApriori);
   EXPECT_EQ(s.solver.tolerance(), 1e-6);
-  EXPECT_TRUE(s.output.vtu);
+  EXPECT_TRUE(s.output.frames);
 }
 
 TEST(SceneReader, IntegerIsAcceptedWhereAFloatIsExpected) {
@@ -353,9 +359,14 @@ TEST(SceneReaderErrors, OtherRangesAreChecked) {
   EXPECT_THAT(errorOf(kSeed + "max_iterations = 0\n"), HasSubstr("'solver.max_iterations' = 0"));
   EXPECT_THAT(errorOf(seedWith("tolerance = 1e-6", "tolerance = 0")),
               HasSubstr("'solver.tolerance' = 0"));
-  EXPECT_THAT(errorOf(kSeed + "[output]\nvtu_stride = 0\n"), HasSubstr("'output.vtu_stride' = 0"));
-  EXPECT_THAT(errorOf(kSeed + "[output]\nvtu_precision = \"float16\"\n"),
-              HasSubstr("'output.vtu_precision' = \"float16\" is not one of \"float32\", \"float64\""));
+  EXPECT_THAT(errorOf(kSeed + "[output]\nframe_stride = -1\n"), HasSubstr("'output.frame_stride' = -1"));
+  EXPECT_THAT(errorOf(kSeed + "[output]\nvtu = false\n"),
+              HasSubstr("unknown key 'output.vtu' (allowed in [output]: frames, format, frame_stride, field_precision, "
+                        "contact_csv); renamed 'output.frames' in version 0.4"));
+  EXPECT_THAT(errorOf(kSeed + "[output]\nformat = \"exodus\"\n"),
+              HasSubstr("'output.format' = \"exodus\" is not one of \"hdf5\", \"vtu\""));
+  EXPECT_THAT(errorOf(kSeed + "[output]\nfield_precision = \"float16\"\n"),
+              HasSubstr("'output.field_precision' = \"float16\" is not one of \"float32\", \"float64\""));
   EXPECT_THAT(errorOf(seedWith("friction = 0.15", "friction = 0.15\nlength_scale = -1")),
               HasSubstr("'contact.length_scale' = -1"));
 }
@@ -371,7 +382,7 @@ TEST(SceneReader, EveryOutputKeyOfTheCodeIsDocumentedAndNoOther) {
   OutputSpec spec;
   OutputSpec::fields(spec, [&](const char* key, const auto&, const auto&) { code.insert(key); });
   EXPECT_EQ(documented, code);
-  EXPECT_EQ(code, (std::set<std::string>{"vtu", "vtu_stride", "vtu_precision"}));
+  EXPECT_EQ(code, (std::set<std::string>{"frames", "format", "frame_stride", "field_precision", "contact_csv"}));
 }
 
 TEST(SceneReader, FasKeysAreRead) {

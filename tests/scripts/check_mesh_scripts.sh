@@ -26,6 +26,6 @@ check on_sphere_surface.toml obstacle.file "$work/sphere_cap.msh"
 check block.toml mesh.file "$work/block.msh"
 # docs/meshing.md's own mesh, solved: every part of a scene of one's own works with it.
 "$program" solve "$scenes/block.toml" --set "mesh.file=\"$work/block.msh\"" --set time.steps=21 \
-  --set output.vtu=false --no-reference --quiet --out "$work/block_run"
+  --set output.frames=false --no-reference --quiet --out "$work/block_run"
 grep -q '"termination": "converged"' "$work/block_run/summary.json" || { echo "FAIL: block.toml did not converge"; exit 1; }
 echo "every mesh script made a mesh the program reads"

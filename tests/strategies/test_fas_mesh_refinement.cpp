@@ -3,7 +3,7 @@
 // to keep it short (about 3 s in Release). Relaxations to the first true error at or below 1e-6
 // (deterministic, and independent of where the error estimate stops the solve), measured with
 //   stcontact solve examples/scenes/hemicylinder.toml --solver S --set mesh.arc_nodes=N
-//     --set time.steps=51 --tol 1e-8 --set output.vtu=false   (first row of history.csv with error <= 1e-6)
+//     --set time.steps=51 --tol 1e-8 --set output.frames=false   (first row of history.csv with error <= 1e-6)
 //   arc_nodes         51   101   201
 //   latin             85    97   180
 //   fas-apriori        6     8    14   (302c384; 12 at 201 with --set solver.zone_search_growth=0)

@@ -36,12 +36,12 @@ TEST(RunWriter, FramesOfASpaceTimeStrategyComeFromItsDisplacementWithoutASolve) 
     ASSERT_TRUE(result.displacement.held);
     const ScratchDir scratch;
     stc::OutputSpec output;
-    output.vtu_stride = 5;
+    output.frame_stride = 5;
     stc::writeRunOutputs(scratch.path(), problem, result, {}, output, operators);
     const std::string json = stc::iotest::readFile(scratch.path() / "summary.json");
     EXPECT_NE(json.find("\"writer_sparse_solves\": 0,"), std::string::npos) << json;
     for (const stc::Preparation& p : operators.preparations()) EXPECT_NE(p.name, "K_ff") << strategy;
-    EXPECT_TRUE(fs::exists(scratch.path() / "vtu")) << strategy;
+    EXPECT_TRUE(fs::exists(scratch.path() / "solution.xdmf")) << strategy;
     // Against u(λ) solved from the forces written.
     const stc::CholmodFactor K_ff(problem.stiffness_free, "K_ff");
     const Eigen::MatrixXd solved = stc::freeDisplacements(problem, K_ff, result.interface.lambda);

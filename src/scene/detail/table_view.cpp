@@ -1,8 +1,10 @@
 #include "stcontact/scene/detail/table_view.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace stc::detail {
 
@@ -73,6 +75,23 @@ TableView::TableView(const toml::table& table, std::string path, const ErrorRepo
   rejectUnknownKeys(keys);
 }
 
+namespace {
+
+// Keys renamed since an earlier version, named in the refusal (docs/changelog.md, 0.4.0).
+constexpr std::array<std::pair<std::string_view, std::string_view>, 3> kRenamedKeys = {{
+    {"output.vtu", "output.frames"},
+    {"output.vtu_stride", "output.frame_stride"},
+    {"output.vtu_precision", "output.field_precision"},
+}};
+
+std::string renamedTo(std::string_view path) {
+  for (const auto& [old_name, new_name] : kRenamedKeys)
+    if (path == old_name) return "; renamed '" + std::string(new_name) + "' in version 0.4";
+  return "";
+}
+
+}  // namespace
+
 void TableView::rejectUnknownKeys(const std::vector<std::string_view>& keys) const {
   for (const auto& [key, node] : *table_) {
     if (std::find(keys.begin(), keys.end(), key.str()) != keys.end()) continue;
@@ -82,7 +101,7 @@ void TableView::rejectUnknownKeys(const std::vector<std::string_view>& keys) con
     }
     const std::string where = path_.empty() ? "at the top level" : "in [" + path_ + "]";
     const std::string path = keyPath(key.str());
-    errors_->fail(path, "unknown key '" + path + "' (allowed " + where + ": " + allowed + ")");
+    errors_->fail(path, "unknown key '" + path + "' (allowed " + where + ": " + allowed + ")" + renamedTo(path));
   }
 }
 
