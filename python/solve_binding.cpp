@@ -153,6 +153,10 @@ py::dict contactArrays(const Problem& problem, const SolveResult& result) {
       for (int a = 0; a < t; ++a) slip(t * i + a, k) = table.slip[at * static_cast<std::size_t>(t) + static_cast<std::size_t>(a)];
     }
   py::dict contact;
+  const std::vector<long long> tags = nodeTags(problem.body);
+  std::vector<long long> contact_tags;
+  for (int node : problem.contact.nodes) contact_tags.push_back(tags[static_cast<std::size_t>(node)]);
+  contact["node_tags"] = movedToNumpy(std::move(contact_tags));
   contact["tributary"] = movedToNumpy(Eigen::VectorXd(problem.contact.tributary));
   contact["gap"] = movedToNumpy(std::move(gap));
   contact["slip"] = movedToNumpy(std::move(slip));

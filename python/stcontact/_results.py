@@ -31,7 +31,8 @@ class SolveResult:
       gap                      g0 + v_n
       slip                     v_t(t_k) - v_t(t_{k-1}) where the node is in contact, 0 where open
       state                    0 open, 1 stick, 2 slip
-    Node i of the interface is mesh node contact_nodes[i]; with two bodies (contact.master) it is paired
+    Node i of the interface is mesh node contact_nodes[i] (a position, from 0), which the mesh file and
+    contact.csv call contact_node_tags[i] (Gmsh's node tag; from 1 for a generated mesh); with two bodies (contact.master) it is paired
     with mesh node master_nodes[i] (empty for a rigid obstacle) and its rows are the relative
     displacement u_s - u_m and the force on the slave (its opposite acts on the master).
     A priori strategies (fas-apriori, latin-pgd; no columns for the others):
@@ -53,6 +54,7 @@ class SolveResult:
         self.spatial_modes = data["spatial_modes"]
         self.interface_directions = data["interface_directions"]
         self.problem = data["problem"]
+        self.contact_node_tags = data["contact"]["node_tags"]
         self.tributary = data["contact"]["tributary"]
         self.gap = data["contact"]["gap"]
         self.state = data["contact"]["state"]

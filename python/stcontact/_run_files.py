@@ -12,8 +12,9 @@ STATES = ("open", "stick", "slip")  # the codes of `state`: 0, 1, 2
 class Run:
     """A run folder read back. Arrays per instant and contact node are (m, n_C[, components]):
 
-    time (m,); points (n, 3), cells (n_e, d + 1) 0-based, node_body, cell_body; contact_nodes (n_C,)
-    the mesh nodes of the interface, tributary (n_C,); force (m, n_C, d): normal, then tangential
+    time (m,); points (n, 3), cells (n_e, d + 1) 0-based, node_body, cell_body, node_tags (the mesh
+    file's node numbers, Gmsh's tags; from 1 for a generated mesh); contact_nodes (n_C,) the rows of
+    points of the interface's nodes, contact_node_tags their tags, tributary (n_C,); force (m, n_C, d): normal, then tangential
     along tau_1 (and tau_2); pressure (m, n_C) and shear (m, n_C, d - 1): force over tributary;
     gap (m, n_C); slip (m, n_C, d - 1), 0 where open; state (m, n_C): 0 open, 1 stick, 2 slip.
     reactions and history: dicts of columns (reactions.csv's and history.csv's); summary: summary.json.
@@ -38,6 +39,7 @@ class Run:
         self.points, self.cells = f["mesh/points"][()], f["mesh/cells"][()]
         self.node_body, self.cell_body = f["mesh/node_body"][()], f["mesh/cell_body"][()]
         self.contact_nodes, self.tributary = f["contact/nodes"][()], f["contact/tributary"][()]
+        self.node_tags, self.contact_node_tags = f["mesh/node_tags"][()], f["contact/node_tags"][()]
         self.force, self.gap = f["interface/force"][()], f["interface/gap"][()]
         self.slip, self.state = f["interface/slip"][()], f["interface/state"][()]
         self.pressure = self.force[:, :, 0] / self.tributary

@@ -129,6 +129,7 @@ void writeContactCsv(std::ostream& out, const Problem& problem, const SolveResul
   const auto& lambda = result.interface.lambda;
   const int d = c.dimension;
   const Eigen::MatrixXd x = problem.nodePositions();
+  const std::vector<long long> tags = nodeTags(problem.body);  // what the user knows each node by
   // Columns for d = 2; in 3D the position gains z and each tangential quantity its τ_2 component.
   const bool three_d = d == 3;
   out << "step,t,node,x,y," << (three_d ? "z," : "") << "normal_force,tangential_force,"
@@ -143,7 +144,7 @@ void writeContactCsv(std::ostream& out, const Problem& problem, const SolveResul
       const int n = c.normalRow(i), node = c.nodes[i];
       row.integer(k);
       field(problem.times[k]);
-      row.put(',').integer(node);
+      row.put(',').integer(tags[static_cast<std::size_t>(node)]);
       for (int a = 0; a < d; ++a) field(x(a, node));
       for (int a = 0; a < d; ++a) field(lambda(n + a, k));
       for (int a = 0; a < d; ++a) field(lambda(n + a, k) / c.tributary[i]);  // pressure, shear(s)

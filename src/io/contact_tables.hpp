@@ -46,7 +46,7 @@ void writeReactionsCsv(std::ostream& out, const Problem& problem, const Reaction
 void writeReactionsCsv(std::ostream& out, const Problem& problem, const SolveResult& result);
 
 /// step,t,node,x,y,normal_force,tangential_force,pressure,shear,gap,slip,state — node is the mesh
-/// node id, (x, y) its initial position, the rest InterfaceTable's (pressure/shear the nodal forces
+/// file's node tag (nodeTags: from 1 for a generated mesh), (x, y) its initial position, the rest InterfaceTable's (pressure/shear the nodal forces
 /// over the tributary length, slip 0 where open), state open|stick|slip. A 3D scene writes
 /// step,t,node,x,y,z,normal_force,tangential_force,tangential_force_2,pressure,shear,shear_2,gap,slip,slip_2,state
 /// (the tangential components along τ_1 and τ_2 of ContactInterface, pressure and shears per

@@ -74,6 +74,9 @@ void writeMesh(const h5::Group& root, const Problem& problem) {
           cell_body[static_cast<std::size_t>(e)] = node_body[static_cast<std::size_t>(cells(0, e))];
       },
       problem.body);
+  const std::vector<long long> tags = nodeTags(problem.body);
+  const std::vector<std::int64_t> node_tags(tags.begin(), tags.end());
+  mesh.write("node_tags", node_tags, h5::chunkedByRows({u64(node_tags.size())}, sizeof(std::int64_t)));
   mesh.write("node_body", node_body, h5::chunkedByRows({u64(node_body.size())}, sizeof(int)));
   mesh.write("cell_body", cell_body, h5::chunkedByRows({u64(cell_body.size())}, sizeof(int)));
 }
@@ -82,6 +85,10 @@ void writeContact(const h5::Group& root, const Problem& problem) {
   const auto& c = problem.contact;
   const h5::Group contact = root.group("contact");
   contact.write("nodes", c.nodes);
+  const std::vector<long long> tags = nodeTags(problem.body);
+  std::vector<std::int64_t> contact_tags;
+  for (int node : c.nodes) contact_tags.push_back(tags[static_cast<std::size_t>(node)]);
+  contact.write("node_tags", contact_tags);
   contact.write("tributary", c.tributary.data(), {u64(c.size())});
   contact.write("initial_gap", c.initial_gap.data(), {u64(c.size())});
   contact.write("normals", c.normals.data(), {u64(c.normals.cols()), u64(c.normals.rows())});

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "stcontact/mesh/tet_mesh.hpp"
 #include "stcontact/mesh/tri_mesh.hpp"
@@ -19,6 +20,19 @@ inline int dimensionOf(const BodyMesh& body) { return std::holds_alternative<Tet
 
 inline int numNodes(const BodyMesh& body) {
   return std::visit([](const auto& mesh) { return mesh.numNodes(); }, body);
+}
+
+/// The number a user knows each node by: the mesh file's tag (Gmsh), or its position from 1 for a
+/// mesh made here.
+inline std::vector<long long> nodeTags(const BodyMesh& body) {
+  return std::visit(
+      [](const auto& mesh) {
+        if (!mesh.node_tags.empty()) return mesh.node_tags;
+        std::vector<long long> tags(static_cast<std::size_t>(mesh.numNodes()));
+        for (std::size_t i = 0; i < tags.size(); ++i) tags[i] = static_cast<long long>(i) + 1;
+        return tags;
+      },
+      body);
 }
 
 inline int numElements(const BodyMesh& body) {

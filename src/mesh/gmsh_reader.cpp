@@ -400,8 +400,12 @@ void buildNodesAndTriangles(const GmshData& data, std::vector<int>& index, TriMe
   int used = 0;
   index = detail::usedNodeIndex(data.coords.size(), data.triangles, used);
   mesh.nodes.resize(2, used);
+  mesh.node_tags.resize(static_cast<std::size_t>(used));
   for (std::size_t i = 0; i < index.size(); ++i)
-    if (index[i] >= 0) mesh.nodes.col(index[i]) = data.coords[i].head<2>();
+    if (index[i] >= 0) {
+      mesh.nodes.col(index[i]) = data.coords[i].head<2>();
+      mesh.node_tags[static_cast<std::size_t>(index[i])] = data.node_tags[i];
+    }
   mesh.triangles.resize(3, static_cast<Eigen::Index>(data.triangles.size()));
   for (std::size_t e = 0; e < data.triangles.size(); ++e)
     for (int a = 0; a < 3; ++a) mesh.triangles(a, e) = index[data.triangles[e][a]];

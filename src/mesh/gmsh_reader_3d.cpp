@@ -24,8 +24,12 @@ void buildNodesAndTets(const GmshData& data, std::vector<int>& index, TetMesh& m
   int used = 0;
   index = detail::usedNodeIndex(data.coords.size(), data.tets, used);
   mesh.nodes.resize(3, used);
+  mesh.node_tags.resize(static_cast<std::size_t>(used));
   for (std::size_t i = 0; i < index.size(); ++i)
-    if (index[i] >= 0) mesh.nodes.col(index[i]) = data.coords[i];
+    if (index[i] >= 0) {
+      mesh.nodes.col(index[i]) = data.coords[i];
+      mesh.node_tags[static_cast<std::size_t>(index[i])] = data.node_tags[i];
+    }
   mesh.tets.resize(4, static_cast<Eigen::Index>(data.tets.size()));
   for (std::size_t e = 0; e < data.tets.size(); ++e)
     for (int a = 0; a < 4; ++a) mesh.tets(a, static_cast<Eigen::Index>(e)) = index[data.tets[e][a]];

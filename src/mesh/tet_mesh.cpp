@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/mesh/mesh_checks.hpp"
@@ -21,6 +23,8 @@ const SurfaceGroup& TetMesh::group(const std::string& name) const { return mesh_
 void TetMesh::validate() const {
   if (numElements() == 0) throw InputError("mesh has no tetrahedra");
   mesh_checks::checkElementNodeIds(tets, numNodes());
+  if (!node_tags.empty() && node_tags.size() != static_cast<std::size_t>(numNodes()))
+    throw std::logic_error("mesh: " + std::to_string(node_tags.size()) + " node tags for " + std::to_string(numNodes()) + " nodes");
   mesh_checks::checkGroupNodeIds(groups, &SurfaceGroup::triangles, numNodes());
   mesh_checks::checkElementMeasures(
       numElements(), [this](int e) { return sixSignedVolume(e) / 6.0; }, "volume", "negative volume");

@@ -19,6 +19,10 @@ struct SurfaceGroup {
 
 struct TetMesh {
   Eigen::Matrix3Xd nodes;  ///< coordinates, one column per node
+  /// The mesh file's tag of each node (Gmsh's node tags, what a user sees in the file and in
+  /// contact.csv); empty for a mesh made here (a generator, a mirror image), numbered from 1 then:
+  /// nodeTags (body_mesh.hpp).
+  std::vector<long long> node_tags;
   Eigen::Matrix4Xi tets;   ///< node ids, one column per element, positive signed volume
   std::map<std::string, SurfaceGroup> groups;
 

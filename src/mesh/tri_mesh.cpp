@@ -1,5 +1,8 @@
 #include "stcontact/mesh/tri_mesh.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/mesh/mesh_checks.hpp"
 
@@ -17,6 +20,8 @@ const BoundaryGroup& TriMesh::group(const std::string& name) const { return mesh
 void TriMesh::validate() const {
   if (numElements() == 0) throw InputError("mesh has no triangles");
   mesh_checks::checkElementNodeIds(triangles, numNodes());
+  if (!node_tags.empty() && node_tags.size() != static_cast<std::size_t>(numNodes()))
+    throw std::logic_error("mesh: " + std::to_string(node_tags.size()) + " node tags for " + std::to_string(numNodes()) + " nodes");
   mesh_checks::checkElementMeasures(
       numElements(), [this](int e) { return 0.5 * twiceSignedArea(e); }, "area", "clockwise, area");
   mesh_checks::checkGroupNodeIds(groups, &BoundaryGroup::edges, numNodes());

@@ -17,6 +17,10 @@ struct BoundaryGroup {
 
 struct TriMesh {
   Eigen::Matrix2Xd nodes;      ///< coordinates, one column per node
+  /// The mesh file's tag of each node (Gmsh's node tags, what a user sees in the file and in
+  /// contact.csv); empty for a mesh made here (a generator, a mirror image), numbered from 1 then:
+  /// nodeTags (body_mesh.hpp).
+  std::vector<long long> node_tags;
   Eigen::Matrix3Xi triangles;  ///< node ids, one column per element, counter-clockwise
   std::map<std::string, BoundaryGroup> groups;
 

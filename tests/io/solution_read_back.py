@@ -89,7 +89,8 @@ def check_histories(out, dimension, label):
     table = columns(out / "contact.csv")
     with h5py.File(out / "solution.h5", "r") as f:
         force, gap, slip, state = (f["interface/" + name][()] for name in ("force", "gap", "slip", "state"))
-        tributary, nodes, time = f["contact/tributary"][()], f["contact/nodes"][()], f["time"][()]
+        tributary, nodes, time = f["contact/tributary"][()], f["contact/node_tags"][()], f["time"][()]
+        assert np.array_equal(f["mesh/node_tags"][()][f["contact/nodes"][()]], nodes), label
         m, n = gap.shape
         assert force.shape == (m, n, dimension) and slip.shape == (m, n, dimension - 1), (force.shape, slip.shape)
         assert len(table["step"]) == m * n

@@ -13,6 +13,7 @@
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/missing_file_error.hpp"
+#include "stcontact/mesh/body_mesh.hpp"
 #include "stcontact/mesh/gmsh_reader.hpp"
 
 namespace stc {
@@ -105,6 +106,22 @@ TEST(GmshReader, ParsesTwoTriangleSquareExactly) {
                1, 2,
                2, 3;
   EXPECT_EQ(mesh.triangles, triangles);
+}
+
+// The file's node tags are kept for the nodes used (what contact.csv and solution.h5 show), in the
+// order of the mesh's nodes; a generated mesh has none and is numbered from 1.
+TEST(GmshReader, KeepsTheFilesNodeTags) {
+  std::string text = replaced(kSquare, "1\n2\n3\n4\n0 0 0", "40\n30\n20\n10\n0 0 0");
+  text = replaced(text, "\n2 1 2\n", "\n2 40 30\n");
+  text = replaced(text, "\n3 3 4\n", "\n3 20 10\n");
+  text = replaced(text, "\n4 1 2 3\n", "\n4 40 30 20\n");
+  text = replaced(text, "\n5 1 3 4\n", "\n5 40 20 10\n");
+  const TriMesh mesh = parse(text);
+  EXPECT_EQ(mesh.node_tags, (std::vector<long long>{40, 30, 20, 10}));
+  EXPECT_EQ(nodeTags(BodyMesh(mesh)), (std::vector<long long>{40, 30, 20, 10}));
+  TriMesh generated = mesh;
+  generated.node_tags.clear();
+  EXPECT_EQ(nodeTags(BodyMesh(generated)), (std::vector<long long>{1, 2, 3, 4}));
 }
 
 TEST(GmshReader, ReadsPhysicalGroupsByName) {

@@ -75,7 +75,8 @@ def test_contact_forces_equal_the_programs(solved):
     normal = np.array([float(row["normal_force"]) for row in rows]).reshape(m, n_c).T
     np.testing.assert_allclose(result.normal_forces, normal, rtol=1e-10, atol=1e-12 * np.abs(normal).max())
     nodes = [int(row["node"]) for row in rows[:n_c]]
-    assert nodes == list(result.contact_nodes)
+    assert nodes == list(result.contact_node_tags)
+    assert list(result.contact_node_tags) == list(result.contact_nodes + 1)  # a generated mesh: from 1
 
 
 def test_check_equals_the_programs(cli):
