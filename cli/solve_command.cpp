@@ -53,12 +53,14 @@ void requireBackendForRanks(const Scene& scene, const Ranks& ranks) {
                      " ranks choose \"mumps\" or \"cg-gamg\" (--set solver.linear='\"mumps\"')");
 }
 
-// The outputs rank 0 writes: on several ranks without the frames, whose displacements each rank
-// would have to solve for in one order (docs/linear_solvers.md, "Ranks").
-OutputSpec outputsOn(const Scene& scene, const Ranks& ranks) {
+// The outputs rank 0 writes. On several ranks it writes frames only from a displacement the strategy
+// holds (fas-apriori, latin-pgd: no solve); a strategy that holds none would need every rank's part
+// in a solve per frame, after the other ranks are done (docs/linear_solvers.md, "Ranks").
+OutputSpec outputsOf(const Scene& scene, const Ranks& ranks, const SolveResult& result, TerminalProgress& progress) {
   OutputSpec output = scene.output;
-  if (ranks.size > 1 && output.frames) {
-    if (ranks.writes()) std::cerr << "note: no frames on " << ranks.size << " ranks (output.frames is for one process; solution.h5 holds the rest)" << std::endl;
+  if (ranks.size > 1 && output.frames && !result.displacement.held) {
+    progress.note("no frames on " + std::to_string(ranks.size) + " ranks from " + std::string(scene.solver.name()) +
+                  ", which holds no displacement (fas-apriori and latin-pgd do); solution.h5 holds the rest");
     output.frames = false;
   }
   return output;
@@ -147,11 +149,11 @@ int runSolve(const SolveArgs& args) {
     reference = referenceOrWarning(problem, progress, operators);
     reference_s = secondsSince(begun);
   }
-  const OutputSpec output = outputsOn(scene, ranks);
-  const SolveResult result = runSolver(problem, scene, reference.get(), progress, operators, output);
+  const SolveResult result = runSolver(problem, scene, reference.get(), progress, operators, scene.output);
   throwIfInterrupted();  // a solve stopped by a signal writes nothing
   std::vector<double> peaks = valuesOfEveryRank(peakResidentBytes());  // every rank takes part
   if (!ranks.writes()) return result.summary.converged() ? 0 : 2;
+  const OutputSpec output = outputsOf(scene, ranks, result, progress);
   if (output.frames) progress.note("writing " + out.string() + "/ with its frames");
   const auto writing = std::chrono::steady_clock::now();
   writeRunOutputs(folder->path(), problem, result,

@@ -244,7 +244,8 @@ set_tests_properties(cli.refuse_low_address_space PROPERTIES LABELS "cli;address
 add_test(NAME cli.interrupted_runs_leave_whole_folders
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/interrupt_runs.sh ${cli} ${scenes}/hemisphere.toml
                  ${CMAKE_CURRENT_BINARY_DIR}/interrupted --set mesh.divisions=5 --set time.steps=101)
-set_tests_properties(cli.interrupted_runs_leave_whole_folders PROPERTIES LABELS cli TIMEOUT 600)
+set_tests_properties(cli.interrupted_runs_leave_whole_folders PROPERTIES LABELS cli TIMEOUT 600
+                     ENVIRONMENT "STC_PYTHON=${Python3_EXECUTABLE}")
 
 # A re-run into a folder replaces it as a whole: no frame of a longer series stays behind; a folder
 # that holds other files is refused, not replaced.
@@ -316,5 +317,5 @@ if(STC_HAVE_PETSC AND STC_MPIRUN)
   add_test(NAME cli.mpi_ranks
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/mpi_ranks.sh ${cli} ${PROJECT_SOURCE_DIR}
                    ${CMAKE_CURRENT_BINARY_DIR}/mpi_ranks)
-  set_tests_properties(cli.mpi_ranks PROPERTIES LABELS "cli;mpi" TIMEOUT 600)
+  set_tests_properties(cli.mpi_ranks PROPERTIES LABELS "cli;mpi" TIMEOUT 600 ENVIRONMENT "STC_PYTHON=${Python3_EXECUTABLE}")
 endif()

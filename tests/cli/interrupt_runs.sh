@@ -28,7 +28,7 @@ whole() {
     on_disk=$(cd "$out" && ls vtu/*.vtu | sort)
   else
     listed=$(grep -o 'solution.h5:/frames/step_[0-9]*/displacement' "$out/solution.xdmf" | sed 's|.*/frames/||; s|/.*||' | sort)
-    on_disk=$(/usr/bin/python3 -c "import h5py, sys; print('\n'.join(sorted(k for k in h5py.File(sys.argv[1], 'r')['frames'] if k.startswith('step_'))))" "$out/solution.h5")
+    on_disk=$("${STC_PYTHON:-python3}" -c "import h5py, sys; print('\n'.join(sorted(k for k in h5py.File(sys.argv[1], 'r')['frames'] if k.startswith('step_'))))" "$out/solution.h5")
   fi
   [ -n "$listed" ] && [ "$listed" = "$on_disk" ] || fail "$context: the frames on disk ($(echo "$on_disk" | wc -l)) are not the ones listed ($(echo "$listed" | wc -l))"
   local left

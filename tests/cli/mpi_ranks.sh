@@ -6,7 +6,8 @@
 #   - cg-gamg: converged, its true error (against the incremental reference the ranks compute
 #     together) within the tolerance;
 # each summary saying 2 ranks, its backend, each rank's peak memory (and cg-gamg's Krylov iterations); `auto` takes mumps on 2 ranks; `solver.linear =
-# "cholmod"` and another command than solve are refused there. Exit 0 when every check held; each failure is printed.
+# "cholmod"` and another command than solve are refused there; fas-apriori's frames are written on 2
+# ranks as in one process, incremental's not (it holds no displacement). Exit 0 when every check held; each failure is printed.
 set -uo pipefail
 program=$(realpath "$1") source=$(realpath "$2") work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -86,6 +87,29 @@ err=$(mpi 2 "$program" solve "$seed" --set 'solver.linear="cholmod"' --out "$wor
 err=$(mpi 2 "$program" check "$seed" 2>&1); status=$?
 [ $status -eq 1 ] && grep -q "only 'solve' runs on several MPI ranks" <<<"$err" || fail "check on 2 ranks: exit $status ($err)"
 [ "$(grep -c '^error:' <<<"$err")" -eq 1 ] || fail "check on 2 ranks: the error said $(grep -c '^error:' <<<"$err") times"
+
+# Frames on two ranks: fas-apriori holds its displacement, rank 0 forms them without a solve; they
+# agree with one process's (each within the tolerance of u(lambda) in energy: compared at 1e-4 of
+# the largest displacement). incremental holds none: its run says so and writes no frames.
+for ranks in 1 2; do
+  mpi "$ranks" "$program" solve "$seed" --set mesh.arc_nodes=31 --set time.steps=21 --set 'solver.linear="mumps"' \
+    --out "$work/frames_$ranks" --quiet > "$work/frames_$ranks.log" 2>&1 || fail "frames on $ranks ranks: exit $?"
+done
+"${STC_PYTHON:-python3}" - "$work/frames_1" "$work/frames_2" <<'PY' || fail "frames on 2 ranks"
+import sys
+import h5py, numpy as np
+one, two = (h5py.File(d + "/solution.h5", "r") for d in sys.argv[1:])
+assert list(one["frames/steps"]) == list(two["frames/steps"]) == list(range(21)), list(two["frames/steps"])
+u1, u2 = one["frames/step_00020/displacement"][()], two["frames/step_00020/displacement"][()]
+worst = np.abs(u1 - u2).max() / np.abs(u1).max()
+print(f"  frames on 2 ranks: the last displacement agrees to {worst:.2g} relative")
+sys.exit(0 if worst <= 1e-4 else 1)
+PY
+grep -q '"writer_sparse_solves": 0' "$work/frames_2/summary.json" || fail "frames on 2 ranks: the writer solved"
+mpi 2 "$program" solve "$seed" --set mesh.arc_nodes=31 --set time.steps=21 --set 'solver.linear="mumps"' \
+  --solver incremental --out "$work/no_frames" > "$work/no_frames.log" 2>&1 || fail "incremental on 2 ranks: exit $?"
+grep -q 'no frames on 2 ranks from incremental' "$work/no_frames/run.log" && [ ! -e "$work/no_frames/solution.xdmf" ] &&
+  [ -e "$work/no_frames/solution.h5" ] || fail "incremental on 2 ranks: frames or no note"
 
 [ $failures -eq 0 ] && echo "every check held" || echo "$failures failures"
 [ $failures -eq 0 ]
