@@ -151,7 +151,8 @@ Chunk encodeBlock(const unsigned char* data, std::size_t element_bytes, const st
 // Every chunk of a block layout encoded, on every thread when `parallel`.
 std::vector<Chunk> encodeBlocks(const void* data, std::size_t element_bytes, const std::vector<std::uint64_t>& dims,
                                 const Storage& storage, bool parallel) {
-  const auto [n0, n1] = chunkGrid(dims, storage);
+  const std::pair<std::size_t, std::size_t> grid = chunkGrid(dims, storage);
+  const std::size_t n0 = grid.first, n1 = grid.second;  // (not a structured binding: clang 14 cannot capture one)
   std::vector<Chunk> chunks(n0 * n1);
   const auto* bytes = static_cast<const unsigned char*>(data);
   const auto encodeOne = [&](int c, int) {
