@@ -16,6 +16,7 @@
 
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/contact_tables.hpp"
+#include "stcontact/io/frame_fields.hpp"
 #include "stcontact/io/run_folder.hpp"
 #include "stcontact/io/run_writer.hpp"
 #include "stcontact/operators/displacement.hpp"
@@ -259,6 +260,18 @@ py::array displacementsFromForces(const ProblemRef& ref, const Eigen::MatrixXd& 
   return movedToNumpy(std::move(u));
 }
 
+/// The stress of every element from a full displacement (n_dofs, the layout of displacementsFromForces):
+/// (n_e × 6 in VTK's order xx, yy, zz, xy, yz, xz; n_e von Mises), as the frames hold them.
+py::tuple stressesOf(const ProblemRef& ref, const Eigen::VectorXd& u) {
+  const ProblemPtr problem = ref.problem();
+  if (u.size() != problem->numDofs())
+    throw std::invalid_argument("u has " + std::to_string(u.size()) + " entries, the problem " +
+                                std::to_string(problem->numDofs()) + " dofs");
+  std::vector<CellField> fields = elementStressFields(*problem, u);
+  Eigen::MatrixXd stress = fields[0].values.transpose(), von_mises = fields[1].values.transpose();
+  return py::make_tuple(movedToNumpy(std::move(stress)), movedToNumpy(Eigen::VectorXd(von_mises.col(0))));
+}
+
 /// The estimate as the record's Python attribute: None where history.csv's cell is empty.
 std::optional<double> estimateOrNone(double error_estimate) {
   if (!std::isfinite(error_estimate)) return std::nullopt;
@@ -321,6 +334,7 @@ void bindProblem(py::module_& module) {
       .def_property_readonly("n_contact_nodes", [](const ProblemRef& r) { return r.problem()->contact.size(); })
       .def_property_readonly("n_steps", [](const ProblemRef& r) { return r.problem()->numSteps(); })
       .def("displacements", &displacementsFromForces, py::arg("forces"))
+      .def("stresses", &stressesOf, py::arg("u"))
       .def(py::pickle([](const ProblemRef& r) { return sceneState(r.scene); },
                       [](const py::tuple& state) { return ProblemRef{sceneFromState(state)}; }));
 }

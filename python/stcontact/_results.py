@@ -9,6 +9,8 @@ import csv
 import io
 import json
 
+import numpy as np
+
 
 class SolveResult:
     """One solve: the interface histories, the tables of reactions.csv and history.csv, summary.json.
@@ -139,6 +141,14 @@ class SolveResult:
     def error(self):
         """The last true error (None without the incremental reference)."""
         return self.summary["error"]
+
+    def stress_fields(self, displacements=None):
+        """The stress of every element at every instant, as the frames hold it: stress (m, n_e, 6) in
+        VTK's order xx, yy, zz, xy, yz, xz and von_mises (m, n_e), from displacement_fields() (one
+        factorisation of K_ff) or the given n_dofs x m displacements."""
+        u = self.displacement_fields() if displacements is None else displacements
+        pairs = [self.problem.stresses(u[:, k]) for k in range(u.shape[1])]
+        return np.stack([p[0] for p in pairs]), np.stack([p[1] for p in pairs])
 
     def displacement_fields(self):
         """The full displacements n_dofs x m, rebuilt from the interface forces with one factorisation

@@ -45,9 +45,10 @@ Eigen::MatrixXd inVtkOrder(const Eigen::Ref<const Eigen::MatrixXd>& stress, cons
   return tensor;
 }
 
-// The stress tensor and von Mises on the elements, each element's with its body's material (two
-// bodies of two materials: both computed, each element's taken).
-std::vector<CellField> stressFields(const Problem& problem, const Eigen::VectorXd& u) {
+}  // namespace
+
+// Two bodies of two materials: both computed, each element's taken.
+std::vector<CellField> elementStressFields(const Problem& problem, const Eigen::VectorXd& u) {
   const auto cellFields = [](const Eigen::MatrixXd& stress, const std::array<int, 6>& vtkRows) {
     return std::vector<CellField>{{"stress", inVtkOrder(stress, vtkRows), FieldKind::SymmetricTensor},
                                   {"von_mises", stress.bottomRows(1)}};
@@ -74,6 +75,8 @@ std::vector<CellField> stressFields(const Problem& problem, const Eigen::VectorX
                  }},
       problem.body);
 }
+
+namespace {
 
 // Bytes of one frame in single precision: d + d + 1 values per node, 6 + 1 per element.
 double frameBytes(const Problem& problem) {
@@ -127,7 +130,7 @@ FrameFields frameFields(const Problem& problem, const SolveResult& result, const
                                 {"contact_force", std::move(force)},
                                 {"contact_state", std::move(state), FieldKind::Code}};
   if (bodies.size() > 0) nodal.push_back({"body", bodies, FieldKind::Code});
-  return {std::move(nodal), stressFields(problem, u)};
+  return {std::move(nodal), elementStressFields(problem, u)};
 }
 
 }  // namespace stc

@@ -53,6 +53,10 @@ class FrameDisplacement {
   std::vector<SpdSolver::Workspace> workspaces_;
 };
 
+/// The stress tensor (rows in VTK's order xx, yy, zz, xy, yz, xz) and von Mises of every element,
+/// from the absolute displacement `u` (every dof), each element with its body's material.
+std::vector<CellField> elementStressFields(const Problem& problem, const Eigen::VectorXd& u);
+
 /// The fields of instant k from its absolute displacement `u`.
 FrameFields frameFields(const Problem& problem, const SolveResult& result, const ContactStateTable& states, int k,
                         const Eigen::VectorXd& u, const Eigen::MatrixXd& bodies = {});
