@@ -117,8 +117,8 @@ py::dict historyArrays(const SolveSummary& summary) {
 }
 
 /// reactions.csv's columns (stc::reactionTable, the writer's own rows).
-py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
-  ReactionTable table = reactionTable(problem, result);
+py::dict reactionArrays(const Problem& problem, const SolveResult& result, const InterfaceTable& interface) {
+  ReactionTable table = reactionTable(problem, result, interface);
   std::vector<int> step(table.t.size());
   for (std::size_t k = 0; k < step.size(); ++k) step[k] = static_cast<int>(k);
   py::dict reactions;
@@ -141,8 +141,7 @@ py::dict reactionArrays(const Problem& problem, const SolveResult& result) {
 /// contact.csv's per-node columns beside λ (stc::interfaceTable, the writer's own): the tributary
 /// lengths or areas ℓ_i, and n_C × m gap and state (0 open, 1 stick, 2 slip), (d − 1) n_C × m slip
 /// (rows (d − 1) i + a), in the library's layout (column k: instant k).
-py::dict contactArrays(const Problem& problem, const SolveResult& result) {
-  const InterfaceTable table = interfaceTable(problem, result);
+py::dict contactArrays(const Problem& problem, const InterfaceTable& table) {
   const int n = table.nodes, m = table.steps, t = table.tangential;
   Eigen::MatrixXd gap(n, m), slip(static_cast<Eigen::Index>(t) * n, m);
   Eigen::MatrixXi state(n, m);
@@ -177,8 +176,9 @@ py::dict resultDict(const SceneHandle& run, SolveResult&& result, const Prepared
   out["summary_json"] =
       summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION, {}, {}, {}}, operators.preparations());
   out["history"] = historyArrays(result.summary);
-  out["reactions"] = reactionArrays(*problem, result);
-  out["contact"] = contactArrays(*problem, result);
+  const InterfaceTable interface = interfaceTable(*problem, result);  // the states, once for both
+  out["reactions"] = reactionArrays(*problem, result, interface);
+  out["contact"] = contactArrays(*problem, interface);
   out["times"] = movedToNumpy(std::vector<double>(problem->times));
   out["contact_nodes"] = movedToNumpy(std::vector<int>(problem->contact.nodes));
   out["master_nodes"] = movedToNumpy(std::vector<int>(problem->contact.master_nodes));

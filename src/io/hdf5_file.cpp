@@ -6,11 +6,10 @@
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
-#include <utility>
 #include <type_traits>
+#include <utility>
 
 #include "stcontact/core/threads.hpp"
-
 #include "stcontact/io/output_error.hpp"
 
 namespace stc::h5 {
@@ -40,6 +39,10 @@ void checked(herr_t status, const std::string& what, const std::string& where) {
 
 std::vector<hsize_t> hsizes(const std::vector<std::uint64_t>& dims) { return {dims.begin(), dims.end()}; }
 
+bool hasNoElement(const std::vector<std::uint64_t>& dims) {
+  return std::any_of(dims.begin(), dims.end(), [](std::uint64_t d) { return d == 0; });
+}
+
 Handle dataspace(const std::vector<std::uint64_t>& dims, const std::string& where) {
   const std::vector<hsize_t> sizes = hsizes(dims);
   return {created(H5Screate_simple(static_cast<int>(sizes.size()), sizes.data(), nullptr), "create a dataspace", where),
@@ -51,8 +54,7 @@ Handle creationProperties(const Storage& storage, const std::vector<std::uint64_
   Handle props{created(H5Pcreate(H5P_DATASET_CREATE), "create dataset properties", where), Handle::Kind::Property};
   // No modification times in the object headers: the same run writes the same bytes.
   checked(H5Pset_obj_track_times(props.id(), 0), "drop the time stamps", where);
-  const bool empty = std::any_of(dims.begin(), dims.end(), [](std::uint64_t d) { return d == 0; });
-  if (storage.chunk.empty() || empty) return props;
+  if (storage.chunk.empty() || hasNoElement(dims)) return props;
   if (storage.chunk.size() != dims.size()) fail("chunk a dataset (the chunk's rank is not the dataset's)", where);
   const std::vector<hsize_t> chunk = hsizes(storage.chunk);
   checked(H5Pset_chunk(props.id(), static_cast<int>(chunk.size()), chunk.data()), "set the chunks", where);
@@ -167,8 +169,8 @@ std::vector<Chunk> encodeBlocks(const void* data, std::size_t element_bytes, con
 
 // The encoded chunks into `dataset` as they are (H5Dwrite_chunk: no filter run again); all-zero
 // chunks are left unwritten.
-void writeChunks(hid_t dataset, const Encoded& encoded, const std::string& where) {
-  for (const Chunk& chunk : encoded.chunks) {
+void writeChunks(hid_t dataset, const std::vector<Chunk>& chunks, const std::string& where) {
+  for (const Chunk& chunk : chunks) {
     if (chunk.bytes.empty()) continue;
     const std::vector<hsize_t> offset(chunk.offset.begin(), chunk.offset.end());
     checked(H5Dwrite_chunk(dataset, H5P_DEFAULT, 0, offset.data(), chunk.bytes.size(), chunk.bytes.data()),
@@ -206,8 +208,7 @@ Storage chunkedByBlocks(const std::vector<std::uint64_t>& dims, std::size_t elem
   if (dims.size() < 2) return chunkedByRows(dims, element_bytes, bytes);
   std::vector<std::uint64_t> narrowed = dims;
   narrowed[1] = std::clamp<std::uint64_t>(block, 1, std::max<std::uint64_t>(dims[1], 1));
-  Storage storage = chunkedByRows(narrowed, element_bytes, bytes);
-  return storage;
+  return chunkedByRows(narrowed, element_bytes, bytes);
 }
 
 Storage chunkedByRows(const std::vector<std::uint64_t>& dims, std::size_t element_bytes, std::size_t bytes) {
@@ -222,7 +223,7 @@ Storage chunkedByRows(const std::vector<std::uint64_t>& dims, std::size_t elemen
 }
 
 Group Group::group(const std::string& name) const {
-  const std::string where = where_ + (where_.back() == '/' ? "" : "/") + name;
+  const std::string where = pathOf(name);
   const Handle props{created(H5Pcreate(H5P_GROUP_CREATE), "create group properties", where), Handle::Kind::Property};
   checked(H5Pset_obj_track_times(props.id(), 0), "drop the time stamps", where);
   return {Handle{created(H5Gcreate2(handle_.id(), name.c_str(), H5P_DEFAULT, props.id(), H5P_DEFAULT),
@@ -231,41 +232,38 @@ Group Group::group(const std::string& name) const {
           where};
 }
 
-void Group::writeTyped(const std::string& name, std::int64_t type, const void* data,
-                       const std::vector<std::uint64_t>& dims, const Storage& storage) const {
-  const std::string where = where_ + (where_.back() == '/' ? "" : "/") + name;
+std::string Group::pathOf(const std::string& name) const { return where_ + (where_.back() == '/' ? "" : "/") + name; }
+
+Handle Group::createDataset(const std::string& name, std::int64_t type, const std::vector<std::uint64_t>& dims,
+                            const Storage& storage) const {
+  const std::string where = pathOf(name);
   const Handle space = dataspace(dims, where);
   const Handle props = creationProperties(storage, dims, where);
-  const Handle dataset{created(H5Dcreate2(handle_.id(), name.c_str(), type, space.id(), H5P_DEFAULT, props.id(), H5P_DEFAULT),
-                               "create the dataset", where),
-                       Handle::Kind::Dataset};
-  const bool empty = std::any_of(dims.begin(), dims.end(), [](std::uint64_t d) { return d == 0; });
-  if (empty) return;
+  return {created(H5Dcreate2(handle_.id(), name.c_str(), type, space.id(), H5P_DEFAULT, props.id(), H5P_DEFAULT),
+                  "create the dataset", where),
+          Handle::Kind::Dataset};
+}
+
+void Group::writeTyped(const std::string& name, std::int64_t type, const void* data,
+                       const std::vector<std::uint64_t>& dims, const Storage& storage) const {
+  const Handle dataset = createDataset(name, type, dims, storage);
+  if (hasNoElement(dims)) return;
   if (chunksAreBlocks(dims, storage)) {  // encoded on every thread, written in order
-    const Encoded encoded{Element::Float64, dims, storage,
-                          encodeBlocks(data, H5Tget_size(static_cast<hid_t>(type)), dims, storage, true)};
-    writeChunks(dataset.id(), encoded, where);
+    writeChunks(dataset.id(), encodeBlocks(data, H5Tget_size(static_cast<hid_t>(type)), dims, storage, true), pathOf(name));
     return;
   }
-  checked(H5Dwrite(dataset.id(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write the dataset", where);
+  checked(H5Dwrite(dataset.id(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write the dataset", pathOf(name));
 }
 
 void Group::write(const std::string& name, const Encoded& encoded) const {
-  const std::string where = where_ + (where_.back() == '/' ? "" : "/") + name;
-  const hid_t type = nativeType(encoded.element);
-  const Handle space = dataspace(encoded.dims, where);
-  const Handle props = creationProperties(encoded.storage, encoded.dims, where);
-  const Handle dataset{created(H5Dcreate2(handle_.id(), name.c_str(), type, space.id(), H5P_DEFAULT, props.id(), H5P_DEFAULT),
-                               "create the dataset", where),
-                       Handle::Kind::Dataset};
-  writeChunks(dataset.id(), encoded, where);
+  const Handle dataset = createDataset(name, nativeType(encoded.element), encoded.dims, encoded.storage);
+  writeChunks(dataset.id(), encoded.chunks, pathOf(name));
 }
 
 template <class T>
 Encoded encode(const T* data, const std::vector<std::uint64_t>& dims, std::size_t bytes) {
   Encoded encoded{elementOf<T>(), dims, chunkedByRows(dims, sizeof(T), bytes), {}};
-  const bool empty = std::any_of(dims.begin(), dims.end(), [](std::uint64_t d) { return d == 0; });
-  if (!empty) encoded.chunks = encodeBlocks(data, sizeof(T), dims, encoded.storage, false);
+  if (!hasNoElement(dims)) encoded.chunks = encodeBlocks(data, sizeof(T), dims, encoded.storage, false);
   return encoded;
 }
 

@@ -123,6 +123,9 @@ class Group {
  private:
   Handle handle_;
   std::string where_;
+  std::string pathOf(const std::string& name) const;  ///< "file.h5:/group/name", for messages
+  Handle createDataset(const std::string& name, std::int64_t type, const std::vector<std::uint64_t>& dims,
+                       const Storage& storage) const;
   void writeTyped(const std::string& name, std::int64_t type, const void* data, const std::vector<std::uint64_t>& dims,
                   const Storage& storage) const;
 };

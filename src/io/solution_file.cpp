@@ -51,26 +51,15 @@ void writeMesh(const h5::Group& root, const Problem& problem) {
   const Eigen::MatrixXd x = problem.nodePositions();
   const Dims points{u64(x.cols()), 3};
   mesh.write("points", rowsOf<double>(x, 3).data(), points, h5::chunkedByRows(points, sizeof(double)));
-  std::visit(
-      [&](const auto& m) {
-        const auto& cells = [&]() -> const auto& {
-          if constexpr (std::is_same_v<std::decay_t<decltype(m)>, TriMesh>) return m.triangles;
-          else return m.tets;
-        }();
-        const Dims dims{u64(cells.cols()), u64(cells.rows())};  // column-major: each element's nodes together
-        mesh.write("cells", cells.data(), dims, h5::chunkedByRows(dims, sizeof(int)));
-        mesh.attribute("cell_type", cells.rows() == 3 ? "triangle" : "tetrahedron");
-      },
-      problem.body);
   const std::vector<int> node_body = partOfNodes(problem.body);
   std::vector<int> cell_body(static_cast<std::size_t>(problem.numElements()), 0);
   std::visit(
       [&](const auto& m) {
-        const auto& cells = [&]() -> const auto& {
-          if constexpr (std::is_same_v<std::decay_t<decltype(m)>, TriMesh>) return m.triangles;
-          else return m.tets;
-        }();
-        for (Eigen::Index e = 0; e < cells.cols(); ++e)
+        const auto& cells = elementNodes(m);
+        const Dims dims{u64(cells.cols()), u64(cells.rows())};  // column-major: each element's nodes together
+        mesh.write("cells", cells.data(), dims, h5::chunkedByRows(dims, sizeof(int)));
+        mesh.attribute("cell_type", cells.rows() == 3 ? "triangle" : "tetrahedron");
+        for (Eigen::Index e = 0; e < cells.cols(); ++e)  // an element's body is its nodes'
           cell_body[static_cast<std::size_t>(e)] = node_body[static_cast<std::size_t>(cells(0, e))];
       },
       problem.body);
@@ -206,7 +195,7 @@ void writeFrames(const h5::Group& root, const Problem& problem, const SolveResul
     });
     for (int item = 0; item < batch; ++item) {
       const int k = plan.steps[static_cast<std::size_t>(first + item)];
-      const h5::Group frame = frames.group(frameGroup(k).substr(std::string("/frames/").size()));
+      const h5::Group frame = frames.group(frameName(k));
       for (const auto& [name, data] : encoded[static_cast<std::size_t>(item)]) frame.write(name, data);
     }
   }
@@ -214,11 +203,13 @@ void writeFrames(const h5::Group& root, const Problem& problem, const SolveResul
 
 }  // namespace
 
-std::string frameGroup(int k) {
+std::string frameName(int k) {
   char name[32];
-  std::snprintf(name, sizeof name, "/frames/step_%05d", k);
+  std::snprintf(name, sizeof name, "step_%05d", k);
   return name;
 }
+
+std::string frameGroup(int k) { return "/frames/" + frameName(k); }
 
 void writeSolutionH5(const std::filesystem::path& path, const Problem& problem, const SolveResult& result,
                      const RunTables& tables, const SolutionFileInfo& info, const FramePlan& frames) {

@@ -47,7 +47,8 @@ void writeSolutionH5(const std::filesystem::path& path, const Problem& problem, 
 std::string xdmfDocument(const std::string& h5_name, const Problem& problem, const std::vector<int>& frame_steps,
                          FieldPrecision precision);
 
-/// The group of frame k in solution.h5: "/frames/step_NNNNN".
+/// The name of frame k's group, "step_NNNNN", and its path in solution.h5, "/frames/step_NNNNN".
+std::string frameName(int k);
 std::string frameGroup(int k);
 
 }  // namespace stc
