@@ -29,6 +29,8 @@ struct ScalingArgs {
   double tolerance = 1e-8;
   std::optional<int> max_iterations;          ///< default: the scene's [solver] max_iterations
   std::optional<double> time_cap_s;           ///< per error run; default none
+  /// --only-at-tolerance: no first-reach runs (error run, timed repeats), the solves at tolerance only.
+  bool only_at_tolerance = false;
   std::vector<std::string> overrides;         ///< --set section.key=value, for every size
   bool quiet = false;
 };

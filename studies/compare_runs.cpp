@@ -186,15 +186,20 @@ std::vector<SolveAtTolerance> measureAtTolerance(const std::vector<Strategy>& st
   for (int r = 1; r <= rounds; ++r)
     for (std::size_t i = 0; i < strategies.size(); ++i) {
       const std::string solver(nameOf(strategies[i]));
+      PeakMemoryProbe probe;
+      probe.reset();
       const RunOutcome run = runOnce(strategies[i], at, false, repeatLabel(solver + " at tolerance", r, rounds));
       SolveAtTolerance& a = out[i];
       a.times_s.push_back(run.total_s);
+      const MemoryUse memory = probe.sample();
+      if (r == 1 || memory.peak_mb > a.memory.peak_mb) a.memory = memory;
       if (r > 1) continue;
       const SolveSummary& s = run.result.summary;
       a.tolerance = tolerance;
       a.termination = s.termination;
       a.relaxations = s.relaxations;
       a.sparse_solves = s.sparseSolves();
+      a.krylov_iterations = s.krylov_iterations;
       a.error_estimate = s.error_estimate;
       a.error = context.reference.reference->relativeError(run.result.interface.lambda);
     }

@@ -22,10 +22,12 @@ struct SolveAtTolerance {
   Termination termination = Termination::MaxIterations;
   int relaxations = 0;
   int sparse_solves = 0;
+  long long krylov_iterations = 0;  ///< of its linear solves (0 on a direct backend)
   double error_estimate = 0.0;   ///< the estimate it stopped on
   std::optional<double> error;   ///< true error of its last iterate against the reference
   std::vector<double> times_s;   ///< one per repeat
   double median_s = 0.0;
+  MemoryUse memory;              ///< the run with the largest peak (the probe reset before each run)
 };
 
 /// Everything measured for one strategy.

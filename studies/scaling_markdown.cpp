@@ -30,7 +30,16 @@ void introduction(std::ostream& out, const ScalingStudy& s) {
       << "Produced by `" << s.command << "` in " << shortNumber(s.run_s, 3) << " s.\n\n"
       << "Scene `" << s.scene_file << "`. At each size every strategy is first solved as a user runs it, at "
       << "tolerance " << target << " on its own error estimate (the first table of each series: its wall time, "
-      << "from the call, and its true error at termination). Then, as a diagnostic, each size is a `stcontact "
+      << "from the call, and its true error at termination). ";
+  if (!s.first_reach) {
+    out << "Only these solves are run (`--only-at-tolerance`): the exponents, the crossovers and the plots are "
+           "on their median times, over "
+        << s.repeats << " repeat(s), of the runs that converged on their estimate. The true error is against "
+        << "the incremental solution at a tight tolerance (docs/method.md §2), computed once per size and not "
+           "timed.\n\n";
+    return;
+  }
+  out << "Then, as a diagnostic, each size is a `stcontact "
       << "compare` of the strategies (its report: "
       << "`sizes/<size>/summary.md`), with every iterative run stopped at the first iteration whose true error "
       << "(relative energy over the space-time grid against the incremental solution, docs/method.md §2) is at most "
@@ -93,6 +102,28 @@ void atToleranceTable(std::ostream& out, const ScalingStudy& s, const std::vecto
   }
 }
 
+// "21 / 106 / 0 / 812 MB": relaxations, sparse solves, Krylov iterations, peak memory of the solve at tolerance.
+std::string atToleranceWorkCell(const ScalingPoint& p, const std::string& solver) {
+  const StrategyMeasurement* m = p.strategy(solver);
+  if (!m || !m->at_tolerance) return "—";
+  const SolveAtTolerance& a = *m->at_tolerance;
+  return std::to_string(a.relaxations) + " / " + std::to_string(a.sparse_solves) + " / " +
+         std::to_string(a.krylov_iterations) + " / " + shortNumber(a.memory.peak_mb, 4) + " MB";
+}
+
+void atToleranceWorkTable(std::ostream& out, const ScalingStudy& s, Series series,
+                          const std::vector<const ScalingPoint*>& points) {
+  out << "\nRelaxations / sparse solves / Krylov iterations / peak resident memory of the first solve at "
+         "tolerance (the largest peak over the repeats):\n\n| "
+      << sizeName(series) << " |" << solverColumns(s) << "\n" << separator(1 + s.solvers.size());
+  for (const ScalingPoint* p : points) {
+    out << "| " << p->size(series) << " |";
+    for (const auto& solver : s.solvers) out << " " << atToleranceWorkCell(*p, solver) << " |";
+    out << "\n";
+  }
+  out << "\n";
+}
+
 void seriesTables(std::ostream& out, const ScalingStudy& s, Series series) {
   const auto points = seriesPoints(s, series);
   if (points.empty()) return;
@@ -102,6 +133,10 @@ void seriesTables(std::ostream& out, const ScalingStudy& s, Series series) {
                                                 std::to_string(first.comparison.n_dofs) + " dofs)")
       << "\n";
   atToleranceTable(out, s, points);
+  if (!s.first_reach) {
+    atToleranceWorkTable(out, s, series, points);
+    return;
+  }
   out << "\nTime to first reach " << targetLabel(s.target_error)
       << " (a diagnostic: stopping there needs the reference):\n\n"
       << "| " << meshColumn(s) << " | dofs | n_C | m |" << solverColumns(s) << "\n" << separator(4 + s.solvers.size());
@@ -131,11 +166,17 @@ std::string exponentCell(const SeriesFit& f) {
   return shortNumber(f.fit->exponent, 3) + " ± " + shortNumber(f.fit->exponent_stderr, 2) + " (" + sizes + ")";
 }
 
+// What the fits and ratios are on: "Time to 1e-4" or "Time of the solve at tolerance 1e-4".
+std::string fittedTimeName(const ScalingStudy& s) {
+  return (s.first_reach ? "Time to " : "Time of the solve at tolerance ") + targetLabel(s.target_error);
+}
+
 void exponentTable(std::ostream& out, const ScalingStudy& s) {
-  out << "## Growth exponents\n\nTime to " << targetLabel(s.target_error)
+  out << "## Growth exponents\n\n" << fittedTimeName(s)
       << " fitted as t = C · size^p by least squares on log-log axes (GSL `gsl_fit_linear` on log t against "
          "log size); ± is the standard error of p from the scatter about the line (n − 2 degrees of freedom), "
-         "undefined for two sizes. Only sizes where the target was reached enter the fit.\n\n"
+         "undefined for two sizes. Only sizes where the target was reached (at tolerance: where the solve "
+         "converged) enter the fit.\n\n"
       << "| strategy | mesh series: p against dofs | time series: p against m |\n" << separator(3);
   for (const auto& solver : s.solvers)
     out << "| " << solver << " | " << exponentCell(fitSeries(s, solver, Series::Mesh)) << " | "
@@ -169,7 +210,7 @@ void crossoverTable(std::ostream& out, const ScalingStudy& s, Series series) {
 }
 
 void crossoverSection(std::ostream& out, const ScalingStudy& s) {
-  out << "## Against the incremental solver\n\nTime to " << targetLabel(s.target_error)
+  out << "## Against the incremental solver\n\n" << fittedTimeName(s)
       << " over the incremental solver's (below 1: faster), and where the strategy becomes the faster one: the "
          "first size measured, else the crossing of the two fitted power laws.\n\n";
   crossoverTable(out, s, Series::Mesh);
@@ -230,7 +271,9 @@ void slopeTable(std::ostream& out, const ScalingStudy& s) {
 void memorySection(std::ostream& out, const ScalingStudy& s) {
   out << "## Peak resident memory\n\nPeak (MB) of each strategy's runs at each size, and in parentheses its "
          "growth over the resident size before them (the baseline: the problem and the incremental reference). "
-         "Runs stop at the target error, so this is the memory needed to reach it. How: "
+      << (s.first_reach ? "Runs stop at the target error, so this is the memory needed to reach it. "
+                        : "Runs are the solves at tolerance. ")
+      << "How: "
       << s.memory_method << ".\n\n";
   memoryTable(out, s);
   estimateTable(out, s);
@@ -239,6 +282,7 @@ void memorySection(std::ostream& out, const ScalingStudy& s) {
 }
 
 void notReachedNotes(std::ostream& out, const ScalingStudy& s) {
+  if (!s.first_reach) return;  // the at-tolerance table says how each solve ended
   std::ostringstream notes;
   for (const ScalingPoint& p : s.points)
     for (const StrategyMeasurement& m : p.comparison.strategies)

@@ -32,7 +32,8 @@ bool drawScalingPlots(const std::filesystem::path& dir, const ScalingStudy& stud
   for (const auto& s : study.solvers) solvers += (solvers.empty() ? "" : " ") + s;
   const std::string variables = "solvers=" + gnuplotString(solvers) + "; target=" +
                                 gnuplotString(targetLabel(study.target_error)) + "; scene=" +
-                                gnuplotString(study.scene_name) + "; series=" + gnuplotString(seriesWithSizes(study));
+                                gnuplotString(study.scene_name) + "; series=" + gnuplotString(seriesWithSizes(study)) +
+                                (study.first_reach ? "" : "; timecol='time_at_tolerance_s'");
   return drawPlots(dir, reportPlotJob("scaling.gp", variables, scalingPlotNames(study)), warning);
 }
 

@@ -19,6 +19,16 @@ std::string strategyLine(const ScalingStudy& study, const ScalingPoint& p, const
   return line;
 }
 
+/// Without the first-reach runs, the strategy's outcome and memory are its solve at tolerance's.
+void atToleranceOnly(StrategyMeasurement& m, const SolveAtTolerance& a) {
+  m.termination = a.termination;
+  m.relaxations = a.relaxations;
+  m.sparse_solves = a.sparse_solves;
+  m.final_error_estimate = a.error_estimate;
+  m.final_error = a.error;
+  m.memory = a.memory;
+}
+
 void note(ProgressReporter* progress, const std::string& line) {
   if (progress) progress->note(line);
 }
@@ -46,16 +56,25 @@ ScalingPoint measureScalingSize(const Scene& scene, const ScalingSize& size, con
   std::vector<Strategy> strategies;
   for (const std::string& solver : study.solvers) {
     strategies.push_back(strategyNamed(solver));
+    if (!study.first_reach) {
+      p.comparison.strategies.push_back(StrategyMeasurement{});
+      p.comparison.strategies.back().solver = solver;
+      continue;
+    }
     p.comparison.strategies.push_back(measureStrategy(strategies.back(), context));
     note(progress, strategyLine(study, p, p.comparison.strategies.back()));
   }
   // What a user gets: a solve at the target as tolerance, stopping on its own estimate.
   const std::vector<SolveAtTolerance> at = measureAtTolerance(strategies, context, study.target_error);
   for (std::size_t i = 0; i < at.size(); ++i) {
-    p.comparison.strategies[i].at_tolerance = at[i];
+    StrategyMeasurement& m = p.comparison.strategies[i];
+    m.at_tolerance = at[i];
+    if (!study.first_reach) atToleranceOnly(m, at[i]);
     note(progress, "    " + study.solvers[i] + " at tolerance " + shortNumber(study.target_error, 3) + ": " +
                        toString(at[i].termination) + ", " + shortNumber(at[i].median_s, 3) + " s, true error " +
-                       shortNumber(at[i].error, 2));
+                       shortNumber(at[i].error, 2) + ", " + std::to_string(at[i].relaxations) + " relaxations, " +
+                       std::to_string(at[i].sparse_solves) + " sparse solves, peak " +
+                       shortNumber(at[i].memory.peak_mb, 4) + " MB");
   }
   p.comparison.memory_method = describeMemoryMethod(p.comparison.strategies.front().memory.since_reset);
   p.comparison.load_after = loadAverage();

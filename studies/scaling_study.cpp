@@ -10,7 +10,7 @@ namespace {
 constexpr double kMb = 1024.0 * 1024.0;
 constexpr double kDouble = 8.0;  // bytes
 
-double seconds(const Reach& r) { return r.wall_s ? *r.wall_s : std::numeric_limits<double>::quiet_NaN(); }
+double seconds(const std::optional<double>& t) { return t ? *t : std::numeric_limits<double>::quiet_NaN(); }
 
 }  // namespace
 
@@ -52,9 +52,17 @@ Reach reachAt(const ScalingStudy& study, const ScalingPoint& point, const std::s
   return reachOf(m->runs, study.target_error);
 }
 
+std::optional<double> fittedTime(const ScalingStudy& study, const ScalingPoint& point, const std::string& solver) {
+  if (study.first_reach) return reachAt(study, point, solver).wall_s;
+  const StrategyMeasurement* m = point.strategy(solver);
+  if (!m || !m->at_tolerance || m->at_tolerance->termination != Termination::Converged) return std::nullopt;
+  return m->at_tolerance->median_s;
+}
+
 std::string reachStatus(const ScalingStudy& study, const ScalingPoint& point, const std::string& solver) {
   const StrategyMeasurement* m = point.strategy(solver);
   if (!m) return "not run";
+  if (!study.first_reach) return "not measured";
   if (reachAt(study, point, solver).wall_s) return "reached";
   switch (m->termination) {
     case Termination::StoppedByCallback: return "time cap";  // the only other early stop is the target
@@ -73,11 +81,11 @@ SeriesFit fitSeries(const ScalingStudy& study, const std::string& solver, Series
   std::vector<double> sizes, times;
   for (const ScalingPoint* p : seriesPoints(study, series)) {
     ++out.sizes;
-    const Reach r = reachAt(study, *p, solver);
-    if (!r.wall_s || !(*r.wall_s > 0.0)) continue;
+    const std::optional<double> t = fittedTime(study, *p, solver);
+    if (!t || !(*t > 0.0)) continue;
     ++out.sizes_reached;
     sizes.push_back(p->size(series));
-    times.push_back(*r.wall_s);
+    times.push_back(*t);
   }
   const bool distinct = !sizes.empty() && *std::min_element(sizes.begin(), sizes.end()) <
                                               *std::max_element(sizes.begin(), sizes.end());
@@ -90,7 +98,7 @@ Crossover crossoverAgainstIncremental(const ScalingStudy& study, const std::stri
   out.solver = solver;
   out.series = series;
   for (const ScalingPoint* p : seriesPoints(study, series)) {
-    const double ratio = seconds(reachAt(study, *p, solver)) / seconds(reachAt(study, *p, "incremental"));
+    const double ratio = seconds(fittedTime(study, *p, solver)) / seconds(fittedTime(study, *p, "incremental"));
     out.time_ratio.push_back(ratio);
     if (!out.first_faster && ratio < 1.0) out.first_faster = p->size(series);
   }

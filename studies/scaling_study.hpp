@@ -45,6 +45,10 @@ struct ScalingStudy {
   double target_error = 1e-4;
   double tolerance = 0.0;  ///< on the error estimate
   int repeats = 1;
+  /// Whether each size also measures the time to first reach the target (the error run and its
+  /// timed repeats, a diagnostic); false (--only-at-tolerance): the solves at tolerance alone, and
+  /// the fits, crossovers and plots on their times.
+  bool first_reach = true;
   std::optional<double> time_cap_s;
   std::vector<std::string> solvers;
   std::vector<ScalingPoint> points;  ///< in the order run
@@ -62,6 +66,10 @@ Reach reachAt(const ScalingStudy& study, const ScalingPoint& point, const std::s
 /// "reached", or why not: "time cap", "iteration limit", "stagnated", "converged above the target",
 /// "numerical issue", "not run".
 std::string reachStatus(const ScalingStudy& study, const ScalingPoint& point, const std::string& solver);
+
+/// The time a series is fitted on: the median time to first reach the target (study.first_reach),
+/// else the median solve at tolerance when it converged on its estimate; empty where there is none.
+std::optional<double> fittedTime(const ScalingStudy& study, const ScalingPoint& point, const std::string& solver);
 
 /// Growth exponent of one strategy's time to the target over one series.
 struct SeriesFit {

@@ -15,12 +15,13 @@ std::string ratioCell(double ratio) { return std::isfinite(ratio) ? shortNumber(
 // The solve at the target as tolerance: time, termination, relaxations, sparse solves, estimate, true
 // error, time ÷ incremental's (empty cells when it was not run).
 std::string atToleranceCells(const ScalingPoint& p, const StrategyMeasurement& m) {
-  if (!m.at_tolerance) return ",,,,,,";
+  if (!m.at_tolerance) return ",,,,,,,,";
   const SolveAtTolerance& a = *m.at_tolerance;
   std::ostringstream cells;
   cells << shortNumber(a.median_s, 6) << ',' << toString(a.termination) << ',' << a.relaxations << ','
         << a.sparse_solves << ',' << shortNumber(a.error_estimate, 4) << ',' << shortNumber(a.error, 4) << ','
-        << ratioCell(p.timeRatioAtTolerance(m));
+        << ratioCell(p.timeRatioAtTolerance(m)) << ',' << a.krylov_iterations << ','
+        << shortNumber(a.memory.peak_mb, 5);
   return cells.str();
 }
 
@@ -30,7 +31,8 @@ void csvHeader(std::ostream& out, const ScalingStudy& study) {
          "error_at_stop,best_error,iterations,peak_rss_mb,rss_growth_mb,baseline_mb,reference_s,error_run_s,"
          "factor_mb,interface_history_mb,displacement_history_mb,delassus_mb,condensation_mb,"
          "time_at_tolerance_s,termination_at_tolerance,relaxations_at_tolerance,sparse_solves_at_tolerance,"
-         "error_estimate_at_tolerance,error_at_tolerance,time_ratio_at_tolerance\n";
+         "error_estimate_at_tolerance,error_at_tolerance,time_ratio_at_tolerance,krylov_iterations_at_tolerance,"
+         "peak_rss_mb_at_tolerance\n";
 }
 
 void csvRow(std::ostream& out, const ScalingStudy& study, Series series, const ScalingPoint& p,
@@ -38,7 +40,7 @@ void csvRow(std::ostream& out, const ScalingStudy& study, Series series, const S
   const Comparison& c = p.comparison;
   const Reach r = reachAt(study, p, m.solver);
   const Reach ref = reachAt(study, p, "incremental");
-  const double ratio = r.wall_s && ref.wall_s ? *r.wall_s / *ref.wall_s : NAN;
+  const double ratio = study.first_reach && r.wall_s && ref.wall_s ? *r.wall_s / *ref.wall_s : NAN;
   const MemoryEstimate e = estimateMemory(p);
   out << toString(series) << ',' << p.mesh_size << ',' << c.n_dofs << ',' << p.free_dofs << ','
       << c.n_contact_nodes << ',' << c.n_steps << ',' << m.solver << ',' << reachStatus(study, p, m.solver) << ','
@@ -72,6 +74,7 @@ std::string scalingCsv(const ScalingStudy& study) {
 
 void writeScaling(const std::filesystem::path& dir, const ScalingStudy& study) {
   for (const ScalingPoint& p : study.points) {
+    if (!study.first_reach) break;  // the sizes' comparisons are the first-reach runs
     const std::filesystem::path folder = dir / "sizes" / sizeFolderName(study, p);
     std::filesystem::create_directories(folder);
     writeComparison(folder, p.comparison);

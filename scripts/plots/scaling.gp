@@ -8,6 +8,8 @@
 #   scene      the scene's name, for the titles
 #   series     the series that have sizes: 'time mesh', 'time' or 'mesh'
 #   suffix     appended to each PNG name (the command draws into NAME.png.tmp, then renames)
+#   timecol    the time drawn: 'time_to_target_s' (default: first reach) or 'time_at_tolerance_s'
+#              (the solves at tolerance; --only-at-tolerance)
 # Example, in results/hemicylinder/scaling:
 #   gnuplot -e "solvers='latin fas-apriori incremental'; target='1e-4'; scene='hemicylinder'; series='time mesh'" \
 #           ../../../scripts/plots/scaling.gp
@@ -16,6 +18,9 @@ if (!exists('target')) target = '1e-4'
 if (!exists('scene')) scene = ''
 if (!exists('series')) series = 'time mesh'
 if (!exists('suffix')) suffix = ''
+if (!exists('timecol')) timecol = 'time_to_target_s'
+at_tolerance = timecol eq 'time_at_tolerance_s'
+memcol = at_tolerance ? 'peak_rss_mb_at_tolerance' : 'peak_rss_mb'
 
 csv = 'scaling.csv'
 set datafile separator ','
@@ -41,14 +46,17 @@ do for [k=1:words(series)] {
   name = s eq 'time' ? 'steps' : 'dofs'
   set xlabel xlab
   set output 'time_vs_'.name.'.png'.suffix
-  set title scene.': time to reach true error '.target.' against '.name.' (median of repeats)'
-  set ylabel 'time to reach '.target.' (s, set-up included)'
-  plot for [i=1:words(solvers)] csv using (pick(s, i, xcol)):(pick(s, i, 'time_to_target_s')) \
+  set title at_tolerance ? scene.': time of a solve at tolerance '.target.' against '.name.' (median of repeats)' \
+                         : scene.': time to reach true error '.target.' against '.name.' (median of repeats)'
+  set ylabel at_tolerance ? 'wall time at tolerance '.target.' (s, set-up included)' \
+                          : 'time to reach '.target.' (s, set-up included)'
+  plot for [i=1:words(solvers)] csv using (pick(s, i, xcol)):(pick(s, i, timecol)) \
        with linespoints pt 7 ps 0.8 lw 2 lc rgb colour(word(solvers, i)) title word(solvers, i)
   set output 'memory_vs_'.name.'.png'.suffix
-  set title scene.': peak resident memory to reach '.target.' against '.name
+  set title at_tolerance ? scene.': peak resident memory of a solve at tolerance '.target.' against '.name \
+                         : scene.': peak resident memory to reach '.target.' against '.name
   set ylabel 'peak resident memory (MB)'
-  plot for [i=1:words(solvers)] csv using (pick(s, i, xcol)):(pick(s, i, 'peak_rss_mb')) \
+  plot for [i=1:words(solvers)] csv using (pick(s, i, xcol)):(pick(s, i, memcol)) \
        with linespoints pt 7 ps 0.8 lw 2 lc rgb colour(word(solvers, i)) title word(solvers, i)
 }
 unset output

@@ -112,7 +112,7 @@ set_tests_properties(cli.scaling_hemisphere_names_the_divisions PROPERTIES DEPEN
 # What a user gets comes first: the solve at the target as tolerance, in the CSV and the summary,
 # every strategy of the run with a termination and a true error.
 add_test(NAME cli.scaling_reports_the_solve_at_tolerance
-         COMMAND bash -c "head -1 ${out}/scaling3d/scaling.csv | grep -q ',time_at_tolerance_s,termination_at_tolerance,relaxations_at_tolerance,sparse_solves_at_tolerance,error_estimate_at_tolerance,error_at_tolerance,time_ratio_at_tolerance$' && test $(grep -c ',converged,[0-9]*,[0-9]*,[^,]*,[0-9.e+-]*,[0-9.e+-]*$' ${out}/scaling3d/scaling.csv) -eq 4 && grep -q '^A solve at tolerance 0.0001' ${out}/scaling3d/summary.md")
+         COMMAND bash -c "head -1 ${out}/scaling3d/scaling.csv | grep -q ',time_at_tolerance_s,termination_at_tolerance,relaxations_at_tolerance,sparse_solves_at_tolerance,error_estimate_at_tolerance,error_at_tolerance,time_ratio_at_tolerance,krylov_iterations_at_tolerance,peak_rss_mb_at_tolerance$' && test $(grep -c ',converged,[0-9]*,[0-9]*,[^,]*,[0-9.e+-]*,[0-9.e+-]*,[0-9]*,[0-9.e+-]*$' ${out}/scaling3d/scaling.csv) -eq 4 && grep -q '^A solve at tolerance 0.0001' ${out}/scaling3d/summary.md")
 set_tests_properties(cli.scaling_reports_the_solve_at_tolerance PROPERTIES DEPENDS cli.scaling_hemisphere_small LABELS cli)
 stc_cli_test(bad_scaling_arc_nodes_on_half_ball 1 "--arc-nodes does not apply to a scene with the half_ball generator"
              scaling ${hemisphere} --arc-nodes 21 --steps none --out ${out}/scaling3d_bad)

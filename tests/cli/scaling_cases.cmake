@@ -19,3 +19,5 @@ stc_cli_test(scaling_time_cap_not_reached 0 "latin: not reached \\(time cap, bes
              --solvers latin,incremental --arc-nodes 11 --steps 11,21 --time-cap 1e-9 --out ${out}/scaling_cap)
 stc_cli_test(scaling_time_series_only 0 "report: .*summary\\.md" scaling ${scenes}/punch.toml --repeats 1
              --solvers incremental --arc-nodes none --steps 11,21 --out ${out}/scaling_punch)
+stc_cli_test(scaling_time_cap_at_tolerance_only 1 "--time-cap stops the first-reach error runs" scaling ${seed}
+             --only-at-tolerance --time-cap 5 --out ${out}/scaling_bad)

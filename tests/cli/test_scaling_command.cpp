@@ -113,14 +113,18 @@ std::vector<std::string> cellsOf(const std::string& line) {
   return cells;
 }
 
-TEST_F(ScalingCommand, ReportsTheFittedExponentOfEveryStrategyThatReachedTwoSizes) {
+using SizeTimes = std::vector<std::pair<double, double>>;
+
+/// Checks that the report's growth exponents are the fits of `points(solver, series)`.
+template <typename Points>
+void expectExponentsFitted(const std::string& summary, Points points_of) {
   for (const std::string& solver : stc::strategyNames()) {
-    const auto at = summary_.find("| " + solver + " |", summary_.find("## Growth exponents"));
+    const auto at = summary.find("| " + solver + " |", summary.find("## Growth exponents"));
     ASSERT_NE(at, std::string::npos) << solver;
-    const auto cells = cellsOf(summary_.substr(at, summary_.find('\n', at) - at));
+    const auto cells = cellsOf(summary.substr(at, summary.find('\n', at) - at));
     ASSERT_EQ(cells.size(), 3u) << solver;
     for (int k : {1, 2}) {
-      const auto points = reached(solver, k == 1 ? "mesh" : "time");
+      const SizeTimes points = points_of(solver, k == 1 ? "mesh" : "time");
       if (points.size() < 2) continue;
       std::vector<double> sizes, times;
       for (const auto& [size, time] : points) {
@@ -133,6 +137,12 @@ TEST_F(ScalingCommand, ReportsTheFittedExponentOfEveryStrategyThatReachedTwoSize
       EXPECT_NEAR(std::stod(cells[k]), fit.exponent, 6e-3 * std::abs(fit.exponent) + 1e-3) << solver << cells[k];
     }
   }
+}
+
+TEST_F(ScalingCommand, ReportsTheFittedExponentOfEveryStrategyThatReachedTwoSizes) {
+  expectExponentsFitted(summary_, [](const std::string& solver, const std::string& series) {
+    return reached(solver, series);
+  });
 }
 
 TEST_F(ScalingCommand, ReportHasTheSeriesExponentsCrossoverAndMemorySections) {
@@ -149,6 +159,62 @@ TEST_F(ScalingCommand, DrawsThePlotsOrSaysHowToDrawThemLater) {
   }
   for (const char* name : {"time_vs_steps.png", "time_vs_dofs.png", "memory_vs_steps.png", "memory_vs_dofs.png"})
     EXPECT_GT(fs::file_size(out_ / "report" / name), 0u) << name;
+}
+
+// --only-at-tolerance: the solves at tolerance alone, the fits and plots on their times.
+class ScalingAtToleranceOnly : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    out_ = test::scratchFolder("scaling_at_tolerance");
+    exit_status_ =
+        test::runOnSmallSeed("scaling", "--arc-nodes 11,21 --steps 11,21 --repeats 1 --only-at-tolerance", out_);
+    rows_ = readCsv(out_ / "report" / "scaling.csv");
+    summary_ = readText(out_ / "report" / "summary.md");
+  }
+  static void TearDownTestSuite() {
+    std::error_code ignored;
+    fs::remove_all(out_, ignored);
+  }
+
+  /// (size, time of the solve at tolerance) of `solver` in `series` where it converged.
+  static SizeTimes converged(const std::string& solver, const std::string& series) {
+    SizeTimes out;
+    for (const auto& row : rows_.rows)
+      if (row.at("solver") == solver && row.at("series") == series &&
+          row.at("termination_at_tolerance") == "converged")
+        out.emplace_back(std::stod(row.at(series == "mesh" ? "dofs" : "steps")),
+                         std::stod(row.at("time_at_tolerance_s")));
+    return out;
+  }
+
+  static inline fs::path out_;
+  static inline int exit_status_ = -1;
+  static inline Table rows_;
+  static inline std::string summary_;
+};
+
+TEST_F(ScalingAtToleranceOnly, RunsNoFirstReachAndWritesNoComparisonPerSize) {
+  EXPECT_EQ(exit_status_, 0);
+  EXPECT_FALSE(fs::exists(out_ / "report" / "sizes"));
+  EXPECT_EQ(summary_.find("Time to first reach"), std::string::npos);
+  EXPECT_NE(summary_.find("--only-at-tolerance"), std::string::npos);
+  EXPECT_EQ(rows_.rows.size(), 4 * stc::strategyNames().size());
+  for (const auto& row : rows_.rows) {
+    EXPECT_EQ(row.at("status"), "not measured") << row.at("solver");
+    EXPECT_FALSE(number(row.at("time_to_target_s")).has_value()) << row.at("solver");
+    EXPECT_GT(number(row.at("time_at_tolerance_s")).value_or(0.0), 0.0) << row.at("solver");
+    EXPECT_GT(number(row.at("peak_rss_mb_at_tolerance")).value_or(0.0), 0.0) << row.at("solver");
+    EXPECT_TRUE(number(row.at("krylov_iterations_at_tolerance")).has_value()) << row.at("solver");
+    // The incremental solver is exact (its true error is 0 by construction); the others are measured.
+    EXPECT_TRUE(number(row.at("error_at_tolerance")).has_value()) << row.at("solver");
+  }
+}
+
+TEST_F(ScalingAtToleranceOnly, ReportsTheExponentsOfTheSolvesAtTolerance) {
+  ASSERT_GE(converged("incremental", "mesh").size(), 2u);
+  expectExponentsFitted(summary_, [](const std::string& solver, const std::string& series) {
+    return converged(solver, series);
+  });
 }
 
 }  // namespace
