@@ -7,6 +7,10 @@
 
 
 namespace stc {
+namespace {
+// Iterates with a larger indicator are kept out of the calibration (see the header).
+constexpr double kCalibrationCeiling = 0.1;
+}  // namespace
 
 CalibratedIndicatorEstimator::CalibratedIndicatorEstimator(double safety, int count, double spacing)
     : safety_(safety), spacing_(spacing), count_(count) {
@@ -23,7 +27,7 @@ double CalibratedIndicatorEstimator::record(const InterfaceHistory& s, double in
     const double distance = std::sqrt(std::max(0.0, squared));
     bound = std::max(bound, safety_ * indicator * distance / (c.indicator - safety_ * indicator));
   }
-  if (indicator < 1.0 && (checkpoints_.empty() || indicator * spacing_ <= checkpoints_.back().indicator)) {
+  if (indicator < kCalibrationCeiling && (checkpoints_.empty() || indicator * spacing_ <= checkpoints_.back().indicator)) {
     checkpoints_.push_back({s, indicator});
     if (static_cast<int>(checkpoints_.size()) > count_) checkpoints_.pop_front();
   }

@@ -64,16 +64,17 @@ TEST(CalibratedIndicatorEstimator, StillBoundsTheErrorWhenTheRatioGrowsWithinThe
 TEST(CalibratedIndicatorEstimator, IsInfiniteUntilAnEarlierIndicatorIsTwiceTheSafetyLarger) {
   const Sequence q;
   stc::CalibratedIndicatorEstimator estimator(2.0);  // needs a checkpoint with η_j ≥ 4 η_n
-  EXPECT_TRUE(std::isinf(estimator.record(q.at(1.0), 2.0, 1.0)));   // η ≥ 1: never a checkpoint
-  EXPECT_TRUE(std::isinf(estimator.record(q.at(0.5), 0.5, 1.0)));   // the first checkpoint
-  EXPECT_TRUE(std::isinf(estimator.record(q.at(0.2), 0.2, 1.0)));   // 0.5 < 4 · 0.2
-  EXPECT_TRUE(std::isfinite(estimator.record(q.at(0.1), 0.1, 1.0)));  // 0.5 ≥ 4 · 0.1
+  EXPECT_TRUE(std::isinf(estimator.record(q.at(1.0), 2.0, 1.0)));     // η ≥ 0.1: never a checkpoint
+  EXPECT_TRUE(std::isinf(estimator.record(q.at(0.5), 0.5, 1.0)));     // nor this one (pre-asymptotic)
+  EXPECT_TRUE(std::isinf(estimator.record(q.at(0.02), 0.02, 1.0)));   // 0.5 ≥ 4 · 0.02, but no checkpoint: the first
+  EXPECT_TRUE(std::isinf(estimator.record(q.at(0.01), 0.01, 1.0)));   // 0.02 < 4 · 0.01
+  EXPECT_TRUE(std::isfinite(estimator.record(q.at(0.005), 0.005, 1.0)));  // 0.02 ≥ 4 · 0.005
   // The relative error: the bound over √E.
   stc::CalibratedIndicatorEstimator other(2.0);
-  other.record(q.at(0.5), 0.5, 1.0);
-  const double absolute = other.record(q.at(0.1), 0.1, 1.0);
+  other.record(q.at(0.05), 0.05, 1.0);
+  const double absolute = other.record(q.at(0.01), 0.01, 1.0);
   stc::CalibratedIndicatorEstimator scaled(2.0);
-  scaled.record(q.at(0.5), 0.5, 4.0);
-  EXPECT_DOUBLE_EQ(scaled.record(q.at(0.1), 0.1, 4.0), absolute / 2.0);
+  scaled.record(q.at(0.05), 0.05, 4.0);
+  EXPECT_DOUBLE_EQ(scaled.record(q.at(0.01), 0.01, 4.0), absolute / 2.0);
   EXPECT_THROW(stc::CalibratedIndicatorEstimator(0.5), std::invalid_argument);
 }

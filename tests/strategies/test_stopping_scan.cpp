@@ -106,6 +106,24 @@ TEST(StoppingWithoutContact, EveryStrategyConvergesCertified) {
     }
 }
 
+// The coarsest seed mesh (11 arc nodes, a contact zone of 3 nodes) at τ = 1e-4: the FAS strategies'
+// first iterate, started from the zone carried rigidly, has an indicator of 0.53 and an error 0.74
+// times it, against 2.4 times once the iteration settles. Calibrated on it, the estimate said
+// 9.5e-5 at the third iterate while the true error was 1.3e-4; iterates with an indicator of 0.1 or
+// more now calibrate nothing (src/solver/calibrated_estimate.hpp).
+TEST(StoppingOnACoarseMesh, ThePreAsymptoticFirstIterateCalibratesNothing) {
+  for (int steps : {11, 21, 201}) {
+    const stc::test::StrategyFixture fixture(stc::test::seedScene(11, steps));
+    for (const char* strategy : {"fas-aposteriori", "fas-apriori"}) {
+      const stc::SolveSummary s = fixture.solve(strategy, 1e-4).summary;
+      const std::string label = std::string(strategy) + ", " + std::to_string(steps) + " instants";
+      std::cout << "[ measured ] " << label << ": " << s.message << ", true error " << s.error.value_or(-1.0) << "\n";
+      ASSERT_TRUE(s.error.has_value()) << label;
+      if (s.converged()) EXPECT_LE(*s.error, 1e-4) << label << ": " << s.message;
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(AcrossTheRanges, StoppingScan, ::testing::ValuesIn(scanCases()),
                          [](const ::testing::TestParamInfo<ScanCase>& info) { return nameOf(info.param); });
 
