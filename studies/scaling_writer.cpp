@@ -40,7 +40,7 @@ void csvRow(std::ostream& out, const ScalingStudy& study, Series series, const S
   const Comparison& c = p.comparison;
   const Reach r = reachAt(study, p, m.solver);
   const Reach ref = reachAt(study, p, "incremental");
-  const double ratio = study.first_reach && r.wall_s && ref.wall_s ? *r.wall_s / *ref.wall_s : NAN;
+  const double ratio = r.wall_s && ref.wall_s ? *r.wall_s / *ref.wall_s : NAN;
   const MemoryEstimate e = estimateMemory(p);
   out << toString(series) << ',' << p.mesh_size << ',' << c.n_dofs << ',' << p.free_dofs << ','
       << c.n_contact_nodes << ',' << c.n_steps << ',' << m.solver << ',' << reachStatus(study, p, m.solver) << ','
@@ -73,12 +73,12 @@ std::string scalingCsv(const ScalingStudy& study) {
 }
 
 void writeScaling(const std::filesystem::path& dir, const ScalingStudy& study) {
-  for (const ScalingPoint& p : study.points) {
-    if (!study.first_reach) break;  // the sizes' comparisons are the first-reach runs
-    const std::filesystem::path folder = dir / "sizes" / sizeFolderName(study, p);
-    std::filesystem::create_directories(folder);
-    writeComparison(folder, p.comparison);
-  }
+  if (study.first_reach)  // the sizes' comparisons are the first-reach runs
+    for (const ScalingPoint& p : study.points) {
+      const std::filesystem::path folder = dir / "sizes" / sizeFolderName(study, p);
+      std::filesystem::create_directories(folder);
+      writeComparison(folder, p.comparison);
+    }
   writeFileAtomically(dir / "scaling.csv", scalingCsv(study));
   writeFileAtomically(dir / "summary.md", scalingMarkdown(study));
 }

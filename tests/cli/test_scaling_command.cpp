@@ -28,53 +28,63 @@ using Table = test::CsvTable;
 
 constexpr double kTarget = 1e-4;
 
+/// One `stcontact scaling` run on the small seed and what it wrote, removed with the suite.
+struct ScalingReport {
+  fs::path out;
+  int exit_status = -1;
+  Table rows;
+  std::string summary;
+
+  void run(const std::string& name, const std::string& options) {
+    out = test::scratchFolder(name);
+    exit_status = test::runOnSmallSeed("scaling", options, out);
+    rows = readCsv(out / "report" / "scaling.csv");
+    summary = readText(out / "report" / "summary.md");
+  }
+  void remove() const {
+    std::error_code ignored;
+    fs::remove_all(out, ignored);
+  }
+};
+
 class ScalingCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    out_ = test::scratchFolder("scaling_tiny");
-    exit_status_ = test::runOnSmallSeed("scaling", "--arc-nodes 11,21 --steps 11,21 --repeats 1", out_);
-    rows_ = readCsv(out_ / "report" / "scaling.csv");
-    summary_ = readText(out_ / "report" / "summary.md");
+    report_.run("scaling_tiny", "--arc-nodes 11,21 --steps 11,21 --repeats 1");
   }
-  static void TearDownTestSuite() {
-    std::error_code ignored;
-    fs::remove_all(out_, ignored);
-  }
+  static void TearDownTestSuite() { report_.remove(); }
 
   /// (size, time to the target) of `solver` in `series` where it was reached.
   static std::vector<std::pair<double, double>> reached(const std::string& solver, const std::string& series) {
     std::vector<std::pair<double, double>> out;
-    for (const auto& row : rows_.rows)
+    for (const auto& row : report_.rows.rows)
       if (row.at("solver") == solver && row.at("series") == series && row.at("status") == "reached")
         out.emplace_back(std::stod(row.at(series == "mesh" ? "dofs" : "steps")), std::stod(row.at("time_to_target_s")));
     return out;
   }
 
-  static inline fs::path out_;
-  static inline int exit_status_ = -1;
-  static inline Table rows_;
-  static inline std::string summary_;
+  static inline ScalingReport report_;
 };
 
 TEST_F(ScalingCommand, ExitsZeroAndWritesTheReportAndOneComparisonPerSize) {
-  EXPECT_EQ(exit_status_, 0);
-  for (const char* name : {"scaling.csv", "summary.md"}) EXPECT_GT(fs::file_size(out_ / "report" / name), 0u) << name;
+  EXPECT_EQ(report_.exit_status, 0);
+  for (const char* name : {"scaling.csv", "summary.md"}) EXPECT_GT(fs::file_size(report_.out / "report" / name), 0u) << name;
   // (11, 21) and (21, 21) from the mesh series, (21, 11) from the time series; (21, 21) is in both.
   for (const char* size : {"arc_nodes_11_steps_21", "arc_nodes_21_steps_21", "arc_nodes_21_steps_11"})
     for (const char* name : {"work_precision.csv", "summary.csv", "summary.md"})
-      EXPECT_TRUE(fs::exists(out_ / "report" / "sizes" / size / name)) << size << "/" << name;
+      EXPECT_TRUE(fs::exists(report_.out / "report" / "sizes" / size / name)) << size << "/" << name;
 }
 
 TEST_F(ScalingCommand, HasOneRowPerSeriesSizeAndStrategy) {
   const std::size_t solvers = stc::strategyNames().size();
-  EXPECT_EQ(rows_.rows.size(), 4 * solvers);
+  EXPECT_EQ(report_.rows.rows.size(), 4 * solvers);
   for (const char* column : {"series", "arc_nodes", "dofs", "contact_nodes", "steps", "solver", "status",
                              "time_to_target_s", "relaxations_to_target", "sparse_solves_to_target", "peak_rss_mb"})
-    EXPECT_NE(std::find(rows_.header.begin(), rows_.header.end(), column), rows_.header.end()) << column;
+    EXPECT_NE(std::find(report_.rows.header.begin(), report_.rows.header.end(), column), report_.rows.header.end()) << column;
 }
 
 TEST_F(ScalingCommand, EveryRowHasATimeOrSaysWhyNot) {
-  for (const auto& row : rows_.rows) {
+  for (const auto& row : report_.rows.rows) {
     const auto time = number(row.at("time_to_target_s"));
     if (row.at("status") == "reached") {
       ASSERT_TRUE(time.has_value()) << row.at("solver");
@@ -88,7 +98,7 @@ TEST_F(ScalingCommand, EveryRowHasATimeOrSaysWhyNot) {
 
 // The early stop: every timed run of an iterative strategy ends at its first point at or below the target.
 TEST_F(ScalingCommand, IterativeRunsStopAtTheFirstIterationReachingTheTarget) {
-  for (const auto& size : fs::directory_iterator(out_ / "report" / "sizes")) {
+  for (const auto& size : fs::directory_iterator(report_.out / "report" / "sizes")) {
     std::map<std::string, std::vector<double>> errors;
     for (const auto& row : readCsv(size.path() / "work_precision.csv").rows)
       if (row.at("solver") != "incremental") errors[row.at("solver")].push_back(number(row.at("error")).value_or(NAN));
@@ -140,7 +150,7 @@ void expectExponentsFitted(const std::string& summary, Points points_of) {
 }
 
 TEST_F(ScalingCommand, ReportsTheFittedExponentOfEveryStrategyThatReachedTwoSizes) {
-  expectExponentsFitted(summary_, [](const std::string& solver, const std::string& series) {
+  expectExponentsFitted(report_.summary, [](const std::string& solver, const std::string& series) {
     return reached(solver, series);
   });
 }
@@ -148,38 +158,31 @@ TEST_F(ScalingCommand, ReportsTheFittedExponentOfEveryStrategyThatReachedTwoSize
 TEST_F(ScalingCommand, ReportHasTheSeriesExponentsCrossoverAndMemorySections) {
   for (const char* section : {"## Mesh series", "## Time series", "## Growth exponents",
                               "## Against the incremental solver", "## Peak resident memory", "## Machine and build"})
-    EXPECT_NE(summary_.find(section), std::string::npos) << section;
+    EXPECT_NE(report_.summary.find(section), std::string::npos) << section;
 }
 
 TEST_F(ScalingCommand, DrawsThePlotsOrSaysHowToDrawThemLater) {
-  const std::string err = readText(out_ / "stderr.txt");
+  const std::string err = readText(report_.out / "stderr.txt");
   if (err.find("warning: gnuplot") != std::string::npos) {
     EXPECT_NE(err.find("draw them later"), std::string::npos);
     return;
   }
   for (const char* name : {"time_vs_steps.png", "time_vs_dofs.png", "memory_vs_steps.png", "memory_vs_dofs.png"})
-    EXPECT_GT(fs::file_size(out_ / "report" / name), 0u) << name;
+    EXPECT_GT(fs::file_size(report_.out / "report" / name), 0u) << name;
 }
 
 // --only-at-tolerance: the solves at tolerance alone, the fits and plots on their times.
 class ScalingAtToleranceOnly : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    out_ = test::scratchFolder("scaling_at_tolerance");
-    exit_status_ =
-        test::runOnSmallSeed("scaling", "--arc-nodes 11,21 --steps 11,21 --repeats 1 --only-at-tolerance", out_);
-    rows_ = readCsv(out_ / "report" / "scaling.csv");
-    summary_ = readText(out_ / "report" / "summary.md");
+    report_.run("scaling_at_tolerance", "--arc-nodes 11,21 --steps 11,21 --repeats 1 --only-at-tolerance");
   }
-  static void TearDownTestSuite() {
-    std::error_code ignored;
-    fs::remove_all(out_, ignored);
-  }
+  static void TearDownTestSuite() { report_.remove(); }
 
   /// (size, time of the solve at tolerance) of `solver` in `series` where it converged.
   static SizeTimes converged(const std::string& solver, const std::string& series) {
     SizeTimes out;
-    for (const auto& row : rows_.rows)
+    for (const auto& row : report_.rows.rows)
       if (row.at("solver") == solver && row.at("series") == series &&
           row.at("termination_at_tolerance") == "converged")
         out.emplace_back(std::stod(row.at(series == "mesh" ? "dofs" : "steps")),
@@ -187,19 +190,16 @@ class ScalingAtToleranceOnly : public ::testing::Test {
     return out;
   }
 
-  static inline fs::path out_;
-  static inline int exit_status_ = -1;
-  static inline Table rows_;
-  static inline std::string summary_;
+  static inline ScalingReport report_;
 };
 
 TEST_F(ScalingAtToleranceOnly, RunsNoFirstReachAndWritesNoComparisonPerSize) {
-  EXPECT_EQ(exit_status_, 0);
-  EXPECT_FALSE(fs::exists(out_ / "report" / "sizes"));
-  EXPECT_EQ(summary_.find("Time to first reach"), std::string::npos);
-  EXPECT_NE(summary_.find("--only-at-tolerance"), std::string::npos);
-  EXPECT_EQ(rows_.rows.size(), 4 * stc::strategyNames().size());
-  for (const auto& row : rows_.rows) {
+  EXPECT_EQ(report_.exit_status, 0);
+  EXPECT_FALSE(fs::exists(report_.out / "report" / "sizes"));
+  EXPECT_EQ(report_.summary.find("Time to first reach"), std::string::npos);
+  EXPECT_NE(report_.summary.find("--only-at-tolerance"), std::string::npos);
+  EXPECT_EQ(report_.rows.rows.size(), 4 * stc::strategyNames().size());
+  for (const auto& row : report_.rows.rows) {
     EXPECT_EQ(row.at("status"), "not measured") << row.at("solver");
     EXPECT_FALSE(number(row.at("time_to_target_s")).has_value()) << row.at("solver");
     EXPECT_GT(number(row.at("time_at_tolerance_s")).value_or(0.0), 0.0) << row.at("solver");
@@ -212,7 +212,7 @@ TEST_F(ScalingAtToleranceOnly, RunsNoFirstReachAndWritesNoComparisonPerSize) {
 
 TEST_F(ScalingAtToleranceOnly, ReportsTheExponentsOfTheSolvesAtTolerance) {
   ASSERT_GE(converged("incremental", "mesh").size(), 2u);
-  expectExponentsFitted(summary_, [](const std::string& solver, const std::string& series) {
+  expectExponentsFitted(report_.summary, [](const std::string& solver, const std::string& series) {
     return converged(solver, series);
   });
 }
