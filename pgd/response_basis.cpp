@@ -89,6 +89,12 @@ void ResponseBasis::extendEnergyFactor(Eigen::Index added) {
   energy_.appendBlock(products);
 }
 
+Eigen::MatrixXd ResponseBasis::solveInterfaceLoads(const Eigen::MatrixXd& M) const {
+  sparse_solves_ += M.cols();
+  if (condensesInterface()) return factor_.solveFromTrailing(problem_.contact.B, M);
+  return solveColumns(problem_.contact.B.transpose() * M);
+}
+
 Eigen::MatrixXd ResponseBasis::solveColumns(const Eigen::MatrixXd& rhs) const {
   // Parts of a fixed width, whatever the thread count: CHOLMOD's solve runs kernels of 1 to 4
   // columns whose rounding differs, so a column must land in the same group on any thread count.
@@ -135,18 +141,14 @@ void ResponseBasis::completeToEveryRow() {
 
 ResponseBasis::View ResponseBasis::responses() const {
   const Eigen::Index solved = X_.cols(), known = Z_.cols() - pending_;
-  if (solved < known) {
-    X_.append(solveColumns(problem_.contact.B.transpose() * Z_.view().middleCols(solved, known - solved)));
-    sparse_solves_ += known - solved;
-  }
+  if (solved < known) X_.append(solveInterfaceLoads(Z_.view().middleCols(solved, known - solved)));
   return X_.view();
 }
 
 Eigen::MatrixXd ResponseBasis::responsesOf(const Eigen::MatrixXd& M) const {
   const Eigen::Index p = M.rows();
   if (X_.cols() >= p) return X_.view().leftCols(p) * M;
-  sparse_solves_ += M.cols();
-  return solveColumns(problem_.contact.B.transpose() * (Z_.view().leftCols(p) * M));
+  return solveInterfaceLoads(Z_.view().leftCols(p) * M);
 }
 
 Eigen::MatrixXd ResponseBasis::liftedInterface(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& M) const {

@@ -73,7 +73,7 @@ class ResponseBasis {
   /// std::invalid_argument when `grid` has other load vectors, free dofs or interface rows.
   void retime(const Problem& grid);
   /// X_p M (n_free × k) for the first p = M.rows() directions: with X when their responses are
-  /// known, else A⁻¹ Bᵀ (Z_p M), k solves.
+  /// known, else A⁻¹ Bᵀ (Z_p M), k solves (half-solves when the factor condenses the interface).
   Eigen::MatrixXd responsesOf(const Eigen::MatrixXd& M) const;
   /// Right-hand sides solved so far (loads included).
   long sparseSolves() const { return sparse_solves_; }
@@ -99,6 +99,10 @@ class ResponseBasis {
   /// k^{-1/2}-scaled candidates made orthonormal to Zs and each other; dependent ones dropped.
   Eigen::MatrixXd orthonormalised(const Eigen::MatrixXd& candidates, double drop) const;
   void extendEnergyFactor(Eigen::Index added);  ///< the energy factor's columns for the new directions
+  /// A⁻¹ Bᵀ M (n_free × k), k solves counted: half-solves from the factor's trailing block when it
+  /// condenses the interface (SpdSolver::solveFromTrailing: the forward substitution of Bᵀ M, zero
+  /// above that block, is the block's alone), else solveColumns.
+  Eigen::MatrixXd solveInterfaceLoads(const Eigen::MatrixXd& M) const;
   /// A⁻¹ rhs, its columns solved in parts of 4 spread over threadCount() threads (the parts do not
   /// depend on the thread count, so neither does the result).
   Eigen::MatrixXd solveColumns(const Eigen::MatrixXd& rhs) const;

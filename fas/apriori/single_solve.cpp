@@ -23,13 +23,18 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   // displacement, the far nodes' lift (response_basis.hpp); the last record counts those solves.
   // The lift and the separated displacement may each drop what the converged estimate leaves of the
   // tolerance (pgd::truncationBudget): with ε_est bounding the true error e, each is within
-  // e + (τ − ε_est) ≤ τ of the reference in the true error's measure (triangle inequality).
+  // e + (τ − ε_est) ≤ τ of the reference in the true error's measure (triangle inequality). When the
+  // separated displacement is asked for, the far nodes' displacement is its trace, B_F Y_ρ (Σ_ρ W_ρᵀ):
+  // the same truncation, no solve of its own, and the written fields and interface agree there.
   const long before = stage.sparseSolves();
   const double budget = pgd::truncationBudget(result.summary, options.fas.stop.tolerance);
   if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
   if (inputs.separated_displacement)
     result.displacement = pgd::separatedDisplacement(stage.basis(), stage.coordinates(), budget);
-  far_v = stage.basis().displacementOn(B_far, stage.coordinates(), budget);
+  if (result.displacement.held)
+    far_v = (B_far * result.displacement.modes) * result.displacement.time;
+  else
+    far_v = stage.basis().displacementOn(B_far, stage.coordinates(), budget);
   result.summary.addSolvesAfterIteration(stage.sparseSolves() - before);
   return result;
 }
