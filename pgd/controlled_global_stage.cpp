@@ -78,9 +78,15 @@ double ControlledGlobalStage::enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scal
   return error;
 }
 
-Eigen::MatrixXd ControlledGlobalStage::scaledRightHandSides(const InterfaceHistory& hat) const {
+void ControlledGlobalStage::writeScaledRightHandSides(const InterfaceHistory& hat, Eigen::Ref<Eigen::MatrixXd> out) const {
   const Eigen::VectorXd& k = problem_.contact.search_direction;
-  return basis_.invSqrtK().asDiagonal() * (hat.lambda + k.asDiagonal() * hat.v);
+  out = basis_.invSqrtK().asDiagonal() * (hat.lambda + k.asDiagonal() * hat.v);
+}
+
+Eigen::MatrixXd ControlledGlobalStage::scaledRightHandSides(const InterfaceHistory& hat) const {
+  Eigen::MatrixXd w(hat.v.rows(), hat.v.cols());
+  writeScaledRightHandSides(hat, w);
+  return w;
 }
 
 void ControlledGlobalStage::completeWhenDue() {
@@ -143,18 +149,21 @@ ControlledGlobalStage::Anticipated ControlledGlobalStage::anticipateWhitened(con
   if (whitened_rows_.size() == 0)
     whitened_rows_.noalias() = factor.coordinatesOfColumns().rightCols(basis_.size()) * basis_.scaledDirections().transpose();
   out.whitened = factor.coordinatesOfColumns().leftCols(q) * basis_.loadHistories();
-  const Eigen::MatrixXd w = scaledRightHandSides(hat);
-  if (step_samples <= 0 || w_last_.rows() != w.rows() || w_last_.cols() != w.cols()) {
-    out.whitened.noalias() += whitened_rows_ * w;
+  // w̃ and the step's columns in buffers kept from call to call (header: no fresh pages per relaxation).
+  const Eigen::Index m = hat.v.cols();
+  const bool with_step = step_samples > 0 && w_last_.rows() == hat.v.rows() && w_last_.cols() == m;
+  Eigen::MatrixXd& both = buffers_.anticipated;
+  both.resize(hat.v.rows(), m + (with_step ? step_samples : 0));
+  writeScaledRightHandSides(hat, both.leftCols(m));
+  if (!with_step) {
+    out.whitened.noalias() += whitened_rows_ * both;
     return out;
   }
   // One product for the history and the step: R_Z Z̃ᵀ [w̃, (w̃ − w̃_last) Ω].
-  Eigen::MatrixXd both(w.rows(), w.cols() + step_samples);
-  both.leftCols(w.cols()) = w;
-  both.rightCols(step_samples).noalias() = (w - w_last_) * stepSketch(w.cols(), step_samples);
-  const Eigen::MatrixXd product = whitened_rows_ * both;
-  out.whitened += product.leftCols(w.cols());
-  out.step = product.rightCols(step_samples);
+  both.rightCols(step_samples).noalias() = (both.leftCols(m) - w_last_) * stepSketch(m, step_samples);
+  buffers_.product.noalias() = whitened_rows_ * both;
+  out.whitened += buffers_.product.leftCols(m);
+  out.step = buffers_.product.rightCols(step_samples);
   return out;
 }
 
@@ -163,7 +172,8 @@ void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory&
   completeWhenDue();
   if (every_row_) {
     // The exact stage v = V_F G + D w, λ = w − k v (header, "Every row").
-    const Eigen::MatrixXd w = hat.lambda + k.asDiagonal() * hat.v;
+    Eigen::MatrixXd& w = buffers_.solved;
+    w = hat.lambda + k.asDiagonal() * hat.v;
     s.v = basis_.freeResponse();
     s.v.noalias() += basis_.condensedInterface() * w;
     s.lambda = w - k.asDiagonal() * s.v;

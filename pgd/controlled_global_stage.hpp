@@ -94,6 +94,8 @@ class ControlledGlobalStage : public latin::LinearStage {
  private:
   /// w̃ = k^{-1/2} (λ̂ + k v̂), the scaled right-hand sides of a solve from `hat`.
   Eigen::MatrixXd scaledRightHandSides(const InterfaceHistory& hat) const;
+  /// The same written into `out` (d n_C × m): a buffer kept from call to call.
+  void writeScaledRightHandSides(const InterfaceHistory& hat, Eigen::Ref<Eigen::MatrixXd> out) const;
   /// c = Z̃ᵀ w̃ and r̃ = w̃ − Z̃ c, enriched until ‖r̃‖ is at most the current bound. Returns ‖r̃‖.
   double project(const Eigen::MatrixXd& w_scaled, Eigen::MatrixXd& c, Eigen::MatrixXd& r_scaled);
   /// Adds directions from the scaled residual r̃ = k^{-1/2} r while its norm `error` exceeds
@@ -110,6 +112,15 @@ class ControlledGlobalStage : public latin::LinearStage {
   Eigen::MatrixXd w_last_;        ///< w̃ of the last exact solve (every row)
   mutable bool c_stale_ = false;  ///< c_ not yet formed from w_last_ (coordinates())
   Eigen::MatrixXd whitened_rows_;   ///< R_Z Z̃ᵀ once the directions span every row (anticipateWhitened)
+  /// Interface-sized work arrays of the exact stage and of anticipateWhitened, kept from call to
+  /// call: at 10⁴ instants each is tens of MB, which the allocator maps afresh every time (first
+  /// touches of new pages were 16 % of a fretting solve at divisions 16, docs/scale.md).
+  struct Buffers {
+    Eigen::MatrixXd solved;       ///< w = λ̂ + k v̂ of solve
+    Eigen::MatrixXd anticipated;  ///< [w̃, (w̃ − w̃_last) Ω] of anticipateWhitened
+    Eigen::MatrixXd product;      ///< R_Z Z̃ᵀ [w̃, (w̃ − w̃_last) Ω]
+  };
+  Buffers buffers_;
   bool every_row_ = false;
   double target_ = -1.0;  ///< < 0: no gap observed yet
   double error_ = 0.0;
