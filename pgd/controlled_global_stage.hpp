@@ -113,8 +113,9 @@ class ControlledGlobalStage : public latin::LinearStage {
   mutable bool c_stale_ = false;  ///< c_ not yet formed from w_last_ (coordinates())
   Eigen::MatrixXd whitened_rows_;   ///< R_Z Z̃ᵀ once the directions span every row (anticipateWhitened)
   /// Interface-sized work arrays of the exact stage and of anticipateWhitened, kept from call to
-  /// call: at 10⁴ instants each is tens of MB, which the allocator maps afresh every time (first
-  /// touches of new pages were 16 % of a fretting solve at divisions 16, docs/scale.md).
+  /// call: at 10⁴ instants each is tens of MB, which the allocator maps afresh every time (the page
+  /// clearing under these two calls was 12 % of a fretting solve at divisions 16 and 10 001
+  /// instants, docs/scale.md).
   struct Buffers {
     Eigen::MatrixXd solved;       ///< w = λ̂ + k v̂ of solve
     Eigen::MatrixXd anticipated;  ///< [w̃, (w̃ − w̃_last) Ω] of anticipateWhitened
