@@ -24,6 +24,7 @@
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/reference.hpp"
+#include "stcontact/studies/solve_on_ranks.hpp"
 #include "stcontact/studies/solve_options.hpp"
 #include "stcontact/version.hpp"
 
@@ -45,24 +46,11 @@ std::unique_ptr<ErrorReference> referenceOrWarning(const Problem& problem, Termi
   return reference;
 }
 
-// Several ranks solve together through a PETSc backend (src/linalg/ranks.hpp): cholmod, which runs
-// in one process, is refused with the backends that can (auto takes mumps there).
-void requireBackendForRanks(const Scene& scene, const Ranks& ranks) {
-  if (ranks.size > 1 && scene.solver.linear.backend == LinearBackend::Cholmod)
-    throw InputError("solver.linear = \"cholmod\" runs in one process; on " + std::to_string(ranks.size) +
-                     " ranks choose \"mumps\" or \"cg-gamg\" (--set solver.linear='\"mumps\"')");
-}
-
-// The outputs rank 0 writes. On several ranks it writes frames only from a displacement the strategy
-// holds (fas-apriori, latin-pgd: no solve); a strategy that holds none would need every rank's part
-// in a solve per frame, after the other ranks are done (docs/linear_solvers.md, "Ranks").
+// The outputs rank 0 writes (studies/solve_on_ranks.hpp), the note said on the terminal and in run.log.
 OutputSpec outputsOf(const Scene& scene, const Ranks& ranks, const SolveResult& result, TerminalProgress& progress) {
-  OutputSpec output = scene.output;
-  if (ranks.size > 1 && output.frames && !result.displacement.held) {
-    progress.note("no frames on " + std::to_string(ranks.size) + " ranks from " + std::string(scene.solver.name()) +
-                  ", which holds no displacement (fas-apriori and latin-pgd do); solution.h5 holds the rest");
-    output.frames = false;
-  }
+  std::string note;
+  OutputSpec output = outputsOnRanks(scene, ranks, result, note);
+  if (!note.empty()) progress.note(note);
   return output;
 }
 

@@ -53,4 +53,5 @@ PYBIND11_MODULE(_core, module) {
   stc::python::bindScene(module);
   stc::python::bindSolve(module);
   stc::python::bindStudies(module);
+  stc::python::bindRanks(module);
 }

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "stcontact/core/memory.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/contact_tables.hpp"
 #include "stcontact/io/frame_fields.hpp"
@@ -27,6 +28,7 @@
 #include "stcontact/solver/warm_start.hpp"
 #include "stcontact/strategies/registry.hpp"
 #include "stcontact/studies/reference.hpp"
+#include "stcontact/studies/solve_on_ranks.hpp"
 #include "stcontact/studies/solve_options.hpp"
 #include "stcontact/version.hpp"
 
@@ -166,15 +168,17 @@ py::dict contactArrays(const Problem& problem, const InterfaceTable& table) {
 
 /// Everything the Python SolveResult holds. Texts and tables first, while `result` is whole; then
 /// the large matrices are moved into their arrays. Call within the call's thread count (the
-/// summary records it).
-py::dict resultDict(const SceneHandle& run, SolveResult&& result, const PreparedOperators& operators) {
+/// summary records it); `peaks`: every rank's peak memory so far, in rank order.
+py::dict resultDict(const SceneHandle& run, SolveResult&& result, const PreparedOperators& operators,
+                    std::vector<double> peaks) {
   const Scene& scene = run.scene();
   const ProblemPtr problem = run.problem();
   py::dict out;
   out["solver"] = std::string(scene.solver.name());
   out["dimension"] = problem->dimension;
   out["summary_json"] =
-      summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION, {}, {}, {}}, operators.preparations());
+      summaryJson(*problem, result.summary, {scene.parameters_json, STC_VERSION, std::move(peaks), {}, {}},
+                  operators.preparations());
   out["history"] = historyArrays(result.summary);
   const InterfaceTable interface = interfaceTable(*problem, result);  // the states, once for both
   out["reactions"] = reactionArrays(*problem, result, interface);
@@ -210,14 +214,16 @@ SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_refer
 
 py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart warm, py::object callback) {
   const auto started = std::chrono::steady_clock::now();
+  const Ranks ranks = ranksForCall(options.threads);  // under mpirun -np N: one of N ranks
   const ThreadsForCall threads(options.threads);
   const SceneHandle run = handle.withOverrides(
       withSolverOptions(options.sets, options.solver, options.tolerance, options.max_iterations));
   const Scene& scene = run.scene();
   const ProblemPtr problem = run.problem();
   const LinearSolverOptions linear = scene.solver.linearAtTolerance();  // before anything is created
-  std::optional<RunFolder> folder;  // checked and locked before the solve, written whole after it
-  if (options.out) folder.emplace(*options.out);
+  requireBackendForRanks(scene, ranks);
+  std::optional<RunFolder> folder;  // rank 0's: checked and locked before the solve, written whole after it
+  if (options.out && ranks.writes()) folder.emplace(*options.out);
   std::optional<InterfaceHistory> start;
   // each operator prepared once, by the scene's backend: the reference, the solve, the frames
   PreparedOperators operators(linear);
@@ -232,13 +238,17 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
   std::optional<double> reference_s;
   SolveResult result = runSolve(*problem, scene, options.reference, inputs, bridge, warning, reference_s);
   bridge.rethrowPending();
+  std::vector<double> peaks = valuesOfEveryRank(peakResidentBytes());  // every rank takes part
   if (!warning.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
   if (folder) {
-    writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION, {}, started, reference_s},
-                    scene.output, operators);
+    std::string note;
+    const OutputSpec output = outputsOnRanks(scene, ranks, result, note);
+    if (!note.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, note.c_str(), 1) != 0) throw py::error_already_set();
+    writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION, peaks, started, reference_s},
+                    output, operators);
     folder->commit();
   }
-  return resultDict(run, std::move(result), operators);
+  return resultDict(run, std::move(result), operators, std::move(peaks));
 }
 
 /// Full displacements n × m (dof d j: u_x of node j, d j + 1: u_y, d j + 2: u_z in 3D) rebuilt from the forces.

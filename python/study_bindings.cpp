@@ -65,6 +65,7 @@ py::dict svdDict(pgd::SpaceTimeSvd&& svd, const Problem& problem, int modes) {
 }
 
 py::dict svd(const SceneHandle& handle, int modes, const std::vector<std::string>& sets, std::optional<int> threads) {
+  requireOneProcess("svd");
   const ThreadsForCall thread_count(threads);
   const SceneHandle run = handle.withOverrides(sets);
   const std::shared_ptr<const Problem> problem = run.problem();
@@ -182,6 +183,7 @@ py::dict comparisonDict(const Comparison& c) {
 }
 
 py::dict compare(const SceneHandle& handle, const CompareOptions& o) {
+  requireOneProcess("compare");
   const ThreadsForCall thread_count(o.threads);
   if (o.repeats < 1) throw InputError("--repeats must be >= 1");
   const SceneHandle run = handle.withOverrides(o.sets);

@@ -15,7 +15,9 @@ A scene is a TOML file, a TOML text or a dict with the file's keys; either way t
 reader checks it, and bad input raises InputError (a ValueError) with the command line's message
 (FileNotFoundError for a scene or mesh file that does not exist). Solves release the interpreter's
 lock and stop on Ctrl-C (KeyboardInterrupt); threads= applies to that call alone. Scenes and
-results pickle.
+results pickle. Started by `mpirun -np N python3 script.py` (a build with PETSc), solve() runs on the
+N ranks together, as `mpirun -np N stcontact solve` does: every rank makes the same calls and
+receives the whole result, rank 0 alone writes `out` (ranks() says which one a process is).
 """
 
 from __future__ import annotations  # the annotations below as text: X | None on Python 3.8 too
@@ -41,8 +43,8 @@ _PathLike = Union[str, "os.PathLike[str]"]
 _SceneLike = Union["Scene", _PathLike, "Mapping[str, Any]"]
 _Sets = Union[str, Sequence[str], "Mapping[str, Any]", None]
 
-__all__ = ["Scene", "load_scene", "check", "solve", "svd", "compare", "available_solvers", "load_run", "Run", "InputError",
-           "IterationRecord", "SolveResult", "SvdResult", "CompareResult", "Strategy", "__version__",
+__all__ = ["Scene", "load_scene", "check", "solve", "svd", "compare", "available_solvers", "ranks", "load_run", "Run",
+           "InputError", "IterationRecord", "SolveResult", "SvdResult", "CompareResult", "Strategy", "__version__",
            "blas_kernels"]
 
 
@@ -152,6 +154,16 @@ def load_scene(scene: _SceneLike, sets: _Sets = None) -> Scene:
 def available_solvers() -> list[str]:
     """The strategies solve() and compare() accept."""
     return list(_core.available_solvers())
+
+
+def ranks() -> tuple[int, int]:
+    """(rank, size): this process's MPI rank and how many there are. Under `mpirun -np N` (a build
+    with PETSc) the first call starts them, and solve() runs on all N together: every rank must make
+    the same calls in the same order (each solve is collective), each receives the whole result, and
+    rank 0 alone writes `out`; each rank runs one thread, and svd() and compare() are refused there.
+    (0, 1) without a launcher."""
+    rank, size = _core.ranks()
+    return rank, size
 
 
 def check(scene: _SceneLike, sets: _Sets = None) -> dict[str, Any]:

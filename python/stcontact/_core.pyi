@@ -17,6 +17,7 @@ class InputError(ValueError):
     """Bad input: the message is the command line's "error:" line without its prefix."""
 
 def available_solvers() -> list[str]: ...
+def ranks() -> tuple[int, int]: ...
 
 class Scene:
     """A validated scene (TOML text, source, --set overrides)."""
