@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stcontact/core/memory.hpp"
 #include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/ranks.hpp"
 #include "stcontact/pgd/separated_history.hpp"
 #include "stcontact/solver/warm_start.hpp"
 
@@ -29,6 +31,11 @@ Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double norm, double 
   return Q * svd.U.leftCols(keep);
 }
 
+// The bytes the responses may hold: the options' share of the memory available to this rank.
+double responseBytes(const ControlledStageOptions& options) {
+  return options.response_share * availableMemoryBytes() / ranksOnThisMachine();
+}
+
 }  // namespace
 
 // An owner of its own, which the stage outlives: the operator stays with the stage's shared pointer.
@@ -41,7 +48,7 @@ ControlledGlobalStage::ControlledGlobalStage(const Problem& problem, ControlledS
       options_(options),
       // the interface's dofs last at any size (header)
       operator_(operators.searchOperator(problem, {dofsReadBy(problem.contact.B), /*min_work=*/0.0})),
-      basis_(problem, *operator_->factor) {
+      basis_(problem, *operator_->factor, responseBytes(options)) {
   options_.validate();
 }
 

@@ -14,13 +14,14 @@ constexpr double kReorthogonalise = 0.70710678118654752;  ///< 1/√2: a second 
 
 }  // namespace
 
-ResponseBasis::ResponseBasis(const Problem& problem, const SpdSolver& factor)
+ResponseBasis::ResponseBasis(const Problem& problem, const SpdSolver& factor, double response_bytes)
     : problem_(problem),
       factor_(factor),
       Z_(problem.contact.rows()),
       Zs_(problem.contact.rows()),
       T_(problem.contact.rows()),
-      X_(problem.numFreeDofs()) {
+      X_(problem.numFreeDofs()),
+      response_bytes_(response_bytes) {
   if (factor.condenses(problem.contact.B)) condensed_ = factor.condensed(problem.contact.B);
   const Eigen::VectorXd& k = problem.contact.search_direction;
   sqrt_k_ = k.cwiseSqrt();
@@ -120,8 +121,8 @@ void ResponseBasis::solvePending() {
   } else {
     const Eigen::MatrixXd X = solveColumns(problem_.contact.B.transpose() * Z_.view().rightCols(added));
     sparse_solves_ += added;
-    X_.append(X);
     T_.append(problem_.contact.B * X);
+    keepOrRelease(X);
   }
   pending_ = 0;
   extendEnergyFactor(added);
@@ -139,7 +140,19 @@ void ResponseBasis::completeToEveryRow() {
   solvePending();
 }
 
+void ResponseBasis::keepOrRelease(const Eigen::MatrixXd& X) {
+  const double bytes = static_cast<double>(sizeof(double)) * static_cast<double>(X.rows()) *
+                       static_cast<double>(X_.cols() + X.cols());
+  if (!released_ && bytes <= response_bytes_) {
+    X_.append(X);
+    return;
+  }
+  X_ = ColumnStore(problem_.numFreeDofs());  // its memory given back
+  released_ = true;
+}
+
 ResponseBasis::View ResponseBasis::responses() const {
+  if (released_) throw std::logic_error("ResponseBasis::responses: released beyond their bytes (responsesOf solves them)");
   const Eigen::Index solved = X_.cols(), known = Z_.cols() - pending_;
   if (solved < known) X_.append(solveInterfaceLoads(Z_.view().middleCols(solved, known - solved)));
   return X_.view();

@@ -15,7 +15,13 @@
 // the iteration then makes no sparse solve, and the responses X are solved only when asked for
 // (responses(): the spatial modes of a verification), the displacements of other rows through the
 // rank of the history instead (displacementOn).
+// Where it does not, each direction's response is solved for its trace and kept while X fits in the
+// bytes the basis was given; beyond, X is released and the traces alone are kept, as with the
+// trailing block: the iteration is the same, and what needs X later (responsesOf, displacementOn,
+// the spatial modes) solves it again through the rank of what it asks for (at 10⁶ dofs X would
+// outgrow the machine before the iteration ends: docs/linear_solvers.md, "A million degrees of freedom").
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include "stcontact/linalg/spd_solver.hpp"
@@ -28,15 +34,20 @@ namespace stc::pgd {
 class ResponseBasis {
  public:
   using View = ColumnStore::View;
-  /// `factor` factorises A = K_ff + Bᵀ k B, k = problem.contact.search_direction.
-  ResponseBasis(const Problem& problem, const SpdSolver& factor);
+  /// `factor` factorises A = K_ff + Bᵀ k B, k = problem.contact.search_direction; `response_bytes`:
+  /// the most the responses X may hold where the factor does not condense the interface (header).
+  ResponseBasis(const Problem& problem, const SpdSolver& factor,
+                double response_bytes = std::numeric_limits<double>::infinity());
 
   int size() const { return static_cast<int>(Z_.cols()); }       ///< p
   int maxSize() const { return static_cast<int>(Z_.rows()); }    ///< d n_C: Z then spans every w
   View directions() const { return Z_.view(); }                  ///< Z, d n_C × p
   View scaledDirections() const { return Zs_.view(); }           ///< k^{-1/2} Z: orthonormal columns
-  /// X = A⁻¹ Bᵀ Z, n_free × p (solved now for the directions whose responses were not).
+  /// X = A⁻¹ Bᵀ Z, n_free × p (solved now for the directions whose responses were not). Throws
+  /// std::logic_error once they were released (holdsResponses(): use responsesOf).
   View responses() const;
+  /// False once the responses outgrew the bytes the basis was given and were released (header).
+  bool holdsResponses() const { return !released_; }
   View traces() const { return T_.view(); }                      ///< T = B X, d n_C × p
   const Eigen::MatrixXd& loadResponses() const { return UF_; }   ///< U_F = A⁻¹ F, n_free × q
   const Eigen::MatrixXd& loadTraces() const { return VF_; }      ///< V_F = B U_F, d n_C × q
@@ -99,6 +110,9 @@ class ResponseBasis {
   /// k^{-1/2}-scaled candidates made orthonormal to Zs and each other; dependent ones dropped.
   Eigen::MatrixXd orthonormalised(const Eigen::MatrixXd& candidates, double drop) const;
   void extendEnergyFactor(Eigen::Index added);  ///< the energy factor's columns for the new directions
+  /// Appends the new directions' responses X to X_ while X_ stays within response_bytes_; else
+  /// releases X_ for good (header).
+  void keepOrRelease(const Eigen::MatrixXd& X);
   /// A⁻¹ Bᵀ M (n_free × k), k solves counted: half-solves from the factor's trailing block when it
   /// condenses the interface (SpdSolver::solveFromTrailing: the forward substitution of Bᵀ M, zero
   /// above that block, is the block's alone), else solveColumns.
@@ -116,6 +130,8 @@ class ResponseBasis {
   Eigen::MatrixXd condensed_;  ///< D = B A⁻¹ Bᵀ from the factor's trailing block, or empty
   ColumnStore Z_, Zs_, T_;
   mutable ColumnStore X_;      ///< behind Z_ when D gives the traces: solved by responses()
+  double response_bytes_;      ///< the most X_ may hold where each direction is solved
+  bool released_ = false;      ///< X_ outgrew response_bytes_ and was released: traces alone
   Eigen::MatrixXd UF_, VF_, G_, v0_;
   EnergyFactor energy_;
   mutable std::vector<SpdSolver::Workspace> workspaces_;

@@ -78,7 +78,10 @@ EnergySvd energySvd(const ResponseBasis& basis, const Eigen::MatrixXd& c, int co
 Eigen::MatrixXd spatialModes(const ResponseBasis& basis, const Eigen::MatrixXd& combination) {
   const Eigen::Index q = basis.loadResponses().cols();
   Eigen::MatrixXd Y = basis.loadResponses() * combination.topRows(q);
-  Y.noalias() += basis.responses() * combination.bottomRows(combination.rows() - q);
+  if (!basis.holdsResponses())  // released beyond their bytes: the modes' own solves
+    Y += basis.responsesOf(combination.bottomRows(combination.rows() - q));
+  else
+    Y.noalias() += basis.responses() * combination.bottomRows(combination.rows() - q);
   return Y;
 }
 

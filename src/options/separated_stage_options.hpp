@@ -13,6 +13,11 @@ struct ControlledStageOptions {
   /// when the factor gives D = B A⁻¹ Bᵀ (pgd/controlled_global_stage.hpp, "Every row"): 1 completes
   /// only a basis the enrichment has filled.
   double full_share = 0.3;
+  /// Share of the memory available to a rank (its share of MemAvailable) that the directions'
+  /// responses X (n_free × p) may hold where the factor does not condense the interface; beyond, the
+  /// traces alone are kept and the modes solved again when asked for (pgd/response_basis.hpp). The
+  /// iterates do not depend on it. 0.25 leaves room for the factor or preconditioner and the histories.
+  double response_share = 0.25;
   int block = 8;             ///< directions added per enrichment pass at most
   int oversampling = 4;      ///< extra random samples of the range finder
   int power_iterations = 1;  ///< subspace iterations of the range finder
@@ -21,6 +26,7 @@ struct ControlledStageOptions {
   static void fields(Self& o, Visit&& visit) {
     visit("pgd_gap_share", o.gap_share, inOpenUnit());
     visit("pgd_full_share", o.full_share, inUnitHalfOpen());
+    visit("pgd_response_share", o.response_share, inUnitClosed());
     visit("block", o.block, atLeast(1), Exposure::Library);
     visit("oversampling", o.oversampling, atLeast(0), Exposure::Library);
     visit("power_iterations", o.power_iterations, atLeast(0), Exposure::Library);

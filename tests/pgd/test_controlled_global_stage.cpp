@@ -141,6 +141,47 @@ TEST(ResponseBasis, TracesFromTheFactorsTrailingBlockAreThoseOfTheSolves) {
   EXPECT_EQ(condensed.sparseSolves(), loads + 3 + 11);
 }
 
+// Where the factor does not condense the interface, the responses are kept while they fit in the
+// bytes the basis was given (here 11 columns of n_free doubles) and released beyond (the 12th): the
+// traces and energy factor are those of a basis that keeps them, bitwise (the same solves); what
+// needs X afterwards solves it again, to the solves' accuracy, through the rank of what it asks for.
+TEST(ResponseBasis, ReleasesItsResponsesBeyondItsBytesAndSolvesThemAgainWhenAsked) {
+  const auto& f = fixture();
+  const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(f.problem);
+  const stc::CholmodFactor plain(A, "K + B^T k B");
+  const double eleven = 11.0 * sizeof(double) * f.problem.numFreeDofs();
+  stc::pgd::ResponseBasis kept(f.problem, plain), bounded(f.problem, plain, eleven);
+  std::srand(19);
+  const Eigen::MatrixXd candidates = Eigen::MatrixXd::Random(f.problem.contact.rows(), 12);
+  ASSERT_EQ(kept.append(candidates.leftCols(11)), 11);
+  ASSERT_EQ(kept.append(candidates.rightCols(1)), 1);
+  ASSERT_EQ(bounded.append(candidates.leftCols(11)), 11);
+  EXPECT_TRUE(bounded.holdsResponses());
+  ASSERT_EQ(bounded.append(candidates.rightCols(1)), 1);
+  EXPECT_FALSE(bounded.holdsResponses());
+  EXPECT_THROW(bounded.responses(), std::logic_error);
+  EXPECT_TRUE(Eigen::MatrixXd(bounded.traces()) == Eigen::MatrixXd(kept.traces()));
+  EXPECT_EQ(bounded.energyFactor().rank(), kept.energyFactor().rank());
+  const long solves = bounded.sparseSolves();
+  EXPECT_EQ(solves, kept.sparseSolves());
+  // The displacement of other rows from a history of rank 3: 3 solves again.
+  const Eigen::SparseMatrix<double> B_rows = stc::restrictToNodes(f.problem.contact, {0, 1, 2, 3}).B;
+  const Eigen::MatrixXd c = Eigen::MatrixXd::Random(12, 3) * Eigen::MatrixXd::Random(3, f.problem.numSteps());
+  const Eigen::MatrixXd v = kept.displacementOn(B_rows, c);
+  EXPECT_LE((bounded.displacementOn(B_rows, c) - v).norm(), 1e-10 * v.norm());
+  EXPECT_EQ(bounded.sparseSolves(), solves + 3);
+  EXPECT_EQ(kept.sparseSolves(), solves);
+  // Two modes' responses, and the spatial modes of every direction: one solve per column asked.
+  const Eigen::MatrixXd M = Eigen::MatrixXd::Random(12, 2);
+  const Eigen::MatrixXd XM = kept.responsesOf(M);
+  EXPECT_LE((bounded.responsesOf(M) - XM).norm(), 1e-10 * XM.norm());
+  EXPECT_EQ(bounded.sparseSolves(), solves + 5);
+  const Eigen::MatrixXd combination = Eigen::MatrixXd::Random(kept.loadResponses().cols() + 12, 4);
+  const Eigen::MatrixXd Y = stc::pgd::spatialModes(kept, combination);
+  EXPECT_LE((stc::pgd::spatialModes(bounded, combination) - Y).norm(), 1e-10 * Y.norm());
+  EXPECT_EQ(bounded.sparseSolves(), solves + 9);
+}
+
 // Completed to span every row (from 11 directions), the basis stays k⁻¹-orthonormal, its traces are
 // D Z = B A⁻¹ Bᵀ Z (checked against solves), its energy factor covers every column, and no sparse
 // solve was made. A basis whose factor does not give D refuses.

@@ -117,6 +117,38 @@ GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(LinearBackendRun);
 
 }  // namespace
 
+// The separated stage's responses released at once (solver.pgd_response_share = 0) on a backend
+// without the trailing block: the same iterates bitwise (the traces are those of the same solves),
+// while the lift of the nodes left out of the zone and the spatial modes solve again, and agree with
+// those of the kept responses to the solves' round-off.
+TEST(LinearBackendResponses, ReleasedAtOnceTheIteratesAreTheSame) {
+  if (!stc::petscBackendsBuilt()) GTEST_SKIP() << "a build without PETSc: every factor condenses the interface";
+  const stc::test::StrategyFixture& base = reference(3);
+  stc::SolverSpec kept = base.scene.solver, released = kept;
+  kept.setTolerance(kTolerance);
+  kept.linear.backend = stc::LinearBackend::Mumps;
+  released = kept;
+  released.fas_apriori.stage.response_share = 0.0;
+  const auto run = [&](const stc::SolverSpec& spec) {
+    stc::PreparedOperators operators(spec.linearAtTolerance());
+    stc::SolveInputs inputs;
+    inputs.operators = &operators;
+    inputs.spatial_modes = true;
+    return stc::solve(stc::strategyNamed("fas-apriori"), base.problem, spec, inputs);
+  };
+  const stc::SolveResult a = run(kept), b = run(released);
+  ASSERT_TRUE(a.summary.converged()) << a.summary.message;
+  EXPECT_EQ(b.summary.iterations, a.summary.iterations);
+  EXPECT_EQ(b.summary.error_estimate, a.summary.error_estimate);
+  EXPECT_TRUE(b.interface.lambda == a.interface.lambda);
+  EXPECT_GT(b.summary.sparseSolves(), a.summary.sparseSolves());
+  std::cout << "[ measured ] sparse solves kept " << a.summary.sparseSolves() << ", released "
+            << b.summary.sparseSolves() << "\n";
+  ASSERT_EQ(b.spatial_modes.cols(), a.spatial_modes.cols());
+  EXPECT_LE(relativeDifference(b.spatial_modes, a.spatial_modes), 1e-8);
+  EXPECT_LE(relativeDifference(b.interface.v, a.interface.v), 1e-8);
+}
+
 // A Krylov solve that reaches its cap ends the run as a numerical issue naming the backend and
 // PETSc's reason, with zero fields: never a wrong answer, never an internal failure.
 TEST(LinearBackendFailure, EndsTheRunAsANumericalIssueNamingTheBackend) {
