@@ -110,8 +110,8 @@ class ResponseBasis {
   /// k^{-1/2}-scaled candidates made orthonormal to Zs and each other; dependent ones dropped.
   Eigen::MatrixXd orthonormalised(const Eigen::MatrixXd& candidates, double drop) const;
   void extendEnergyFactor(Eigen::Index added);  ///< the energy factor's columns for the new directions
-  /// Appends the new directions' responses X to X_ while X_ stays within response_bytes_; else
-  /// releases X_ for good (header).
+  /// Appends the new directions' responses X to X_ while X_'s storage stays within response_bytes_
+  /// (its spare capacity and the copy while it grows counted); else releases X_ for good (header).
   void keepOrRelease(const Eigen::MatrixXd& X);
   /// A⁻¹ Bᵀ M (n_free × k), k solves counted: half-solves from the factor's trailing block when it
   /// condenses the interface (SpdSolver::solveFromTrailing: the forward substitution of Bᵀ M, zero
