@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "stcontact/core/memory.hpp"
 #include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/linalg/ranks.hpp"
 #include "stcontact/pgd/separated_history.hpp"
@@ -33,7 +32,7 @@ Eigen::MatrixXd leadingDirections(const Eigen::MatrixXd& R, double norm, double 
 
 // The bytes the responses may hold: the options' share of the memory available to this rank.
 double responseBytes(const ControlledStageOptions& options) {
-  return options.response_share * availableMemoryBytes() / ranksOnThisMachine();
+  return options.response_share * availableMemoryOfThisRank();
 }
 
 }  // namespace

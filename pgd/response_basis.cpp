@@ -141,10 +141,11 @@ void ResponseBasis::completeToEveryRow() {
 }
 
 void ResponseBasis::keepOrRelease(const Eigen::MatrixXd& X) {
+  if (released_) return;
   // The storage while they are appended (ColumnStore doubles its capacity, and holds both meanwhile).
   const double bytes = static_cast<double>(sizeof(double)) * static_cast<double>(X.rows()) *
                        static_cast<double>(X_.storageWhileAppending(X.cols()));
-  if (!released_ && bytes <= response_bytes_) {
+  if (bytes <= response_bytes_) {
     X_.append(X);
     return;
   }

@@ -3,7 +3,6 @@
 #include <stdexcept>
 
 #include "stcontact/build_config.hpp"
-#include "stcontact/core/memory.hpp"
 #include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/linalg/ranks.hpp"
 #if STC_HAVE_PETSC
@@ -23,7 +22,7 @@ std::unique_ptr<SpdSolver> prepareSpdSolver(const Eigen::SparseMatrix<double>& A
   double max_factor_bytes = CholmodFactor::kNoMemoryBound;
   if (requested.backend == LinearBackend::Auto) {
     const AutoBackend choice =
-        autoBackend(currentRanks().size, petscBackendsBuilt(), availableMemoryBytes() / ranksOnThisMachine());
+        autoBackend(currentRanks().size, petscBackendsBuilt(), availableMemoryOfThisRank());
     options.backend = choice.backend;
     max_factor_bytes = choice.max_factor_bytes;
   }

@@ -7,6 +7,7 @@
 
 #include "stcontact/build_config.hpp"
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/memory.hpp"
 #include "stcontact/core/threads.hpp"
 #if STC_HAVE_PETSC
 #include "stcontact/linalg/backends/petsc/petsc_solver.hpp"
@@ -51,6 +52,8 @@ int ranksOnThisMachine() {
     if (const char* value = std::getenv(name)) return std::clamp(std::atoi(value), 1, started.size);
   return started.size;
 }
+
+double availableMemoryOfThisRank() { return availableMemoryBytes() / ranksOnThisMachine(); }
 
 std::vector<double> valuesOfEveryRank(double value) {
 #if STC_HAVE_PETSC

@@ -26,6 +26,8 @@ Ranks currentRanks();
 /// The ranks started on this machine (the launcher's OMPI_COMM_WORLD_LOCAL_SIZE, MPI_LOCALNRANKS),
 /// which share its memory; all of them when it does not say; 1 in one process.
 int ranksOnThisMachine();
+/// The memory available to this rank: the machine's (MemAvailable) shared by its ranksOnThisMachine().
+double availableMemoryOfThisRank();
 
 /// `value` of every rank, in rank order, on every rank: a collective call on several ranks (each must
 /// make it, in the same order), {value} on one.
