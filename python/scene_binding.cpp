@@ -54,7 +54,8 @@ py::dict checkSizes(const SceneHandle& handle) {
 /// node ids; 2D) or tetrahedra (E × 4, positive volume; 3D), contact_nodes (n_C mesh node ids, in the order of the interface rows),
 /// master_nodes (two bodies: the master node paired with each, else empty), master_facets and
 /// master_weights (two bodies: n_C × k, the master nodes each is compared with, −1 padded, and their
-/// weights; k = 1 node to node, d node to segment; else 0 × 0), initial_gap (n_C), times (m).
+/// weights; k = 1 node to node, d node to segment; else 0 × 0), initial_gap (n_C), search_direction
+/// (d n_C: k per interface row), times (m).
 py::dict meshArrays(const SceneHandle& handle) {
   const std::shared_ptr<const Problem> problem = handle.problem();
   py::dict mesh;
@@ -67,6 +68,7 @@ py::dict meshArrays(const SceneHandle& handle) {
   mesh["master_facets"] = movedToNumpy(Eigen::MatrixXi(problem->contact.master_facets.transpose()));
   mesh["master_weights"] = movedToNumpy(Eigen::MatrixXd(problem->contact.master_weights.transpose()));
   mesh["initial_gap"] = movedToNumpy(Eigen::VectorXd(problem->contact.initial_gap));
+  mesh["search_direction"] = movedToNumpy(Eigen::VectorXd(problem->contact.search_direction));
   mesh["times"] = movedToNumpy(std::vector<double>(problem->times));
   return mesh;
 }

@@ -131,6 +131,11 @@ def test_warm_start_from_a_neighbour_takes_fewer_relaxations(small_scene):
     assert first.spatial_modes.shape[0] == small_scene.check()["free_dofs"] and first.spatial_modes.shape[1] > 0
     assert first.interface_directions.shape[0] == 2 * small_scene.check()["contact_nodes"]
     assert first.interface_directions.shape[1] > 0
+    # Orthonormal in the k⁻¹ product of the scene's search direction (docs/python.md).
+    k = small_scene.mesh()["search_direction"]
+    assert k.shape == (2 * small_scene.check()["contact_nodes"],) and np.all(k > 0.0)
+    Z = first.interface_directions
+    np.testing.assert_allclose(Z.T @ (Z / k[:, None]), np.eye(Z.shape[1]), rtol=0, atol=1e-10)
 
 
 def test_spatial_modes_can_be_turned_off_without_changing_the_solution(small_scene):
