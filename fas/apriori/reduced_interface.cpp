@@ -81,11 +81,10 @@ std::optional<SolveResult> solveWithinPrescribedReach(const Problem& problem, co
   if (!W) return std::nullopt;
   std::vector<int> reach = nodesWithinReach(problem.contact, *W, options.zone.reach_margin);
   if (reach.empty() || reach.size() > options.zone.whole_share * problem.contact.size()) return std::nullopt;
-  InterfaceHistory rigid;
-  if (!from.start) {
-    rigid = rigidMotionHistory(problem.contact, *W);
-    from.start = &rigid;
-  }
+  if (!from.start)  // its rows formed as each round reads them: no whole-interface history held
+    from.start = StartOnRows([&contact = problem.contact, W = *W](const std::vector<int>& rows) {
+      return rigidMotionHistory(contact, W, rows);
+    });
   from.hat = from.start;
   from.zone_origin = inputs.start ? "the zone within reach of the prescribed motion"
                                   : "the zone within reach of the prescribed motion, started from it carried rigidly";

@@ -162,9 +162,8 @@ class ZoneRounds {
  private:
   // The rows `rows` of the next round's start: the last round's ŝ, or the first start (s = 0 when none).
   InterfaceHistory startOn(const std::vector<int>& rows) const {
-    const InterfaceHistory* hat = hat_ ? &*hat_ : first_hat_;
-    if (hat) return restricted(*hat, rows);
-    return InterfaceHistory::zerosWithRows(static_cast<int>(rows.size()), problem_.numSteps());
+    if (hat_) return restricted(*hat_, rows);
+    return first_hat_.rows(rows, problem_.numSteps());
   }
   // The next round's records count from the rounds so far, on the solve's clock (from_.clock) less
   // the time spent measuring true errors, as the monitor leaves out its own.
@@ -203,7 +202,7 @@ class ZoneRounds {
   const SolveInputs& inputs_;
   const ZoneStart& from_;
   const SeparatedCoarseBasis& coarse_basis_;
-  const InterfaceHistory* first_hat_;     ///< where the first round starts (null: s = 0)
+  StartOnRows first_hat_;                ///< where the first round starts (none: s = 0)
   std::optional<InterfaceHistory> hat_;  ///< where a later round starts, when not from first_hat_
   std::optional<Eigen::MatrixXd> seed_;
   RecordOrigin done_;  ///< iterations, relaxations and sparse solves of the rounds so far
@@ -226,6 +225,12 @@ std::string whyAnotherRound(const SolveSummary& last, std::size_t penetrating) {
 }
 
 }  // namespace
+
+InterfaceHistory StartOnRows::rows(const std::vector<int>& rows, int steps) const {
+  if (held_) return restricted(*held_, rows);
+  if (form_) return form_(rows);
+  return InterfaceHistory::zerosWithRows(static_cast<int>(rows.size()), steps);
+}
 
 ErrorOnRows::ErrorOnRows(const ErrorMeasure& whole, std::vector<int> rows, int all_rows)
     : whole_(whole), rows_(std::move(rows)), all_rows_(all_rows) {}

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,12 +44,29 @@ class ErrorOnRows : public ErrorMeasure {
   mutable std::atomic<long long> nanoseconds_{0};
 };
 
+/// A history over the whole interface of which a round reads the rows of its zone: one held (a start
+/// given, the first relaxation's ŝ; it must outlive the solve), or its rows formed on demand (the body
+/// carried rigidly by the prescribed motion: no whole-interface history is held). None: s = 0.
+class StartOnRows {
+ public:
+  using Form = std::function<InterfaceHistory(const std::vector<int>& rows)>;
+  StartOnRows() = default;
+  StartOnRows(const InterfaceHistory* held) : held_(held) {}  // NOLINT: a held history is a start
+  explicit StartOnRows(Form form) : form_(std::move(form)) {}
+  explicit operator bool() const { return held_ != nullptr || static_cast<bool>(form_); }
+  /// Its rows `rows`, `steps` instants (zero without a start).
+  InterfaceHistory rows(const std::vector<int>& rows, int steps) const;
+
+ private:
+  const InterfaceHistory* held_ = nullptr;
+  Form form_;
+};
+
 /// Where the rounds start: ŝ on the whole interface (the first start, or the first relaxation's local
-/// stage), and what was spent before (counted in the result). The histories pointed to must outlive
-/// the solve; each round copies the rows of its zone alone.
+/// stage), and what was spent before (counted in the result). Each round reads the rows of its zone alone.
 struct ZoneStart {
-  const InterfaceHistory* hat = nullptr;    ///< ŝ of the first round (null: s = 0)
-  const InterfaceHistory* start = nullptr;  ///< the first start (null: s = 0), for a whole-interface restart
+  StartOnRows hat;    ///< ŝ of the first round (none: s = 0)
+  StartOnRows start;  ///< the first start (none: s = 0), for a whole-interface restart
   std::optional<IterationRecord> first;     ///< the record of a first relaxation, counted in the result
   double measure_s = 0.0;                   ///< time spent measuring its true error (not the solve's)
   std::string zone_origin;                  ///< where the zone came from, for the summary's message

@@ -1,6 +1,7 @@
 #include "stcontact/problem/prescribed_reach.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 #include "stcontact/mesh/connected_parts.hpp"
 
@@ -83,14 +84,21 @@ std::vector<int> nodesWithinReach(const ContactInterface& contact, const Eigen::
 }
 
 InterfaceHistory rigidMotionHistory(const ContactInterface& contact, const Eigen::MatrixXd& W) {
+  std::vector<int> every(static_cast<size_t>(contact.rows()));
+  std::iota(every.begin(), every.end(), 0);
+  return rigidMotionHistory(contact, W, every);
+}
+
+InterfaceHistory rigidMotionHistory(const ContactInterface& contact, const Eigen::MatrixXd& W, const std::vector<int>& rows) {
   const int d = contact.dimension;
-  InterfaceHistory h = InterfaceHistory::zeros(contact, static_cast<int>(W.cols()));
-  for (int i = 0; i < contact.size(); ++i) {
-    h.v.row(contact.normalRow(i)) = contact.normals.col(i).transpose() * W;
-    for (int a = 1; a < d; ++a)
-      h.v.row(contact.normalRow(i) + a) = contact.tangents.col((d - 1) * i + a - 1).transpose() * W;
+  std::vector<char> held(static_cast<size_t>(contact.rows()), 0);
+  for (int row : contact.held_rows) held[row] = 1;
+  InterfaceHistory h = InterfaceHistory::zerosWithRows(static_cast<int>(rows.size()), static_cast<int>(W.cols()));
+  for (size_t r = 0; r < rows.size(); ++r) {
+    const int row = rows[r], i = row / d, a = row % d;
+    if (held[row]) continue;
+    h.v.row(r) = (a == 0 ? contact.normals.col(i) : contact.tangents.col((d - 1) * i + a - 1)).transpose() * W;
   }
-  for (int row : contact.held_rows) h.v.row(row).setZero();
   return h;
 }
 

@@ -32,5 +32,9 @@ std::vector<int> nodesWithinReach(const ContactInterface& contact, const Eigen::
 /// The interface history of the body carried rigidly by w: v_n = n_i · w(t_k), v_τ = τ_i · w(t_k)
 /// (0 on held rows), λ = 0.
 InterfaceHistory rigidMotionHistory(const ContactInterface& contact, const Eigen::MatrixXd& W);
+/// Its rows `rows` alone (interface rows, any order), the same values: what a solve on a zone of the
+/// interface reads, without the whole interface's history (at 3009 contact nodes and 10⁴ instants,
+/// 1.4 GB where the zone of 197 nodes reads 95 MB).
+InterfaceHistory rigidMotionHistory(const ContactInterface& contact, const Eigen::MatrixXd& W, const std::vector<int>& rows);
 
 }  // namespace stc

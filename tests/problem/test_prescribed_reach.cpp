@@ -92,6 +92,26 @@ TEST(PrescribedReach, TheRigidMotionHistoryIsTheTranslatedBodysInterfaceDisplace
   EXPECT_GT(h.v.cwiseAbs().maxCoeff(), 0.1);  // the seed's top goes 0.11 down
 }
 
+// A zone's rows alone, in any order, are the whole history's rows to the bit (what the reduced
+// interface's rounds read in place of the whole history), held rows included.
+TEST(PrescribedReach, TheRigidMotionOnSomeRowsIsThoseRowsOfTheWholeHistory) {
+  stc::Problem p = stc::buildProblem(stc::test::seedScene(31, 21));
+  p.contact.held_rows = {p.contact.normalRow(3) + 1};  // a tangential row held: zero in both
+  const auto W = stc::prescribedTranslation(p);
+  ASSERT_TRUE(W.has_value());
+  const stc::InterfaceHistory whole = stc::rigidMotionHistory(p.contact, *W);
+  const std::vector<int> rows = {p.contact.normalRow(3) + 1, 40, 7, 0, p.contact.rows() - 1};
+  const stc::InterfaceHistory part = stc::rigidMotionHistory(p.contact, *W, rows);
+  ASSERT_EQ(part.v.rows(), static_cast<Eigen::Index>(rows.size()));
+  ASSERT_EQ(part.v.cols(), whole.v.cols());
+  for (size_t r = 0; r < rows.size(); ++r) {
+    EXPECT_TRUE((part.v.row(r).array() == whole.v.row(rows[r]).array()).all()) << "row " << rows[r];
+    EXPECT_EQ(part.lambda.row(r).cwiseAbs().maxCoeff(), 0.0);
+  }
+  EXPECT_EQ(part.v.row(0).cwiseAbs().maxCoeff(), 0.0);  // the held row
+  EXPECT_GT(part.v.cwiseAbs().maxCoeff(), 0.1);
+}
+
 // Two bodies: the gaps close by the relative motion, w = the slave body's translation minus the
 // master body's, whichever body is driven: the upper half-disc driven as the slave (w = its top's
 // motion), then as the master (w = minus it, the lower body's normal pointing down).
