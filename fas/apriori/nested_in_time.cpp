@@ -55,16 +55,17 @@ InterfaceHistory atInstants(const InterfaceHistory& h, const std::vector<int>& k
 
 }  // namespace
 
-int nestedStride(int m, int coarse_instants) {
+int nestedStride(int m, int coarse_instants, int max_stride) {
   if (coarse_instants < 2) return 0;
-  const int q = (m - 1) / (coarse_instants - 1);
+  int q = (m - 1) / (coarse_instants - 1);
+  if (max_stride > 0) q = std::min(q, max_stride);
   return q >= 2 ? q : 0;
 }
 
 SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalStage& stage,
                                  const FasAprioriOptions& options, const SolveInputs& inputs,
                                  const SeparatedCoarseBasis& coarse_basis) {
-  const int q = nestedStride(problem.numSteps(), options.nested.instants);
+  const int q = nestedStride(problem.numSteps(), options.nested.instants, options.nested.max_stride);
   if (q == 0) return solveOnGrid(problem, stage, options, inputs, coarse_basis);
   const InterfaceHistory start = startingHistory(problem, inputs);
   const RecordOrigin origin = inputs.origin.clocked();

@@ -26,15 +26,15 @@
 namespace stc::fas {
 
 /// The stride q of the sub-grid for m instants and a sub-grid of about `coarse_instants` instants:
-/// q = ⌊(m − 1) / (coarse_instants − 1)⌋, the sub-grid then has at least `coarse_instants`
-/// instants. 0 (no nesting) when coarse_instants < 2 or q < 2.
-int nestedStride(int m, int coarse_instants);
+/// q = ⌊(m − 1) / (coarse_instants − 1)⌋, at most `max_stride` (0: no bound); the sub-grid then has
+/// at least `coarse_instants` instants. 0 (no nesting) when coarse_instants < 2 or q < 2.
+int nestedStride(int m, int coarse_instants, int max_stride = 0);
 
 /// `fas-apriori`'s FAS cycle on `problem` with `stage` (built for it) from inputs.start: when
-/// q = nestedStride(m, options.nested.instants) ≥ 2, first on every q-th instant (and the last) from
-/// the start at those instants, to the tolerance max(τ, options.nested.tolerance), then on the whole
-/// grid from that solution interpolated in time (the header's steps); when the sub-grid solve does
-/// not converge, the whole grid from the start, and the stage recorded in the summary says so (its
+/// q = nestedStride(m, options.nested.instants, options.nested.max_stride) ≥ 2, first on every q-th
+/// instant (and the last) from the start at those instants, to the tolerance
+/// max(τ, options.nested.tolerance), then on the whole grid from that solution interpolated in time
+/// (the header's steps); when the sub-grid solve does not converge, the whole grid from the start, and the stage recorded in the summary says so (its
 /// time and solves still count). Callers turn nesting off (options.nested.instants = 0) for a warm
 /// start or a later round of the reduced interface. The coarse spaces come from `coarse_basis`.
 SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalStage& stage,

@@ -81,10 +81,17 @@ struct ReducedInterfaceOptions {
 };
 
 /// Nested iteration in time (fas/apriori/nested_in_time.hpp; docs/method.md §5): on a grid of m
-/// instants, first the same problem on every q-th instant, q = ⌊(m − 1) / (instants − 1)⌋, when q ≥ 2.
+/// instants, first the same problem on every q-th instant, q = min(⌊(m − 1) / (instants − 1)⌋,
+/// max_stride), when q ≥ 2.
 struct NestedInTimeOptions {
-  /// Instants of the sub-grid, about: 201 is the seed scene's grid. 0: never.
+  /// Instants of the sub-grid, about, at least: 201 is the seed scene's grid. 0: never.
   int instants = 201;
+  /// The largest stride q: past it the start interpolated from the sub-grid is so far from the whole
+  /// grid's solution that the whole grid's relaxations, each a pass over every instant, cost more than
+  /// a finer sub-grid. Fretting history at divisions 16, 10 001 instants, τ = 1e-6: q = 50 (201
+  /// instants) 32 relaxations on the whole grid, 39.6 s; q = 10 (1001 instants) 23 and 30.9 s; medians
+  /// of 3, alternated (docs/scale.md, "The ladders on the fretting history"). 0: no bound.
+  int max_stride = 10;
   /// The sub-grid's tolerance is at least this: below it the start it gives stops improving, its
   /// distance to the whole grid's solution is the time step's (seed scene at 401 arc nodes, 2001
   /// instants, every 10th instant: true error of the start 4.4e-4, 1.0e-4, 9.5e-5 at sub-grid
@@ -94,6 +101,7 @@ struct NestedInTimeOptions {
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
     visit("nested_instants", o.instants, offOrAtLeast(2));
+    visit("nested_max_stride", o.max_stride, offOrAtLeast(2));
     visit("nested_tolerance", o.tolerance, positive());
   }
   void validate() const { validateFields(*this, "nested iteration"); }

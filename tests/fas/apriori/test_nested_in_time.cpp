@@ -47,6 +47,18 @@ TEST(NestedInTime, StrideKeepsAtLeastTheSubgridsInstants) {
   EXPECT_EQ(stc::fas::nestedStride(2001, 2), 2000);
 }
 
+// The largest stride bounds q, the sub-grid then finer than asked: the default options' sub-grid of
+// 10 001 instants is every 10th (1001 instants), of 2001 every 10th as without the bound.
+TEST(NestedInTime, StrideStaysWithinItsBound) {
+  const stc::fas::NestedInTimeOptions defaults;
+  EXPECT_EQ(stc::fas::nestedStride(10001, defaults.instants, defaults.max_stride), 10);
+  EXPECT_EQ(stc::fas::nestedStride(2001, defaults.instants, defaults.max_stride), 10);
+  EXPECT_EQ(stc::fas::nestedStride(10001, 201, 0), 50);  // no bound
+  EXPECT_EQ(stc::fas::nestedStride(2001, 2, 7), 7);
+  EXPECT_EQ(stc::fas::nestedStride(401, 201, 10), 2);
+  EXPECT_EQ(stc::fas::nestedStride(2001, 0, 10), 0);     // off
+}
+
 // The true error on the whole grid is below the tolerance, as without the sub-grid; the first
 // record already counts the sub-grid's sparse solves and time (its stage in the summary).
 TEST(NestedInTime, StartsFromTheSubgridAndMeetsTheWholeGridsTolerance) {
