@@ -126,7 +126,7 @@ void writeFigures(const RunFolder& folder, const Problem& problem, const Analysi
 
 // The contact zone's localisation bands, or none (with a note) when no node ever closes.
 std::unique_ptr<ModeLocalisation> localisation(const Problem& problem, const SolveResult& solved) {
-  ContactZone zone = ContactZone::everClosed(problem, solved.admissible());
+  ContactZone zone = ContactZone::everClosed(problem, solved);
   if (zone.empty()) {
     std::cerr << "note: no contact node ever closes: no contact zone, no localisation.csv\n";
     return nullptr;

@@ -32,12 +32,12 @@ double distanceToZone(const TriMesh& mesh, const ContactZone& zone, const Eigen:
 
 }  // namespace
 
-ContactZone ContactZone::everClosed(const Problem& problem, const InterfaceHistory& admissible) {
-  const ContactStateTable states(problem.contact, admissible);
+ContactZone ContactZone::everClosed(const Problem& problem, const SolveResult& result) {
+  const ContactStateTable states = result.contactStates(problem.contact);
   ContactZone zone;
   std::set<int> closed;
   for (int i = 0; i < problem.contact.size(); ++i)
-    for (int k = 0; k < admissible.numSteps(); ++k)
+    for (int k = 0; k < result.interface.numSteps(); ++k)
       if (states.state(i, k) != ContactState::Open) {
         closed.insert(problem.contact.nodes[i]);
         break;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "stcontact/problem/problem.hpp"
+#include "stcontact/solver/solve_result.hpp"
 #include "stcontact/spacetime/interface_history.hpp"
 
 namespace stc {
@@ -36,7 +37,7 @@ struct ContactZone {
   bool empty() const { return nodes.empty(); }
   /// Closed means "not open" in the classification of the output writers (ContactStateTable on the
   /// contact-admissible history).
-  static ContactZone everClosed(const Problem& problem, const InterfaceHistory& admissible);
+  static ContactZone everClosed(const Problem& problem, const SolveResult& result);
 };
 
 /// One mode's localisation numbers (see the header comment).

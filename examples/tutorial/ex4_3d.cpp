@@ -84,9 +84,10 @@ int main(int argc, char** argv) {
     std::printf("\n%8s %23s %34s %34s\n", "instant", "in contact (exact / st)", "total force (n, t1, t2), exact",
                 ("total force, " + s.solver).c_str());
     const stc::SolveResult exact = stc::solveIncremental(problem);
+    const stc::InterfaceHistory admissible = result.admissible();
     for (int q = 1; q <= 5; ++q) {
       const int k = q * (problem.numSteps() - 1) / 5;
-      const Forces a = forcesAt(problem.contact, exact.interface, k), b = forcesAt(problem.contact, result.admissible(), k);
+      const Forces a = forcesAt(problem.contact, exact.interface, k), b = forcesAt(problem.contact, admissible, k);
       std::printf("%8d %10d / %-10d (%10.4g %10.4g %10.4g) (%10.4g %10.4g %10.4g)\n", k, a.closed, b.closed,
                   a.total[0], a.total[1], a.total[2], b.total[0], b.total[1], b.total[2]);
     }

@@ -96,7 +96,7 @@ InterfaceTable interfaceTable(const Problem& problem, const SolveResult& result)
   const auto& c = problem.contact;
   const auto& s = result.interface;
   const int d = c.dimension, m = problem.numSteps(), n_c = c.size();
-  const ContactStateTable states(problem.contact, result.admissible());
+  const ContactStateTable states = result.contactStates(problem.contact);
   InterfaceTable table{m, n_c, d - 1, {}, {}, {}};
   if (m == 0 || n_c == 0) return table;
   const std::size_t cells = static_cast<std::size_t>(m) * static_cast<std::size_t>(n_c);

@@ -158,7 +158,7 @@ long writeSolutionSeries(const std::filesystem::path& dir, const Problem& proble
   ensureWritableDirectory(dir / "vtu");
   const int threads = threadCount();
   FrameDisplacement displacement(problem, result, operators, threads);
-  const ContactStateTable states(problem.contact, result.admissible());
+  const ContactStateTable states = result.contactStates(problem.contact);
   const FrameLayout layout = frameLayout(problem, precision);
   const std::vector<int> steps = frameSteps(problem.numSteps(), frameStride(problem, stride));
   // The frames are independent: each thread forms (or solves) its own and writes its own files.

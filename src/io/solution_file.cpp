@@ -182,7 +182,7 @@ void writeFrames(const h5::Group& root, const Problem& problem, const SolveResul
   for (int k : plan.steps) times.push_back(problem.times[static_cast<std::size_t>(k)]);
   frames.write("steps", plan.steps);
   frames.write("time", times);
-  const ContactStateTable states(problem.contact, result.admissible());
+  const ContactStateTable states = result.contactStates(problem.contact);
   const int threads = threadCount();
   const int count = static_cast<int>(plan.steps.size());
   for (int first = 0; first < count; first += 2 * threads) {

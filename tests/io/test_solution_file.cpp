@@ -24,7 +24,7 @@ TEST(InterfaceTable, GapSlipAndStateAreThoseOfTheInterfaceWithNoSlipWhereOpen) {
   const stc::Problem problem = stc::buildProblem(stc::test::seedScene(21, 41));
   const stc::SolveResult result = stc::solveIncremental(problem);
   const stc::InterfaceTable table = stc::interfaceTable(problem, result);
-  const stc::ContactStateTable states(problem.contact, result.admissible());
+  const stc::ContactStateTable states = result.contactStates(problem.contact);
   const auto& c = problem.contact;
   ASSERT_EQ(table.steps, 41);
   ASSERT_EQ(table.nodes, c.size());

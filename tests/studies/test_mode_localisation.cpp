@@ -36,7 +36,7 @@ const Solved& seed() {
 
 ModeLocalisation seedLocalisation() {
   const Solved& s = seed();
-  return ModeLocalisation(s.problem, ContactZone::everClosed(s.problem, s.result.admissible()), {0.05, 0.1, 0.2});
+  return ModeLocalisation(s.problem, ContactZone::everClosed(s.problem, s.result), {0.05, 0.1, 0.2});
 }
 
 Eigen::VectorXd randomField(int n, unsigned seed_value) {
@@ -136,7 +136,7 @@ TEST(ModeLocalisation, SeedHigherModesLocaliseAtTheContact) {
 TEST(ModeLocalisation, EmptyZoneAndBadDepthsAreInputErrors) {
   const Solved& s = seed();
   EXPECT_THROW(ModeLocalisation(s.problem, ContactZone{}, {0.1}), stc::InputError);
-  const ContactZone zone = ContactZone::everClosed(s.problem, s.result.admissible());
+  const ContactZone zone = ContactZone::everClosed(s.problem, s.result);
   EXPECT_THROW(ModeLocalisation(s.problem, zone, {0.0}), stc::InputError);
   EXPECT_THROW(ModeLocalisation(s.problem, zone, {-1.0}), stc::InputError);
   const ModeLocalisation loc(s.problem, zone, {0.1});
@@ -148,7 +148,7 @@ TEST(ModeLocalisation, NoContactMeansNoZone) {
   scene.dirichlet[1].history.values = {0.0, 0.0, 0.0};  // the body never reaches the foundation
   const stc::Problem problem = stc::buildProblem(scene);
   const stc::SolveResult result = stc::solveIncremental(problem);
-  EXPECT_TRUE(ContactZone::everClosed(problem, result.admissible()).empty());
+  EXPECT_TRUE(ContactZone::everClosed(problem, result).empty());
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ const Case& smallCase() {
     const Eigen::MatrixXd U = stc::fullDisplacements(c.problem, factor, solved.interface.lambda);
     c.svd = stc::pgd::energySvd(U, c.problem.stiffness);
     c.localisation = std::make_unique<stc::ModeLocalisation>(
-        c.problem, stc::ContactZone::everClosed(c.problem, solved.admissible()), std::vector<double>{0.1, 0.2});
+        c.problem, stc::ContactZone::everClosed(c.problem, solved), std::vector<double>{0.1, 0.2});
     return c;
   }();
   return c;

@@ -1,0 +1,38 @@
+#include "stcontact/solver/solve_result.hpp"
+
+namespace stc {
+
+ContactStateTable SolveResult::contactStates(const ContactInterface& contact) const {
+  if (!contact_admissible) return {contact, interface};
+  if (admissible_nodes.empty()) return {contact, *contact_admissible};
+  return {contact, interface, *contact_admissible, admissible_nodes};
+}
+
+namespace {
+
+// `all` with the rows of `nodes` (d per node) taken from `part`, in that order.
+InterfaceHistory patched(InterfaceHistory all, const InterfaceHistory& part, const std::vector<int>& nodes) {
+  const Eigen::Index d = part.v.rows() / static_cast<Eigen::Index>(nodes.size());
+  for (size_t j = 0; j < nodes.size(); ++j) {
+    const Eigen::Index row = d * nodes[j], from = d * static_cast<Eigen::Index>(j);
+    all.v.middleRows(row, d) = part.v.middleRows(from, d);
+    all.lambda.middleRows(row, d) = part.lambda.middleRows(from, d);
+  }
+  return all;
+}
+
+}  // namespace
+
+InterfaceHistory SolveResult::admissible() const {
+  if (!contact_admissible) return interface;
+  if (admissible_nodes.empty()) return *contact_admissible;
+  return patched(interface, *contact_admissible, admissible_nodes);
+}
+
+InterfaceHistory SolveResult::takeAdmissible() && {
+  if (!contact_admissible) return std::move(interface);
+  if (admissible_nodes.empty()) return std::move(*contact_admissible);
+  return patched(std::move(interface), *contact_admissible, admissible_nodes);
+}
+
+}  // namespace stc
