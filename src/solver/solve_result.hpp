@@ -41,7 +41,8 @@ struct SolveResult {
   /// held by the others. The writer forms its frames from it without a solve.
   SeparatedDisplacement displacement;
 
-  /// Open/stick/slip of every node and instant, from the contact-admissible iterate.
+  /// Open/stick/slip of every node and instant, from the contact-admissible iterate (the table reads
+  /// this result's histories: it lives no longer than the result).
   ContactStateTable contactStates(const ContactInterface& contact) const;
   /// The contact-admissible iterate on every node (`interface` when there is none): a copy, for
   /// checks; takeAdmissible moves it out.
