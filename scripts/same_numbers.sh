@@ -28,15 +28,15 @@ timed_columns() {
 }
 
 # h5_digest FILE: every dataset of an HDF5 file with a digest of its values, and the file's
-# attributes, but the times (the attribute and history column "wall_s") and the version.
+# attributes, but the times (the attribute and history column "wall_s", the message's seconds) and the version.
 h5_digest() {
   /usr/bin/python3 - "$1" <<'PY'
-import hashlib, sys
+import hashlib, re, sys
 import h5py
 with h5py.File(sys.argv[1], "r") as f:
     for key, value in sorted(f.attrs.items()):
-        if key not in ("wall_s", "version"):
-            print("@%s = %s" % (key, value))
+        if key not in ("wall_s", "version"):  # the message's seconds blanked as in summary.json
+            print("@%s = %s" % (key, re.sub(r"[0-9.e+-]+ s\)", "# s)", str(value))))
     def show(name, item):
         if isinstance(item, h5py.Dataset) and name != "history/wall_s":
             print(name, item.dtype, item.shape, hashlib.sha256(item[()].tobytes()).hexdigest())
