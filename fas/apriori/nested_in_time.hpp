@@ -34,8 +34,8 @@ int nestedStride(int m, int coarse_instants, int max_stride = 0);
 /// q = nestedStride(m, options.nested.instants, options.nested.max_stride) ≥ 2, first on every q-th
 /// instant (and the last) from the start at those instants, to the tolerance
 /// max(τ, options.nested.tolerance), then on the whole grid from that solution interpolated in time
-/// (the header's steps); when the sub-grid solve does not converge, the whole grid from the start, and the stage recorded in the summary says so (its
-/// time and solves still count). Callers turn nesting off (options.nested.instants = 0) for a warm
+/// (the header's steps); when the sub-grid solve does not converge, the whole grid from the start,
+/// and the stage recorded in the summary says so (its time and solves still count). Callers turn nesting off (options.nested.instants = 0) for a warm
 /// start or a later round of the reduced interface. The coarse spaces come from `coarse_basis`.
 SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalStage& stage,
                                  const FasAprioriOptions& options, const SolveInputs& inputs,

@@ -12,12 +12,9 @@ namespace {
 
 // `all` with the rows of `nodes` (d per node) taken from `part`, in that order.
 InterfaceHistory patched(InterfaceHistory all, const InterfaceHistory& part, const std::vector<int>& nodes) {
-  const Eigen::Index d = part.v.rows() / static_cast<Eigen::Index>(nodes.size());
-  for (size_t j = 0; j < nodes.size(); ++j) {
-    const Eigen::Index row = d * nodes[j], from = d * static_cast<Eigen::Index>(j);
-    all.v.middleRows(row, d) = part.v.middleRows(from, d);
-    all.lambda.middleRows(row, d) = part.lambda.middleRows(from, d);
-  }
+  const std::vector<int> rows = rowsOfNodes(static_cast<int>(part.v.rows()) / static_cast<int>(nodes.size()), nodes);
+  all.v(rows, Eigen::all) = part.v;
+  all.lambda(rows, Eigen::all) = part.lambda;
   return all;
 }
 

@@ -31,10 +31,8 @@ ContactStateTable::ContactStateTable(const ContactInterface& contact, const Inte
                                      const InterfaceHistory& part, const std::vector<int>& part_nodes)
     : whole_(whole), part_(&part), part_index_(contact.size(), -1), d_(contact.dimension), mu_(contact.friction) {
   std::vector<char> off_part(whole.v.rows(), 1);
-  for (size_t j = 0; j < part_nodes.size(); ++j) {
-    part_index_[part_nodes[j]] = static_cast<int>(j);
-    for (int c = 0; c < d_; ++c) off_part[d_ * part_nodes[j] + c] = 0;
-  }
+  for (int row : rowsOfNodes(d_, part_nodes)) off_part[row] = 0;
+  for (size_t j = 0; j < part_nodes.size(); ++j) part_index_[part_nodes[j]] = static_cast<int>(j);
   const auto largest = [](const Eigen::MatrixXd& a) { return a.size() ? a.cwiseAbs().maxCoeff() : 0.0; };
   force_scale_ = atLeastTiny(std::max(largest(part.lambda), maxAbsOnRows(whole.lambda, off_part)));
   length_scale_ = atLeastTiny(std::max(largest(part.v), maxAbsOnRows(whole.v, off_part)));
