@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/dense_product.hpp"
 #include "stcontact/linalg/low_rank_solve.hpp"
 #include "stcontact/pgd/separated_history.hpp"
 #include "stcontact/pgd/separated_loads.hpp"
@@ -174,7 +175,7 @@ Eigen::MatrixXd ResponseBasis::liftedInterface(const Eigen::SparseMatrix<double>
 }
 
 Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& c) const {
-  Eigen::MatrixXd v = (B_rows * UF_) * G_;
+  Eigen::MatrixXd v = linalg::freshProduct(B_rows * UF_, G_);
   if (c.rows() > 0) v += liftedInterface(B_rows, c);
   return v;
 }
@@ -183,16 +184,18 @@ Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>&
                                               double energy_budget) const {
   if (!(energy_budget > 0.0) || B_rows.rows() == 0 || c.rows() == 0 || pending_ > 0) return displacementOn(B_rows, c);
   const Eigen::Index q = G_.rows();
-  const linalg::Svd svd = linalg::singularValueDecomposition(whitenedHistory(*this, c),
-                                                             linalg::SvdMethod::divide_and_conquer,
-                                                             linalg::kThinU | linalg::kThinV);
+  // Only the left vectors (q + p short, m instants long): dgesvd on the tall transpose forms no Q
+  // of m rows, and Σ_ρ V_ρᵀ = U_ρᵀ H, the product with the history itself.
+  const Eigen::MatrixXd whitened = whitenedHistory(*this, c);
+  const linalg::Svd svd = linalg::singularValueDecomposition(whitened, linalg::SvdMethod::qr_iteration, linalg::kThinU);
   const Eigen::Index rho = modesWithinBudget(svd.values, energy_budget);
   if (rho == svd.values.size()) return displacementOn(B_rows, c);
   const Eigen::MatrixXd C = energy_.combination(svd.U.leftCols(rho));  // (q + p) × ρ
-  const Eigen::MatrixXd time = svd.values.head(rho).asDiagonal() * svd.V.leftCols(rho).transpose();
+  Eigen::MatrixXd time;
+  linalg::multiplyTransposed(svd.U.leftCols(rho), whitened, time);
   Eigen::MatrixXd modes = (B_rows * UF_) * C.topRows(q);
   modes += liftedInterface(B_rows, C.middleRows(q, c.rows()));
-  return modes * time;
+  return linalg::freshProduct(modes, time);
 }
 
 int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {

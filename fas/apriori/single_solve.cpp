@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "stcontact/fas/apriori/nested_in_time.hpp"
+#include "stcontact/linalg/dense_product.hpp"
 #include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/pgd/separated_history.hpp"
 
@@ -32,7 +33,7 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   if (inputs.separated_displacement)
     result.displacement = pgd::separatedDisplacement(stage.basis(), stage.coordinates(), budget);
   if (result.displacement.held)
-    far_v = (B_far * result.displacement.modes) * result.displacement.time;
+    far_v = linalg::freshProduct(B_far * result.displacement.modes, result.displacement.time);
   else
     far_v = stage.basis().displacementOn(B_far, stage.coordinates(), budget);
   result.summary.addSolvesAfterIteration(stage.sparseSolves() - before);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "stcontact/core/threads.hpp"
 #include "stcontact/fas/apriori/single_solve.hpp"
 #include "stcontact/solver/iteration_monitor.hpp"
 #include "stcontact/solver/warm_start.hpp"
@@ -18,24 +19,42 @@ InterfaceHistory restricted(const InterfaceHistory& h, const std::vector<int>& r
   return {h.v(rows, Eigen::all), h.lambda(rows, Eigen::all)};
 }
 
-// The history on the whole interface: `part` on `rows`, λ = 0 and v = `far_v` on `far_rows`.
-InterfaceHistory lifted(const InterfaceHistory& part, const std::vector<int>& rows, const std::vector<int>& far_rows,
-                        const Eigen::MatrixXd& far_v, int all_rows) {
-  InterfaceHistory h = InterfaceHistory::zerosWithRows(all_rows, part.numSteps());
-  h.v(rows, Eigen::all) = part.v;
-  h.lambda(rows, Eigen::all) = part.lambda;
-  h.v(far_rows, Eigen::all) = far_v;
+// B on the interface's rows with the zone's rows empty: what it lifts is the far nodes' displacement
+// laid out on the interface's rows (zero on the zone's), which liftedResult completes in place.
+Eigen::SparseMatrix<double> farNodesB(const ContactInterface& contact, const std::vector<int>& rows) {
+  Eigen::VectorXd far = Eigen::VectorXd::Ones(contact.rows());
+  far(rows).setZero();
+  Eigen::SparseMatrix<double> B = far.asDiagonal() * contact.B;
+  B.prune(0.0);
+  return B;
+}
+
+// The history on the whole interface: `part` on `rows`, λ = 0 and v = `v` (the far nodes'
+// displacement on every row, farNodesB) elsewhere. Each entry is written once, by columns on
+// threads: at 10 001 instants zeros first, the far nodes' block apart and the blocks scattered into
+// them cost 2.9 s of 36 (fretting, divisions 16), most of it the first touch of fresh memory.
+InterfaceHistory lifted(const InterfaceHistory& part, const std::vector<int>& rows, Eigen::MatrixXd&& v) {
+  const Eigen::Index all_rows = v.rows();
+  const int m = part.numSteps();
+  InterfaceHistory h{std::move(v), Eigen::MatrixXd(all_rows, m)};
+  parallelRanges(m, threadCount(), [&](int begin, int end) {
+    for (int j = begin; j < end; ++j) {
+      h.lambda.col(j).setZero();
+      for (size_t i = 0; i < rows.size(); ++i) {
+        h.v(rows[i], j) = part.v(static_cast<Eigen::Index>(i), j);
+        h.lambda(rows[i], j) = part.lambda(static_cast<Eigen::Index>(i), j);
+      }
+    }
+  });
   return h;
 }
 
-// The nodes of `far` whose gap g0 + v_n is negative at some instant (far_v: their rows, d per node).
-std::vector<int> penetrating(const ContactInterface& contact, const std::vector<int>& far, const Eigen::MatrixXd& far_v) {
+// The nodes of `far` whose gap g0 + v_n is negative at some instant (v: every row, d per node).
+std::vector<int> penetrating(const ContactInterface& contact, const std::vector<int>& far, const Eigen::MatrixXd& v) {
   const int d = contact.dimension;
   std::vector<int> out;
-  for (size_t f = 0; f < far.size(); ++f) {
-    const int i = far[f];
-    if ((contact.initial_gap[i] + far_v.row(d * static_cast<Eigen::Index>(f)).array()).minCoeff() < 0.0) out.push_back(i);
-  }
+  for (const int i : far)
+    if ((contact.initial_gap[i] + v.row(d * static_cast<Eigen::Index>(i)).array()).minCoeff() < 0.0) out.push_back(i);
   return out;
 }
 
@@ -43,16 +62,23 @@ std::vector<int> penetrating(const ContactInterface& contact, const std::vector<
 // ending but a numerical issue, which sends it back to the first start (ZoneRounds::startNext).
 bool nextRoundGoesOn(const SolveSummary& last) { return last.termination != Termination::NumericalIssue; }
 
-// The result on the whole interface: λ = 0 and v = far_v on the rows left out. Its
-// contact-admissible iterate stays on the zone (the same as the solution elsewhere): lifted too it
-// cost at 10 001 instants 1.4 GB more at the peak and 5 s of 36 (fretting, divisions 16). A zone of
-// every node is the whole interface in order (zones are increasing).
+// The result on the whole interface: λ = 0 and the far nodes' displacement `v` (on every row,
+// farNodesB) on the rows left out. Its contact-admissible iterate stays on the zone (the same as the
+// solution elsewhere): lifted too it cost at 10 001 instants 1.4 GB more at the peak and 5 s of 36
+// (fretting, divisions 16). A zone of every node is the whole interface in order (zones are
+// increasing): its history is taken as it is.
 SolveResult liftedResult(SolveResult r, const std::vector<int>& zone, const std::vector<int>& rows,
-                         const std::vector<int>& far_rows, const Eigen::MatrixXd& far_v, int all_rows) {
+                         const std::vector<int>& far_rows, Eigen::MatrixXd&& v, int all_rows) {
   SolveResult out;
-  out.interface = lifted(r.interface, rows, far_rows, far_v, all_rows);
-  out.contact_admissible = std::move(r).takeAdmissible();
-  if (!far_rows.empty()) out.admissible_nodes = zone;
+  if (far_rows.empty()) {
+    out.interface = std::move(r.interface);
+    out.contact_admissible = std::move(r.contact_admissible);
+    out.admissible_nodes = std::move(r.admissible_nodes);
+  } else {
+    out.interface = lifted(r.interface, rows, std::move(v));
+    out.contact_admissible = std::move(r).takeAdmissible();
+    out.admissible_nodes = zone;
+  }
   out.interface_directions = Eigen::MatrixXd::Zero(all_rows, r.interface_directions.cols());
   out.interface_directions(rows, Eigen::all) = r.interface_directions;
   out.spatial_modes = std::move(r.spatial_modes);
@@ -112,13 +138,14 @@ class ZoneRounds {
     round.separated_displacement = inputs_.separated_displacement;
     round.operators = inputs_.operators;
     round.origin = originOfNextRound();
-    Eigen::MatrixXd far_v;
-    // B of the nodes left out: the rows of their sub-interface.
+    Eigen::MatrixXd v;  // the far nodes' displacement on every row
+    // B of the nodes left out on the interface's rows (farNodesB); none on the whole interface.
     SolveResult r = solveAprioriOn(part ? *part : problem_, budgetOfNextRound(whole), round,
-                                   restrictToNodes(contact, far).B, far_v, coarse_basis_);
+                                   whole ? Eigen::SparseMatrix<double>(0, contact.B.cols()) : farNodesB(contact, rows), v,
+                                   coarse_basis_);
     count(r.summary);
-    penetrating_nodes = penetrating(contact, far, far_v);
-    return liftedResult(std::move(r), zone, rows, far_rows, far_v, contact.rows());
+    penetrating_nodes = penetrating(contact, far, v);
+    return liftedResult(std::move(r), zone, rows, far_rows, std::move(v), contact.rows());
   }
 
   /// Whether the rounds must stop: the caller stopped them or the iteration cap is spent.

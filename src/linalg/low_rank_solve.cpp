@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/dense_product.hpp"
 
 namespace stc::linalg {
 
@@ -19,7 +20,7 @@ Eigen::MatrixXd solveThroughRank(const SpdSolver& factor, const Eigen::SparseMat
   if (rank == 0) return Eigen::MatrixXd::Zero(C.rows(), M.cols());
   const Eigen::MatrixXd responses = factor.condenses(R) ? factor.solveFromTrailing(R, svd.U.leftCols(rank))
                                                         : factor.solveOnThreads(R.transpose() * svd.U.leftCols(rank));
-  return (C * responses) * (svd.values.head(rank).asDiagonal() * svd.V.leftCols(rank).transpose());
+  return freshProduct(C * responses, svd.values.head(rank).asDiagonal() * svd.V.leftCols(rank).transpose());
 }
 
 }  // namespace stc::linalg
