@@ -65,20 +65,13 @@ bool nextRoundGoesOn(const SolveSummary& last) { return last.termination != Term
 // The result on the whole interface: λ = 0 and the far nodes' displacement `v` (on every row,
 // farNodesB) on the rows left out. Its contact-admissible iterate stays on the zone (the same as the
 // solution elsewhere): lifted too it cost at 10 001 instants 1.4 GB more at the peak and 5 s of 36
-// (fretting, divisions 16). A zone of every node is the whole interface in order (zones are
-// increasing): its history is taken as it is.
+// (fretting, divisions 16).
 SolveResult liftedResult(SolveResult r, const std::vector<int>& zone, const std::vector<int>& rows,
-                         const std::vector<int>& far_rows, Eigen::MatrixXd&& v, int all_rows) {
+                         Eigen::MatrixXd&& v, int all_rows) {
   SolveResult out;
-  if (far_rows.empty()) {
-    out.interface = std::move(r.interface);
-    out.contact_admissible = std::move(r.contact_admissible);
-    out.admissible_nodes = std::move(r.admissible_nodes);
-  } else {
-    out.interface = lifted(r.interface, rows, std::move(v));
-    out.contact_admissible = std::move(r).takeAdmissible();
-    out.admissible_nodes = zone;
-  }
+  out.interface = lifted(r.interface, rows, std::move(v));
+  out.contact_admissible = std::move(r).takeAdmissible();
+  out.admissible_nodes = zone;
   out.interface_directions = Eigen::MatrixXd::Zero(all_rows, r.interface_directions.cols());
   out.interface_directions(rows, Eigen::all) = r.interface_directions;
   out.spatial_modes = std::move(r.spatial_modes);
@@ -118,7 +111,7 @@ class ZoneRounds {
     const ContactInterface& contact = problem_.contact;
     const int d = contact.dimension;
     const std::vector<int> far = otherNodes(contact.size(), zone);
-    const std::vector<int> rows = rowsOfNodes(d, zone), far_rows = rowsOfNodes(d, far);
+    const std::vector<int> rows = rowsOfNodes(d, zone);
     // The whole interface at the scene's k needs no copy of the problem (restrictToNodes of every
     // node is its interface). On a large 2D zone the search direction grows with it
     // (ReducedInterfaceOptions::search_growth).
@@ -145,7 +138,9 @@ class ZoneRounds {
                                    coarse_basis_);
     count(r.summary);
     penetrating_nodes = penetrating(contact, far, v);
-    return liftedResult(std::move(r), zone, rows, far_rows, std::move(v), contact.rows());
+    // A zone of every node is the whole interface in order (zones are increasing): nothing to lift.
+    if (whole) return r;
+    return liftedResult(std::move(r), zone, rows, std::move(v), contact.rows());
   }
 
   /// Whether the rounds must stop: the caller stopped them or the iteration cap is spent.
