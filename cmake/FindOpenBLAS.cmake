@@ -1,4 +1,5 @@
-# FindOpenBLAS: OpenBLAS, serial build (Debian: libopenblas-serial-dev). Defines OpenBLAS_FOUND and
+# FindOpenBLAS: OpenBLAS (Debian: libopenblas-pthread-dev, or the serial build libopenblas-serial-dev;
+# which one is found at run time, src/linalg/blas_kernels.hpp). Defines OpenBLAS_FOUND and
 # the target OpenBLAS::OpenBLAS, which also makes Eigen call it for its dense products
 # (EIGEN_USE_BLAS): OpenBLAS picks its kernels for the processor at run time, so a portable build
 # gets AVX2/AVX-512 products that Eigen's own kernels only get with -march=native (measured on the

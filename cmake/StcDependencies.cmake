@@ -13,7 +13,7 @@ find_package(Eigen3 3.4 QUIET NO_MODULE)
 stc_require(Eigen3_FOUND libeigen3-dev "Eigen 3.4")
 
 find_package(OpenBLAS QUIET)
-stc_require(OpenBLAS_FOUND libopenblas-serial-dev "OpenBLAS (serial)")
+stc_require(OpenBLAS_FOUND libopenblas-pthread-dev "OpenBLAS")
 
 find_package(CHOLMOD QUIET)
 stc_require(CHOLMOD_FOUND libsuitesparse-dev "SuiteSparse CHOLMOD")

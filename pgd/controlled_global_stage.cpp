@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "stcontact/linalg/dense_decompositions.hpp"
+#include "stcontact/linalg/dense_product.hpp"
 #include "stcontact/linalg/ranks.hpp"
 #include "stcontact/pgd/separated_history.hpp"
 #include "stcontact/solver/warm_start.hpp"
@@ -162,12 +163,12 @@ ControlledGlobalStage::Anticipated ControlledGlobalStage::anticipateWhitened(con
   both.resize(hat.v.rows(), m + (with_step ? step_samples : 0));
   writeScaledRightHandSides(hat, both.leftCols(m));
   if (!with_step) {
-    out.whitened.noalias() += whitened_rows_ * both;
+    linalg::multiplyAdd(whitened_rows_, both, out.whitened);
     return out;
   }
   // One product for the history and the step: R_Z Z̃ᵀ [w̃, (w̃ − w̃_last) Ω].
   both.rightCols(step_samples).noalias() = (both.leftCols(m) - w_last_) * stepSketch(m, step_samples);
-  buffers_.product.noalias() = whitened_rows_ * both;
+  linalg::multiply(whitened_rows_, both, buffers_.product);
   out.whitened += buffers_.product.leftCols(m);
   out.step = buffers_.product.rightCols(step_samples);
   return out;
@@ -181,7 +182,7 @@ void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory&
     Eigen::MatrixXd& w = buffers_.solved;
     w = hat.lambda + k.asDiagonal() * hat.v;
     s.v = basis_.freeResponse();
-    s.v.noalias() += basis_.condensedInterface() * w;
+    linalg::multiplyAdd(basis_.condensedInterface(), w, s.v);
     s.lambda = w - k.asDiagonal() * s.v;
     w_last_ = basis_.invSqrtK().asDiagonal() * w;
     c_stale_ = true;

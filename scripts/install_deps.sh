@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs every build, test and plotting dependency from Debian 12's archive (run as root).
-# OpenBLAS (serial, with its headers and link library) serves Eigen's dense products (cmake/
-# FindOpenBLAS.cmake: EIGEN_USE_BLAS) and replaces the reference BLAS behind CHOLMOD and ARPACK;
-# serial, so that it starts no threads of its own to make timings noisy.
+# OpenBLAS (its pthread build, with its headers and link library) serves Eigen's dense products
+# (cmake/FindOpenBLAS.cmake: EIGEN_USE_BLAS) and replaces the reference BLAS behind CHOLMOD and
+# ARPACK; the pthread build takes calls from two threads at once (the serial one returns wrong
+# results then), so long products and 3D solves run on stcontact's threads (docs/threads.md).
 # clang-14 + libclang-rt-14-dev (libFuzzer, clang's sanitizer runtimes) build the fuzz targets
 # (scripts/fuzz.sh); llvm-14's llvm-symbolizer puts file:line into sanitizer reports.
 # pybind11, the Python headers, NumPy, pytest and matplotlib: the Python module, its tests and
@@ -19,7 +20,7 @@ export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends \
   g++ cmake make pkg-config \
-  libeigen3-dev libsuitesparse-dev libarpack2-dev libgsl-dev libopenblas-serial-dev \
+  libeigen3-dev libsuitesparse-dev libarpack2-dev libgsl-dev libopenblas-pthread-dev \
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev zlib1g-dev \
   gnuplot-nox clang-14 libclang-rt-14-dev llvm-14 \
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-meshio \

@@ -1,6 +1,9 @@
 #include "stcontact/linalg/blas_kernels.hpp"
 
+#include <dlfcn.h>
+
 #include <cstdlib>
+#include <mutex>
 
 // OpenBLAS's own entry points (exported by libopenblas.so.0 of its DYNAMIC_ARCH build): the name of
 // the kernel set in use, and the start-up and shut-down of its kernel choice
@@ -9,6 +12,8 @@ extern "C" {
 char* openblas_get_corename(void);
 void gotoblas_dynamic_init(void);
 void gotoblas_dynamic_quit(void);
+int openblas_get_parallel(void);  // 0 serial build, 1 pthreads, 2 OpenMP
+void openblas_set_num_threads(int);
 }
 
 namespace stc::linalg {
@@ -32,7 +37,49 @@ bool supportsAvx2() {
 #endif
 }
 
+// Held to one thread as soon as the library is loaded, before any caller's first product.
+const bool kConcurrentAtLoad = blasTakesConcurrentCalls();
+
 }  // namespace
+
+// OpenBLAS's pthread build starts its threads when it is loaded, before any program could block the
+// signals it waits for (src/core/interruption.cpp: SIGTERM and SIGINT, blocked in every thread but
+// one that sigwaits): a signal the kernel handed to one of them would end the process at once.
+// They are stopped here, once held to one thread (a later count above one starts them again, from
+// the thread that asks, with its signal mask). blas_thread_shutdown_ is the pthread build's own
+// (its fork handler calls it), looked up so that the serial build, which lacks it, loads too.
+void stopOpenBlasThreads() {
+  using Shutdown = int (*)();
+  if (auto shutdown = reinterpret_cast<Shutdown>(dlsym(RTLD_DEFAULT, "blas_thread_shutdown_"))) shutdown();
+}
+
+bool blasTakesConcurrentCalls() {
+  static const bool concurrent = [] {
+    if (openblas_get_parallel() == 0) return false;
+    openblas_set_num_threads(1);
+    stopOpenBlasThreads();
+    return true;
+  }();
+  return concurrent;
+}
+
+namespace {
+std::mutex scopes_mutex;
+int open_scopes = 0;  // BlasThreadsScopes open now, under scopes_mutex
+}  // namespace
+
+BlasThreadsScope::BlasThreadsScope(int threads) {
+  if (threads < 2 || !blasTakesConcurrentCalls()) return;
+  const std::lock_guard lock(scopes_mutex);
+  if (open_scopes++ == 0) openblas_set_num_threads(threads);
+  opened_ = true;
+}
+
+BlasThreadsScope::~BlasThreadsScope() {
+  if (!opened_) return;
+  const std::lock_guard lock(scopes_mutex);
+  if (--open_scopes == 0) openblas_set_num_threads(1);
+}
 
 std::string blasKernels() {
   const char* name = openblas_get_corename();

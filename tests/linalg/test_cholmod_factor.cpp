@@ -108,9 +108,10 @@ TEST(CholmodFactor, SolvesInPartsBitwiseOnAnyThreadCount) {
 }
 
 // The half-ball's stiffness (3D, divisions 6: fl / lnz = 282 ≥ kSupernodalSolveSwitch) keeps its
-// supernodal factor and solves through the BLAS one caller at a time; the seed's (2D) is simplicial.
-// The same properties hold: round-off solutions, bitwise the same on any thread count and when two
-// threads solve at once (they take turns: Debian's serial OpenBLAS is not safe for concurrent calls).
+// supernodal factor and solves through the BLAS; the seed's (2D) is simplicial. The same properties
+// hold: round-off solutions, bitwise the same on any thread count and when two threads solve at once
+// (with Debian's serial OpenBLAS, not safe for concurrent calls, they take turns; with its pthread
+// build the chunks run on the threads at once).
 TEST(CholmodFactor, ASupernodalFactorIn3dSolvesToRoundOffAndBitwiseOnAnyThreadCount) {
   EXPECT_FALSE(stc::CholmodFactor(problem().stiffness_free, "K_ff").isSupernodal());
   const stc::Problem ball = stc::buildProblem(stc::test::hemisphereScene(6, 3));
@@ -187,7 +188,12 @@ TEST(CholmodFactor, TheTrailingBlockGivesTheCondensedOperatorOfTheSolves) {
     std::srand(3);
     const Eigen::MatrixXd U = Eigen::MatrixXd::Random(z.B.rows(), 40);  // two supernodal chunks and more
     const Eigen::MatrixXd X = plain.solve(Eigen::MatrixXd(z.B.transpose() * U));
-    EXPECT_LE((last.solveFromTrailing(z.B, U) - X).norm(), 1e-11 * X.norm());
+    const Eigen::MatrixXd from_trailing = last.solveFromTrailing(z.B, U);
+    EXPECT_LE((from_trailing - X).norm(), 1e-11 * X.norm());
+    for (int threads : {1, 3}) {  // the chunks on the threads: the bits of two
+      const stc::ThreadCountScope scope(threads);
+      EXPECT_TRUE(last.solveFromTrailing(z.B, U) == from_trailing) << threads << " threads";
+    }
     EXPECT_THROW(last.solveFromTrailing(p->contact.B, Eigen::MatrixXd::Ones(p->contact.B.rows(), 1)),
                  std::invalid_argument);
   }

@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <stdexcept>
 #include <tuple>
 
+#include "stcontact/core/threads.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/linalg/dense_product.hpp"
 
@@ -40,6 +43,41 @@ INSTANTIATE_TEST_SUITE_P(Shapes, DenseProductShapes,
                                            std::make_tuple(591, 45, 2001), std::make_tuple(300, 300, 101),
                                            std::make_tuple(2, 600, 5000)));
 
+// Where the BLAS takes concurrent calls, a large product is split into column ranges on the
+// threads; each column must keep the bits of one dgemm on any thread count (the ranges start at
+// multiples of 192 columns, none small enough for OpenBLAS's small-matrix kernels). With a serial
+// BLAS nothing is split and the products are one dgemm on every count. Shapes: the exact stage of
+// fas-apriori (the zone's operator by a history), a short inner dimension, a product just above the
+// small-matrix bound, columns that are not a multiple of 192, a block read with its stride.
+TEST(DenseProduct, SplitOverThreadsEveryColumnKeepsTheBitsOfOneProduct) {
+  std::cout << "BLAS takes concurrent calls: " << blasTakesConcurrentCalls() << "\n";
+  const Eigen::MatrixXd big = gaussianSketch(930, 2101, 9);
+  for (const auto& [rows, inner, cols] : {std::make_tuple(915, 915, 2001), std::make_tuple(591, 45, 4001),
+                                          std::make_tuple(60, 90, 600), std::make_tuple(402, 60, 2000)}) {
+    const Eigen::MatrixXd A = gaussianSketch(rows, inner, 1), At = A.transpose();
+    const auto B = big.block(3, 5, inner, cols);
+    const Eigen::MatrixXd start = gaussianSketch(rows, cols, 3);
+    Eigen::MatrixXd one, one_t, one_add = start;
+    {
+      const stc::ThreadCountScope scope(1);
+      multiply(A, B, one);
+      multiplyTransposed(At, B, one_t);
+      multiplyAdd(A, B, one_add);
+    }
+    for (int threads : {2, 3}) {
+      const stc::ThreadCountScope scope(threads);
+      Eigen::MatrixXd C, T, S = start;
+      multiply(A, B, C);
+      multiplyTransposed(At, B, T);
+      multiplyAdd(A, B, S);
+      EXPECT_TRUE(C == one) << rows << " x " << inner << " x " << cols << ", " << threads << " threads";
+      EXPECT_TRUE(T == one_t) << rows << " x " << inner << " x " << cols << ", " << threads << " threads";
+      EXPECT_TRUE(S == one_add) << rows << " x " << inner << " x " << cols << ", " << threads << " threads";
+    }
+    EXPECT_LE((one_add - start - one).cwiseAbs().maxCoeff(), 1e-12 * std::sqrt(static_cast<double>(inner)));
+  }
+}
+
 TEST(DenseProduct, BlocksAreReadWithTheirStride) {
   const Eigen::MatrixXd A = gaussianSketch(50, 40, 4), big = gaussianSketch(60, 3000, 5);
   const auto B = big.block(10, 100, 40, 2500);  // an outer stride of 60, not 40
@@ -61,6 +99,8 @@ TEST(DenseProduct, MismatchedShapesAreRefused) {
   EXPECT_THROW(freshProduct(Eigen::MatrixXd(4, 3), Eigen::MatrixXd(2, 6)), std::invalid_argument);
   Eigen::MatrixXd C;
   EXPECT_THROW(multiplyTransposed(Eigen::MatrixXd(4, 3), Eigen::MatrixXd(3, 6), C), std::invalid_argument);
+  Eigen::MatrixXd wrong(4, 5);
+  EXPECT_THROW(multiplyAdd(Eigen::MatrixXd(4, 3), Eigen::MatrixXd(3, 6), wrong), std::invalid_argument);
 }
 
 }  // namespace

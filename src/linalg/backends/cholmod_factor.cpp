@@ -9,6 +9,8 @@
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/threads.hpp"
+#include "stcontact/core/worker_pool.hpp"
+#include "stcontact/linalg/blas_kernels.hpp"
 #include "stcontact/linalg/detail/cholmod_trailing.hpp"
 
 namespace stc {
@@ -50,8 +52,10 @@ CholmodWorkspace& cholmodState(SpdSolver::Workspace& workspace) {
 // - from it on (the half-ball from divisions 4: 104, 282 at divisions 6, 698 at 12) it stays
 //   supernodal and is solved with the BLAS (dtrsm, dgemm) by chunks of kSupernodalChunk. Debian's
 //   serial OpenBLAS 0.3.21 returns wrong columns when two threads call it at once (measured: ~2% of
-//   concurrent 16-column solves; none with the reference BLAS; docs/threads.md), so every supernodal
-//   factorisation and solve holds one process-wide lock: one thread solves.
+//   concurrent 16-column solves; none with the reference BLAS; docs/threads.md), so with it every
+//   supernodal factorisation and solve holds one process-wide lock: one thread solves. With a BLAS
+//   that takes concurrent calls (OpenBLAS's pthread build, linalg/blas_kernels.hpp) the chunks are
+//   handed out to the threads like the simplicial ones.
 // Why: on the half-ball at divisions 12 (22 500 dofs, 8.6 M entries in L, 288 right-hand sides, one
 // thread, bench/bench_cholmod_modes.cpp Solve3d) a simplicial solve costs 6.6 ms per column by
 // chunks of 4 to 32, the supernodal one 4.2 ms by 4, 2.3 by 16, 1.9 by 32, so one thread solving
@@ -71,10 +75,13 @@ cholmod_dense denseView(const double* x, Eigen::Index rows, Eigen::Index cols) {
   return b;
 }
 
-// The process-wide turn of a supernodal factor's BLAS calls (above); a simplicial one takes none.
+// Whether the BLAS calls of a factor must take turns: a supernodal one's, on a serial BLAS (above).
+bool takesTurns(bool supernodal) { return supernodal && !linalg::blasTakesConcurrentCalls(); }
+
+// The process-wide turn of a factor's BLAS calls where it must take one (takesTurns); else none.
 std::unique_lock<std::mutex> blasTurn(bool supernodal) {
   static std::mutex blas;
-  return supernodal ? std::unique_lock<std::mutex>(blas) : std::unique_lock<std::mutex>();
+  return takesTurns(supernodal) ? std::unique_lock<std::mutex>(blas) : std::unique_lock<std::mutex>();
 }
 
 // body(c, cols) for the chunks of `columns` columns a solve takes per CHOLMOD call (kSupernodalChunk
@@ -153,6 +160,8 @@ void CholmodFactor::factorise(const Eigen::SparseMatrix<double>& A, const std::s
   double beta[2] = {0.0, 0.0};
   if (f.L) {
     const auto turn = blasTurn(f.L->is_super != 0);
+    // A large factorisation's supernodes on OpenBLAS's threads (their last bits then the count's).
+    const linalg::BlasThreadsScope threads(f.common.fl >= kThreadedFactorFlops ? threadCount() : 1);
     cholmod_factorize_p(&view, beta, nullptr, 0, f.L, &f.common);
   }
   if (!f.L || f.L->minor != f.L->n)
@@ -189,30 +198,41 @@ Eigen::MatrixXd CholmodFactor::solve(const Eigen::MatrixXd& B, Workspace& worksp
 }
 
 Eigen::MatrixXd CholmodFactor::solveOnThreads(const Eigen::MatrixXd& B) const {
-  if (isSupernodal() || threadCount() == 1 || B.cols() <= kChunk) return solve(B);
+  const int part = isSupernodal() ? kSupernodalChunk : kChunk;
+  if (takesTurns(isSupernodal()) || threadCount() == 1 || B.cols() <= part) return solve(B);
   std::vector<Workspace> workspaces;
-  return solveInParts(B, kChunk, workspaces);
+  return solveInParts(B, part, workspaces);
 }
 
 Eigen::MatrixXd CholmodFactor::solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const {
-  if (part < 1 || part > kChunk)
-    throw std::invalid_argument("CholmodFactor::solveInParts: part must be in [1, " + std::to_string(kChunk) + "]");
-  if (isSupernodal()) {  // one BLAS caller at a time (blasTurn): the whole block on this thread
+  const int most = isSupernodal() ? kSupernodalChunk : kChunk;
+  if (part < 1 || part > most)
+    throw std::invalid_argument("CholmodFactor::solveInParts: part must be in [1, " + std::to_string(most) + "]");
+  if (takesTurns(isSupernodal())) {  // one BLAS caller at a time (blasTurn): the whole block on this thread
     if (workspaces.empty()) workspaces.emplace_back();
     return solve(B, workspaces.front());
   }
-  const int parts = static_cast<int>((B.cols() + part - 1) / part);
-  const int threads = std::max(1, std::min(threadCount(), parts));
-  while (static_cast<int>(workspaces.size()) < threads) workspaces.emplace_back();
-  // A wrong row count is refused by solve(B, workspace) in the first part, and parallelFor rethrows it.
+  // A supernodal part is a chunk of solve(B) (its arithmetic depends on the columns solved together).
+  if (isSupernodal()) part = kSupernodalChunk;
   Eigen::MatrixXd X(B.rows(), B.cols());
-  parallelFor(parts, threads, [&](int index, int thread) {
-    const Eigen::Index begin = static_cast<Eigen::Index>(index) * part;
-    const Eigen::Index width = std::min<Eigen::Index>(part, B.cols() - begin);
-    X.middleCols(begin, width) = solve(B.middleCols(begin, width), workspaces[static_cast<std::size_t>(thread)]);
+  onThreads(B.cols(), part, workspaces, [&](Eigen::Index begin, Eigen::Index width, Workspace& workspace) {
+    X.middleCols(begin, width) = solve(B.middleCols(begin, width), workspace);
   });
   return X;
 }
+
+void CholmodFactor::onThreads(Eigen::Index columns, int part, std::vector<Workspace>& workspaces,
+                              const std::function<void(Eigen::Index, Eigen::Index, Workspace&)>& body) const {
+  const int parts = static_cast<int>((columns + part - 1) / part);
+  const int threads = detail::WorkerPool::insideRun() ? 1 : std::max(1, std::min(threadCount(), parts));
+  while (static_cast<int>(workspaces.size()) < threads) workspaces.emplace_back();
+  // A wrong row count is refused by the first part's solve, and parallelFor rethrows it.
+  parallelFor(parts, threads, [&](int index, int thread) {
+    const Eigen::Index begin = static_cast<Eigen::Index>(index) * part;
+    body(begin, std::min<Eigen::Index>(part, columns - begin), workspaces[static_cast<std::size_t>(thread)]);
+  });
+}
+
 bool CholmodFactor::condenses(const Eigen::SparseMatrix<double>& C) const {
   if (impl_->trailing_position.empty() || C.cols() != impl_->n) return false;
   for (Eigen::Index k = 0; k < C.outerSize(); ++k)
@@ -249,20 +269,28 @@ Eigen::MatrixXd CholmodFactor::solveFromTrailing(const Eigen::SparseMatrix<doubl
   // (P Rᵀ U) on the trailing block, then L_JJ⁻¹ of it.
   Eigen::MatrixXd Y = trailingPart(R, "CholmodFactor::solveFromTrailing") * U;
   f.trailing_factor.triangularView<Eigen::Lower>().solveInPlace(Y);
-  CholmodWorkspace& w = cholmodState(f.own);
   const auto* perm = static_cast<const int*>(f.L->Perm);
   Eigen::MatrixXd X(n, U.cols());
-  inChunks(isSupernodal(), U.cols(), [&](Eigen::Index c, Eigen::Index cols) {
+  const auto chunk = [&](Eigen::Index c, Eigen::Index cols, Workspace& workspace) {
+    CholmodWorkspace& w = cholmodState(workspace);
     Eigen::MatrixXd y = Eigen::MatrixXd::Zero(n, cols);  // L⁻¹ P Rᵀ U: zero above the trailing block
     y.bottomRows(count) = Y.middleCols(c, cols);
     cholmod_dense b = denseView(y.data(), n, cols);
+    const auto turn = blasTurn(isSupernodal());
     if (!cholmod_solve2(CHOLMOD_Lt, f.L, &b, nullptr, &w.X, nullptr, &w.Y, &w.E, &w.common))
       throw std::runtime_error("CHOLMOD solve failed (status " + std::to_string(w.common.status) + ")");
     const auto* x = static_cast<const double*>(w.X->x);
     const Eigen::Index ld = static_cast<Eigen::Index>(w.X->d);
     for (Eigen::Index j = 0; j < cols; ++j)
       for (Eigen::Index k = 0; k < n; ++k) X(perm[k], c + j) = x[j * ld + k];  // x = Pᵀ (Lᵀ)⁻¹ y
-  });
+  };
+  const int part = isSupernodal() ? kSupernodalChunk : kChunk;
+  if (takesTurns(isSupernodal())) {
+    for (Eigen::Index c = 0; c < U.cols(); c += part) chunk(c, std::min<Eigen::Index>(part, U.cols() - c), f.own);
+    return X;
+  }
+  std::vector<Workspace> workspaces;
+  onThreads(U.cols(), part, workspaces, chunk);
   return X;
 }
 

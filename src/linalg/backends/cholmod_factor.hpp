@@ -9,6 +9,7 @@
 // then run at once, supernodal ones (which call the BLAS) one after the other (cholmod_factor.cpp).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -42,7 +43,8 @@ class CholmodFactor final : public SpdSolver {
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B, Workspace& workspace) const override;
   using SpdSolver::solve;  // with the factor's own workspace: one thread at a time
   /// The same chunks handed out to threadCount() threads, each with a workspace of its own (a
-  /// supernodal factor: solve(B) on this thread): bitwise solve(B)'s result on any thread count.
+  /// supernodal factor on a BLAS that does not take concurrent calls: solve(B) on this thread):
+  /// bitwise solve(B)'s result on any thread count.
   /// For the many-column solves of one caller (the Delassus operator of the incremental solver);
   /// not from inside a parallelFor body (src/core/threads.hpp).
   Eigen::MatrixXd solveOnThreads(const Eigen::MatrixXd& B) const override;
@@ -50,9 +52,10 @@ class CholmodFactor final : public SpdSolver {
   /// out in order to threadCount() threads, thread t solving with workspaces[t] (added as needed, kept
   /// for the next call). A part is solved the same way on any thread, so the result does not depend
   /// on the thread count; narrow parts spread few columns over the threads (the separated stage's
-  /// new directions, about 8 at a time: pgd/response_basis.cpp). A supernodal factor solves the whole
-  /// of B on this thread with workspaces[0], as solve(B, workspaces[0]), on any thread count. Not from
-  /// inside a parallelFor body.
+  /// new directions, about 8 at a time: pgd/response_basis.cpp). A supernodal factor's parts are
+  /// solve(B)'s chunks of kSupernodalChunk, whatever `part` (1 ≤ part ≤ kSupernodalChunk there), and
+  /// on a BLAS that does not take concurrent calls the whole of B is solved on this thread with
+  /// workspaces[0], as solve(B, workspaces[0]). Not from inside a parallelFor body.
   Eigen::MatrixXd solveInParts(const Eigen::MatrixXd& B, int part, std::vector<Workspace>& workspaces) const override;
   /// Whether every nonzero column of C (r × n) is a trailing dof of this factor, so that condensed(C)
   /// needs no solve.
@@ -63,8 +66,9 @@ class CholmodFactor final : public SpdSolver {
   Eigen::MatrixXd condensed(const Eigen::SparseMatrix<double>& C) const override;
   /// A⁻¹ Rᵀ U for an R that condenses() (r × n, U: r × k): with P A Pᵀ = L Lᵀ and Rᵀ U nonzero on
   /// the trailing dofs alone, the forward solve is L_JJ⁻¹ on the trailing block (dense), and only the
-  /// backward solve with Lᵀ is sparse: about half a solve per column. On this thread, by chunks as
-  /// solve(B). Throws std::invalid_argument for another R.
+  /// backward solve with Lᵀ is sparse: about half a solve per column. By chunks as solve(B), handed
+  /// out to the threads as solveOnThreads does (the same bits on any thread count). Throws
+  /// std::invalid_argument for another R.
   Eigen::MatrixXd solveFromTrailing(const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& U) const override;
   /// The memory of a factor with `entries` entries of L: 8 bytes each, times kBytesPerEntry for the
   /// explicit zeros of supernodal amalgamation and the workspace (measured: 4.14 GB of resident
@@ -75,7 +79,7 @@ class CholmodFactor final : public SpdSolver {
   std::string backend() const override { return "cholmod"; }
   bool isDirect() const override { return true; }
   /// Whether the factor is kept supernodal (fl / lnz ≥ kSupernodalSolveSwitch: the 3D meshes), solved
-  /// through the BLAS by one thread at a time.
+  /// through the BLAS: by one thread at a time unless the BLAS takes concurrent calls.
   bool isSupernodal() const;
   /// Entries of the Cholesky factor L as CHOLMOD's analysis counts them (cholmod_common::lnz:
   /// without the explicit zeros of supernodal amalgamation): its memory is about 8 bytes each.
@@ -91,6 +95,13 @@ class CholmodFactor final : public SpdSolver {
   /// for its solves (else made simplicial): 2D meshes measured up to 67, the 3D half-ball from 104
   /// (cholmod_factor.cpp).
   static constexpr double kSupernodalSolveSwitch = 100.0;
+  /// Flops of a factorisation from which OpenBLAS's threads compute its supernodes' dense calls
+  /// (linalg::BlasThreadsScope), where the BLAS takes concurrent calls: threaded, the factor's last
+  /// bits depend on the thread count, so only a factorisation that takes seconds on one core is
+  /// (the half-ball from about divisions 16; 1.2 to 1.7 times faster on two threads at divisions 20,
+  /// docs/threads.md, "OpenBLAS's pthread build"); every 2D mesh and small 3D one keeps the bits of
+  /// one thread.
+  static constexpr double kThreadedFactorFlops = 1e10;
   /// |trailing| · lnz from which the trailing dofs are ordered last: the incremental solver's zone
   /// is faster so from 1.8e8 on, slower at 3.8e7 and below (docs/threads.md, "The Delassus operator
   /// from the factorisation").
@@ -102,6 +113,10 @@ class CholmodFactor final : public SpdSolver {
   static constexpr double kTrailingBytes = 128.0 * 1024 * 1024;
 
  private:
+  /// body(begin, width, workspace) for the parts of `part` columns of `columns`, handed out in order
+  /// to threadCount() threads (one inside a parallelFor body), thread t with workspaces[t].
+  void onThreads(Eigen::Index columns, int part, std::vector<Workspace>& workspaces,
+                 const std::function<void(Eigen::Index, Eigen::Index, Workspace&)>& body) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
   void factorise(const Eigen::SparseMatrix<double>& A, const std::string& what, const std::vector<int>& trailing,
