@@ -224,13 +224,19 @@ Eigen::MatrixXd CholmodFactor::solveInParts(const Eigen::MatrixXd& B, int part, 
 void CholmodFactor::onThreads(Eigen::Index columns, int part, std::vector<Workspace>& workspaces,
                               const std::function<void(Eigen::Index, Eigen::Index, Workspace&)>& body) const {
   const int parts = static_cast<int>((columns + part - 1) / part);
-  const int threads = detail::WorkerPool::insideRun() ? 1 : std::max(1, std::min(threadCount(), parts));
+  const bool nested = detail::WorkerPool::insideRun();  // inside a parallel body: this thread alone
+  const int threads = nested ? 1 : std::max(1, std::min(threadCount(), parts));
   while (static_cast<int>(workspaces.size()) < threads) workspaces.emplace_back();
-  // A wrong row count is refused by the first part's solve, and parallelFor rethrows it.
-  parallelFor(parts, threads, [&](int index, int thread) {
+  const auto run = [&](int index, int thread) {
     const Eigen::Index begin = static_cast<Eigen::Index>(index) * part;
     body(begin, std::min<Eigen::Index>(part, columns - begin), workspaces[static_cast<std::size_t>(thread)]);
-  });
+  };
+  if (nested) {
+    for (int index = 0; index < parts; ++index) run(index, 0);
+    return;
+  }
+  // A wrong row count is refused by the first part's solve, and parallelFor rethrows it.
+  parallelFor(parts, threads, run);
 }
 
 bool CholmodFactor::condenses(const Eigen::SparseMatrix<double>& C) const {
@@ -272,11 +278,11 @@ Eigen::MatrixXd CholmodFactor::solveFromTrailing(const Eigen::SparseMatrix<doubl
   const auto* perm = static_cast<const int*>(f.L->Perm);
   Eigen::MatrixXd X(n, U.cols());
   const auto chunk = [&](Eigen::Index c, Eigen::Index cols, Workspace& workspace) {
+    const auto turn = blasTurn(isSupernodal());  // with a serial BLAS, also the turn of f.own
     CholmodWorkspace& w = cholmodState(workspace);
     Eigen::MatrixXd y = Eigen::MatrixXd::Zero(n, cols);  // L⁻¹ P Rᵀ U: zero above the trailing block
     y.bottomRows(count) = Y.middleCols(c, cols);
     cholmod_dense b = denseView(y.data(), n, cols);
-    const auto turn = blasTurn(isSupernodal());
     if (!cholmod_solve2(CHOLMOD_Lt, f.L, &b, nullptr, &w.X, nullptr, &w.Y, &w.E, &w.common))
       throw std::runtime_error("CHOLMOD solve failed (status " + std::to_string(w.common.status) + ")");
     const auto* x = static_cast<const double*>(w.X->x);

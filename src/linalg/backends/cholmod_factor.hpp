@@ -114,7 +114,8 @@ class CholmodFactor final : public SpdSolver {
 
  private:
   /// body(begin, width, workspace) for the parts of `part` columns of `columns`, handed out in order
-  /// to threadCount() threads (one inside a parallelFor body), thread t with workspaces[t].
+  /// to threadCount() threads (inside a parallelFor body: in order on this thread), thread t with
+  /// workspaces[t].
   void onThreads(Eigen::Index columns, int part, std::vector<Workspace>& workspaces,
                  const std::function<void(Eigen::Index, Eigen::Index, Workspace&)>& body) const;
   struct Impl;
