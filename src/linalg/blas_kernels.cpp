@@ -37,11 +37,6 @@ bool supportsAvx2() {
 #endif
 }
 
-// Held to one thread as soon as the library is loaded, before any caller's first product.
-const bool kConcurrentAtLoad = blasTakesConcurrentCalls();
-
-}  // namespace
-
 // OpenBLAS's pthread build starts its threads when it is loaded, before any program could block the
 // signals it waits for (src/core/interruption.cpp: SIGTERM and SIGINT, blocked in every thread but
 // one that sigwaits): a signal the kernel handed to one of them would end the process at once.
@@ -52,6 +47,11 @@ void stopOpenBlasThreads() {
   using Shutdown = int (*)();
   if (auto shutdown = reinterpret_cast<Shutdown>(dlsym(RTLD_DEFAULT, "blas_thread_shutdown_"))) shutdown();
 }
+
+// Held to one thread as soon as the library is loaded, before any caller's first product.
+const bool kConcurrentAtLoad = blasTakesConcurrentCalls();
+
+}  // namespace
 
 bool blasTakesConcurrentCalls() {
   static const bool concurrent = [] {
