@@ -68,16 +68,15 @@ int columnRanges(const Operand& op, Eigen::Index columns) {
   return std::max(ranges, 1);
 }
 
-// C = op(A) B + β C, over column ranges on the threads when columnRanges says so: range r has
-// grains [r·g/R, (r+1)·g/R) of kColumnGrain columns, the last range also the columns after them.
+// C = op(A) B + β C, over column ranges on the threads when columnRanges says so: parallelRanges'
+// ranges of kColumnGrain-column grains, the last range also the columns after the last grain.
 void splitGemm(const Operand& op, const Eigen::Ref<const Eigen::MatrixXd>& B, Eigen::Ref<Eigen::MatrixXd> C, double beta) {
   const int ranges = columnRanges(op, B.cols());
   if (ranges == 1) return gemm(op, B, C, beta);
-  const Eigen::Index grains = B.cols() / kColumnGrain;
-  const auto first = [&](int r) { return r == ranges ? B.cols() : r * grains / ranges * kColumnGrain; };
-  parallelFor(ranges, ranges, [&](int r, int) {
-    const Eigen::Index begin = first(r), width = first(r + 1) - begin;
-    gemm(op, B.middleCols(begin, width), C.middleCols(begin, width), beta);
+  const auto grains = static_cast<int>(B.cols() / kColumnGrain);
+  parallelRanges(grains, ranges, [&](int first, int last) {
+    const Eigen::Index begin = first * kColumnGrain, end = last == grains ? B.cols() : last * kColumnGrain;
+    gemm(op, B.middleCols(begin, end - begin), C.middleCols(begin, end - begin), beta);
   });
 }
 
