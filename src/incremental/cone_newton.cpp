@@ -97,6 +97,20 @@ ConeLaw::Evaluation ConeLaw::evaluate(const Eigen::VectorXd& lambda) {
   return e;
 }
 
+// (A_CC + C_CC W_CC) Δλ_C = −F_C + C_CC W_CO λ_O, one block row of D per closed node (D × D
+// blocks of fixed size: these products are most of the step's arithmetic outside the LU).
+template <int D>
+void ConeLaw::newtonSystem(const std::vector<int>& closed, const Evaluation& e, const Eigen::VectorXd& open_response,
+                           Eigen::MatrixXd& M, Eigen::VectorXd& rhs) const {
+  for (Eigen::Index p = 0; p < static_cast<Eigen::Index>(closed.size()); ++p) {
+    const Eigen::Index n = D * closed[p];
+    const Eigen::Matrix<double, D, D> A = e.A.middleCols<D>(n), C = e.C.middleCols<D>(n);
+    M.middleRows<D>(D * p).noalias() = C * W_CC_.middleRows<D>(D * p);
+    M.block<D, D>(D * p, D * p) += A;
+    rhs.segment<D>(D * p).noalias() = C * open_response.segment<D>(D * p) - e.F.segment<D>(n);
+  }
+}
+
 bool ConeLaw::newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eigen::VectorXd& step) {
   std::vector<int> closed, forced_open;
   for (int i = 0; i < contact_.size(); ++i) {
@@ -105,27 +119,23 @@ bool ConeLaw::newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eig
   }
   const std::vector<int> rows = rowsOfNodes(d_, closed);
   const auto nA = static_cast<Eigen::Index>(rows.size());
-  // W_CC gathered from the closed nodes' columns, and W_CO λ_O, the open nodes' forces that
-  // Δλ_O = −λ_O removes (−C W_CO Δλ_O moves to the right-hand side).
-  Eigen::MatrixXd W_CC(nA, nA);
-  for (Eigen::Index q = 0; q < nA; ++q) W_CC.col(q) = W_.column(closed[q / d_], static_cast<int>(q % d_))(rows);
+  // W_CC gathered from the closed nodes' columns (once per closed set), and W_CO λ_O, the open
+  // nodes' forces that Δλ_O = −λ_O removes (−C W_CO Δλ_O moves to the right-hand side).
+  if (closed != closed_) {
+    W_CC_.resize(nA, nA);
+    for (Eigen::Index q = 0; q < nA; ++q) W_CC_.col(q) = W_.column(closed[q / d_], static_cast<int>(q % d_))(rows);
+    closed_ = closed;
+  }
   Eigen::VectorXd open_response = Eigen::VectorXd::Zero(nA);
   for (int j : forced_open)
     for (int b = 0; b < d_; ++b) open_response += W_.column(j, b)(rows) * lambda[d_ * j + b];
-  // (A_CC + C_CC W_CC) Δλ_C = −F_C + C_CC W_CO λ_O, one block row of d per closed node.
   Eigen::MatrixXd M(nA, nA);
   Eigen::VectorXd rhs(nA);
-  for (Eigen::Index p = 0; p < static_cast<Eigen::Index>(closed.size()); ++p) {
-    const int n = d_ * closed[p];
-    const auto A = e.A.middleCols(n, d_), C = e.C.middleCols(n, d_);
-    M.middleRows(d_ * p, d_).noalias() = C * W_CC.middleRows(d_ * p, d_);
-    M.block(d_ * p, d_ * p, d_, d_) += A;
-    rhs.segment(d_ * p, d_).noalias() = C * open_response.segment(d_ * p, d_);
-    rhs.segment(d_ * p, d_) -= e.F.segment(n, d_);
-  }
+  if (d_ == 3) newtonSystem<3>(closed, e, open_response, M, rhs);
+  else newtonSystem<2>(closed, e, open_response, M, rhs);
   step = -lambda;
   if (nA > 0) {
-    const Eigen::VectorXd x = M.partialPivLu().solve(rhs);
+    const Eigen::VectorXd x = system_.solve(closed, M, rhs);
     for (int p = 0; p < static_cast<int>(closed.size()); ++p) step.segment(d_ * closed[p], d_) = x.segment(d_ * p, d_);
   }
   return step.allFinite();

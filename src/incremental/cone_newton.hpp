@@ -18,6 +18,9 @@
 //         A_tt = I − q P, A_tn = −μ ξ̂, C_tn = μ ρ_n ξ̂, C_tt = q ρ_t P.
 // Open nodes get Δλ = −λ; the closed ones solve the dense d n_closed system
 //   (A_CC + C_CC W_CC) Δλ_C = −F_C + C_CC W_CO λ_O  (LU with partial pivoting).
+// While the closed set stays, only the rows of nodes that slip (or switch between stick and slip)
+// change from one system to the next: one LU serves many Newton steps and instants, the changed
+// rows through the Woodbury formula (src/linalg/row_updated_lu.hpp), and W_CC is gathered once.
 //
 // W is never formed: its columns come from LazyDelassus (lazy_delassus.hpp) for the nodes that
 // carry a force or close. ρ_n = 1 / W_nn and ρ_t = (d − 1) / tr(W_tt) of the node, known once its
@@ -27,6 +30,7 @@
 #include <vector>
 
 #include "stcontact/incremental/lazy_delassus.hpp"
+#include "stcontact/linalg/row_updated_lu.hpp"
 #include "stcontact/problem/problem.hpp"
 
 namespace stc {
@@ -53,11 +57,16 @@ class ConeLaw {
   bool newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eigen::VectorXd& step);
   /// S_k = max(‖λ‖∞, max_i ρ_i ‖v_0(:, k)‖∞), the largest ρ_n or ρ_t known so far.
   double forceScale(const Eigen::VectorXd& lambda) const;
+  /// The Newton systems solved so far: LU factorisations, updates of one (row_updated_lu.hpp).
+  const linalg::RowUpdatedLu::Counts& newtonSystems() const { return system_.counts(); }
 
  private:
   Eigen::VectorXd displacement(const Eigen::VectorXd& lambda) const;
   void learnScaling(const std::vector<int>& nodes);
   void nodeLaw(int i, const Eigen::VectorXd& lambda, Evaluation& e) const;
+  template <int D>
+  void newtonSystem(const std::vector<int>& closed, const Evaluation& e, const Eigen::VectorXd& open_response,
+                    Eigen::MatrixXd& M, Eigen::VectorXd& rhs) const;
 
   const ContactInterface& contact_;
   LazyDelassus& W_;
@@ -65,6 +74,9 @@ class ConeLaw {
   Eigen::VectorXd rho_n_, rho_t_;  // per node, 0 until its columns exist
   double rho_max_ = 0.0;
   Eigen::VectorXd v0_, v_previous_;
+  std::vector<int> closed_;  // the closed set of W_CC_
+  Eigen::MatrixXd W_CC_;
+  linalg::RowUpdatedLu system_;
 };
 
 }  // namespace stc

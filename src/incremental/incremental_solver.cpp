@@ -304,7 +304,15 @@ SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& opti
     law.setInstant(v0.col(k), v_previous);
     return solveInstantByNewton(law, lambda, options.tolerance, options.max_newton_iterations);
   };
-  return march(problem, callback, start, solve_at, [&] { return load_solves + delassus.sparseSolves(); });
+  SolveResult result =
+      march(problem, callback, start, solve_at, [&] { return load_solves + delassus.sparseSolves(); });
+  const linalg::RowUpdatedLu::Counts& systems = law.newtonSystems();
+  std::ostringstream note;
+  note << "Newton systems: " << systems.factorisations << " LU factorisations, " << systems.updates
+       << " solved by updating one (" << systems.rejected << " updates rejected)";
+  result.summary.remarks.push_back(note.str());
+  result.summary.composeMessage();
+  return result;
 }
 
 // The cone law of cone_newton.hpp on every node, with the Delassus columns computed on demand; those

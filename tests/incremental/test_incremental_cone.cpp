@@ -89,3 +89,31 @@ TEST(IncrementalCone, ComputesColumnsOnlyForNodesThatClose) {
   EXPECT_GE(computed, 13);  // the closed nodes at t = 1 (reactions.csv: n_contact = 15 at the last instant)
   EXPECT_LT(computed, total / 4);
 }
+
+// While the closed set stays, the Newton systems after the first are solved by updating its LU
+// (row_updated_lu.hpp): the message reports "Newton systems: F LU factorisations, U solved by
+// updating one (R updates rejected)", one system per Newton iteration with a closed node.
+// The half-ball pressed by t = 0.2 and held, then two cycles of amplitude 0.004 along x (partial
+// slip, as examples/scenes/hemisphere_fretting.toml): the closed set settles, the slip annulus moves.
+TEST(IncrementalCone, UpdatesOneFactorAcrossNewtonSystemsWhileTheClosedSetStays) {
+  stc::Scene scene = stc::test::hemisphereScene(4, 101);
+  scene.dirichlet[0] = {"top", stc::Component::X,
+                        {{0.0, 0.2, 0.4, 0.6, 0.8, 1.0}, {0.0, 0.0, 0.004, -0.004, 0.004, 0.0}}};
+  scene.dirichlet[2] = {"top", stc::Component::Z, {{0.0, 0.05, 0.2, 1.0}, {0.0, -0.01, -0.06, -0.06}}};
+  const stc::Problem problem = stc::buildProblem(scene);
+  const stc::SolveResult r = stc::solveIncremental(problem);
+  ASSERT_EQ(r.summary.termination, stc::Termination::Converged) << r.summary.message;
+  std::smatch systems, newton;
+  const std::regex counts(
+      "Newton systems: ([0-9]+) LU factorisations, ([0-9]+) solved by updating one \\(([0-9]+) updates rejected\\)");
+  ASSERT_TRUE(std::regex_search(r.summary.message, systems, counts))
+      << r.summary.message;
+  ASSERT_TRUE(std::regex_search(r.summary.message, newton, std::regex("([0-9]+) Newton iterations")));
+  const int factorised = std::stoi(systems[1]), updated = std::stoi(systems[2]), rejected = std::stoi(systems[3]);
+  std::cout << factorised << " factorised, " << updated << " updated, " << rejected << " rejected of "
+            << newton[1] << " Newton iterations\n";
+  EXPECT_GT(updated, 0);
+  EXPECT_EQ(rejected, 0);
+  EXPECT_LE(factorised + updated, std::stoi(newton[1]));
+  EXPECT_LT(stc::checkContactLaw(problem, r.interface).max(), 1e-10);
+}
