@@ -1,5 +1,6 @@
 #include "stcontact/linalg/row_updated_lu.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace stc::linalg {
@@ -12,9 +13,7 @@ Eigen::VectorXd RowUpdatedLu::solve(const std::vector<int>& key, const Eigen::Ma
   if (M.rows() != M.cols() || M.rows() != b.size())
     throw std::invalid_argument("RowUpdatedLu: M must be square, b of its size");
   Eigen::VectorXd x;
-  if (factorised_ && key == key_ && M.rows() == M0_.rows()) {
-    if (update(M, b, x)) return x;
-  }
+  if (factorised_ && key == key_ && M.rows() == M0_.rows() && update(M, b, x)) return x;
   return factorise(key, M, b);
 }
 
@@ -49,8 +48,8 @@ void RowUpdatedLu::ensureColumns(const std::vector<Eigen::Index>& rows) {
   const Eigen::Index n = M0_.rows(), k = static_cast<Eigen::Index>(missing.size());
   Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, k);
   for (Eigen::Index c = 0; c < k; ++c) E(missing[static_cast<std::size_t>(c)], c) = 1.0;
-  if (columns_.rows() != n || columns_.cols() < stored_ + k)
-    columns_.conservativeResize(n, std::max(2 * (stored_ + k), Eigen::Index(8)));
+  if (columns_.rows() != n || columns_.cols() < stored_ + k)  // each row once per factor: n at most
+    columns_.conservativeResize(n, std::min(n, std::max(2 * (stored_ + k), Eigen::Index(8))));
   columns_.middleCols(stored_, k) = lu_.solve(E);
   for (Eigen::Index c = 0; c < k; ++c)
     column_of_[static_cast<std::size_t>(missing[static_cast<std::size_t>(c)])] = stored_ + c;
