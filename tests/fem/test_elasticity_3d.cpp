@@ -6,6 +6,7 @@
 #include <Eigen/SparseCholesky>
 #include <cstdio>
 #include <functional>
+#include <vector>
 
 #include "stcontact/fem/elasticity_3d.hpp"
 #include "stcontact/mesh/half_ball.hpp"
@@ -72,6 +73,34 @@ TEST(Elasticity3d, StiffnessIsSymmetric) {
   EXPECT_EQ(K.rows(), mesh.numDofs());
   const Eigen::SparseMatrix<double> Kt = K.transpose();
   EXPECT_LE((K - Kt).norm(), 1e-14 * K.norm());
+}
+
+// The element matrices summed by Eigen's triplets, independently: the node-graph assembly stores the
+// same entries and sums each in the same (element) order, so the same bits.
+TEST(Elasticity3d, StiffnessEqualsTheTripletSumBitForBit) {
+  const stc::TetMesh mesh = testBody();
+  const Eigen::Matrix<double, 6, 6> D = stc::hookeMatrix3d(kSteelLike);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const Eigen::Matrix<double, 6, 12> B = stc::strainDisplacement(mesh, e);
+    const Eigen::Matrix<double, 12, 12> Ke = mesh.sixSignedVolume(e) / 6.0 * B.transpose() * D * B;
+    for (int a = 0; a < 12; ++a)
+      for (int b = 0; b < 12; ++b)
+        triplets.emplace_back(3 * mesh.tets(a / 3, e) + a % 3, 3 * mesh.tets(b / 3, e) + b % 3, Ke(a, b));
+  }
+  Eigen::SparseMatrix<double> expected(mesh.numDofs(), mesh.numDofs());
+  expected.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::SparseMatrix<double> K = stc::assembleStiffness(mesh, D);
+  ASSERT_EQ(K.nonZeros(), expected.nonZeros());
+  ASSERT_TRUE(K.isCompressed());
+  for (int c = 0; c < K.outerSize(); ++c) {
+    Eigen::SparseMatrix<double>::InnerIterator it(K, c), ref(expected, c);
+    for (; it && ref; ++it, ++ref) {
+      ASSERT_EQ(it.row(), ref.row()) << "column " << c;
+      ASSERT_EQ(it.value(), ref.value()) << "entry (" << it.row() << ", " << c << ")";
+    }
+    ASSERT_FALSE(it || ref) << "column " << c;
+  }
 }
 
 TEST(Elasticity3d, RigidBodyModesAreInTheKernel) {
