@@ -184,10 +184,12 @@ Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>&
                                               double energy_budget) const {
   if (!(energy_budget > 0.0) || B_rows.rows() == 0 || c.rows() == 0 || pending_ > 0) return displacementOn(B_rows, c);
   const Eigen::Index q = G_.rows();
-  // Only the left vectors (q + p short, m instants long): dgesvd on the tall transpose forms no Q
-  // of m rows, and Σ_ρ V_ρᵀ = U_ρᵀ H, the product with the history itself.
+  // Only the left vectors (q + p short, m instants long): the SVD of the tall transpose's R forms no
+  // Q of m rows, and Σ_ρ V_ρᵀ = U_ρᵀ H, the product with the history itself. Divide and conquer:
+  // q + p reaches the zone's rows (915 on the fretting history at divisions 20).
   const Eigen::MatrixXd whitened = whitenedHistory(*this, c);
-  const linalg::Svd svd = linalg::singularValueDecomposition(whitened, linalg::SvdMethod::qr_iteration, linalg::kThinU);
+  const linalg::Svd svd =
+      linalg::singularValueDecomposition(whitened, linalg::SvdMethod::lapack_divide_and_conquer, linalg::kThinU);
   const Eigen::Index rho = modesWithinBudget(svd.values, energy_budget);
   if (rho == svd.values.size()) return displacementOn(B_rows, c);
   const Eigen::MatrixXd C = energy_.combination(svd.U.leftCols(rho));  // (q + p) × ρ

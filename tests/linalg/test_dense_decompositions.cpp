@@ -115,13 +115,15 @@ TEST(DenseDecompositions, BothSvdMethodsReconstructAndAgree) {
   EXPECT_LT((values_only.values - jacobi.values).cwiseAbs().maxCoeff(), 1e-12 * jacobi.values[0]);
 }
 
-// QR iteration runs on the taller of M and Mᵀ: a tall and a wide matrix, each factor asked for alone
-// and both, reconstruct M and agree with Jacobi's singular values.
-TEST(DenseDecompositions, QrIterationSvdOfTallAndWideMatricesAgreesWithJacobi) {
-  for (const auto& [rows, cols] : {std::pair{60, 25}, std::pair{25, 201}}) {
+// QR iteration and LAPACK's divide and conquer run on the taller of M and Mᵀ: a tall and a wide
+// matrix, each factor asked for alone and both, reconstruct M and agree with Jacobi's singular values.
+class LapackSvd : public ::testing::TestWithParam<SvdMethod> {};
+
+TEST_P(LapackSvd, TallAndWideMatricesAgreeWithJacobi) {
+  for (const auto& [rows, cols] : {std::pair{60, 25}, std::pair{25, 201}, std::pair{40, 40}}) {
     const Eigen::MatrixXd M = gaussianSketch(rows, cols, 8);
     const Svd jacobi = singularValueDecomposition(M, SvdMethod::jacobi, kValuesOnly);
-    const Svd both = singularValueDecomposition(M, SvdMethod::qr_iteration, kThinU | kThinV);
+    const Svd both = singularValueDecomposition(M, GetParam(), kThinU | kThinV);
     const Eigen::Index k = std::min(rows, cols);
     ASSERT_EQ(both.values.size(), k);
     ASSERT_EQ(both.U.rows(), rows);
@@ -132,14 +134,41 @@ TEST(DenseDecompositions, QrIterationSvdOfTallAndWideMatricesAgreesWithJacobi) {
     EXPECT_LT((both.values - jacobi.values).cwiseAbs().maxCoeff(), 1e-12 * jacobi.values[0]) << rows;
     // One factor alone, up to signs: (UᵀM)(UᵀM)ᵀ = Σ² and (MV)ᵀ(MV) = Σ².
     const Eigen::MatrixXd squares = both.values.cwiseAbs2().asDiagonal();
-    const Svd left = singularValueDecomposition(M, SvdMethod::qr_iteration, kThinU);
+    const Svd left = singularValueDecomposition(M, GetParam(), kThinU);
     EXPECT_EQ(left.V.size(), 0);
     const Eigen::MatrixXd UtM = left.U.transpose() * M;
     EXPECT_LT((UtM * UtM.transpose() - squares).cwiseAbs().maxCoeff(), 1e-12 * squares(0, 0)) << rows;
-    const Svd right = singularValueDecomposition(M, SvdMethod::qr_iteration, kThinV);
+    const Svd right = singularValueDecomposition(M, GetParam(), kThinV);
     EXPECT_EQ(right.U.size(), 0);
     const Eigen::MatrixXd MV = M * right.V;
     EXPECT_LT((MV.transpose() * MV - squares).cwiseAbs().maxCoeff(), 1e-12 * squares(0, 0)) << rows;
+    const Svd values = singularValueDecomposition(M, GetParam(), kValuesOnly);
+    EXPECT_EQ(values.U.size() + values.V.size(), 0);
+    EXPECT_LT((values.values - jacobi.values).cwiseAbs().maxCoeff(), 1e-12 * jacobi.values[0]) << rows;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(DenseDecompositions, LapackSvd,
+                         ::testing::Values(SvdMethod::qr_iteration, SvdMethod::lapack_divide_and_conquer),
+                         [](const auto& info) {
+                           return info.param == SvdMethod::qr_iteration ? "QrIteration" : "DivideAndConquer";
+                         });
+
+// A graded spectrum, as a converged history's (σ_j = 10^(−j/4)): the vectors of the leading values
+// span the same space by divide and conquer as by Jacobi, to the gap that separates them.
+TEST(DenseDecompositions, DivideAndConquerKeepsTheLeadingSubspaceOfAGradedSpectrum) {
+  const int p = 48, m = 501;
+  const Eigen::VectorXd sigma = Eigen::VectorXd::LinSpaced(p, 0.0, -(p - 1) / 4.0).unaryExpr([](double e) {
+    return std::pow(10.0, e);
+  });
+  const Eigen::MatrixXd M = orthonormalColumns(gaussianSketch(p, p, 3)) * sigma.asDiagonal() *
+                            orthonormalColumns(gaussianSketch(m, p, 4)).transpose();
+  const Svd dc = singularValueDecomposition(M, SvdMethod::lapack_divide_and_conquer, kThinU);
+  const Svd jacobi = singularValueDecomposition(M, SvdMethod::jacobi, kThinU);
+  EXPECT_LT((dc.values - sigma).cwiseAbs().maxCoeff(), 1e-13);  // to ε σ_1, σ_1 = 1 (backward stable)
+  for (int lead : {4, 12, 24}) {  // ‖P_dc − P_jacobi‖ ≤ ε σ_1 / gap, gap = σ_lead (1 − 10^(−1/4)) ≥ 1e-6
+    const Eigen::MatrixXd U = dc.U.leftCols(lead), V = jacobi.U.leftCols(lead);
+    EXPECT_LT((U * U.transpose() - V * V.transpose()).norm(), 1e-8) << lead;
   }
 }
 
