@@ -78,8 +78,8 @@ std::vector<std::vector<int>> nodeNeighbours(const TetMesh& mesh) {
 }
 
 // K's compressed columns with every entry of its 3 × 3 node blocks stored (as the element matrices
-// fill them) and set to zero; `first[n]` is the offset of node n's first block row in each of its
-// three columns.
+// fill them) and set to zero: in column 3n + c, the block of the j-th of node n's sorted neighbours
+// starts 3 j entries after the column's start.
 Eigen::SparseMatrix<double> blockPattern(const TetMesh& mesh, const std::vector<std::vector<int>>& neighbours) {
   const int n = mesh.numDofs();
   Eigen::SparseMatrix<double> K(n, n);
