@@ -98,17 +98,26 @@ ConeLaw::Evaluation ConeLaw::evaluate(const Eigen::VectorXd& lambda) {
 }
 
 // (A_CC + C_CC W_CC) Δλ_C = −F_C + C_CC W_CO λ_O, one block row of D per closed node (D × D
-// blocks of fixed size: these products are most of the step's arithmetic outside the LU).
+// blocks of fixed size: these products are most of the step's arithmetic outside the LU). A block
+// row depends on its node's A and C alone while the closed set stays, so it is formed again only
+// when they changed (a slipping node's, or a node that changed status): the same matrix, without
+// the stuck nodes' rows formed and compared at every step.
 template <int D>
-void ConeLaw::newtonSystem(const std::vector<int>& closed, const Evaluation& e, const Eigen::VectorXd& open_response,
-                           Eigen::MatrixXd& M, Eigen::VectorXd& rhs) const {
+std::vector<Eigen::Index> ConeLaw::newtonSystem(const std::vector<int>& closed, const Evaluation& e,
+                                                const Eigen::VectorXd& open_response, bool rebuilt, Eigen::VectorXd& rhs) {
+  std::vector<Eigen::Index> changed;
   for (Eigen::Index p = 0; p < static_cast<Eigen::Index>(closed.size()); ++p) {
     const Eigen::Index n = D * closed[p];
     const Eigen::Matrix<double, D, D> A = e.A.middleCols<D>(n), C = e.C.middleCols<D>(n);
-    M.middleRows<D>(D * p).noalias() = C * W_CC_.middleRows<D>(D * p);
-    M.block<D, D>(D * p, D * p) += A;
     rhs.segment<D>(D * p).noalias() = C * open_response.segment<D>(D * p) - e.F.segment<D>(n);
+    if (!rebuilt && A == formed_A_.middleCols<D>(D * p) && C == formed_C_.middleCols<D>(D * p)) continue;
+    M_.middleRows<D>(D * p).noalias() = C * W_CC_.middleRows<D>(D * p);
+    M_.block<D, D>(D * p, D * p) += A;
+    formed_A_.middleCols<D>(D * p) = A;
+    formed_C_.middleCols<D>(D * p) = C;
+    for (Eigen::Index a = 0; a < D; ++a) changed.push_back(D * p + a);
   }
+  return changed;
 }
 
 bool ConeLaw::newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eigen::VectorXd& step) {
@@ -121,21 +130,24 @@ bool ConeLaw::newtonStep(const Eigen::VectorXd& lambda, const Evaluation& e, Eig
   const auto nA = static_cast<Eigen::Index>(rows.size());
   // W_CC gathered from the closed nodes' columns (once per closed set), and W_CO λ_O, the open
   // nodes' forces that Δλ_O = −λ_O removes (−C W_CO Δλ_O moves to the right-hand side).
-  if (closed != closed_) {
+  const bool rebuilt = closed != closed_;
+  if (rebuilt) {
     W_CC_.resize(nA, nA);
     for (Eigen::Index q = 0; q < nA; ++q) W_CC_.col(q) = W_.column(closed[q / d_], static_cast<int>(q % d_))(rows);
     closed_ = closed;
+    M_.resize(nA, nA);
+    formed_A_.resize(d_, nA);
+    formed_C_.resize(d_, nA);
   }
   Eigen::VectorXd open_response = Eigen::VectorXd::Zero(nA);
   for (int j : forced_open)
     for (int b = 0; b < d_; ++b) open_response += W_.column(j, b)(rows) * lambda[d_ * j + b];
-  Eigen::MatrixXd M(nA, nA);
   Eigen::VectorXd rhs(nA);
-  if (d_ == 3) newtonSystem<3>(closed, e, open_response, M, rhs);
-  else newtonSystem<2>(closed, e, open_response, M, rhs);
+  const std::vector<Eigen::Index> changed = d_ == 3 ? newtonSystem<3>(closed, e, open_response, rebuilt, rhs)
+                                                   : newtonSystem<2>(closed, e, open_response, rebuilt, rhs);
   step = -lambda;
   if (nA > 0) {
-    const Eigen::VectorXd x = system_.solve(closed, M, rhs);
+    const Eigen::VectorXd x = system_.solve(closed, M_, rhs, changed);
     for (int p = 0; p < static_cast<int>(closed.size()); ++p) step.segment(d_ * closed[p], d_) = x.segment(d_ * p, d_);
   }
   return step.allFinite();

@@ -64,9 +64,11 @@ class ConeLaw {
   Eigen::VectorXd displacement(const Eigen::VectorXd& lambda) const;
   void learnScaling(const std::vector<int>& nodes);
   void nodeLaw(int i, const Eigen::VectorXd& lambda, Evaluation& e) const;
+  /// Brings M_ to this step's Newton matrix, forming again only the block rows whose node's A or C
+  /// changed (`rebuilt`: every row, after a new closed set), and returns those rows.
   template <int D>
-  void newtonSystem(const std::vector<int>& closed, const Evaluation& e, const Eigen::VectorXd& open_response,
-                    Eigen::MatrixXd& M, Eigen::VectorXd& rhs) const;
+  std::vector<Eigen::Index> newtonSystem(const std::vector<int>& closed, const Evaluation& e,
+                                         const Eigen::VectorXd& open_response, bool rebuilt, Eigen::VectorXd& rhs);
 
   const ContactInterface& contact_;
   LazyDelassus& W_;
@@ -76,6 +78,8 @@ class ConeLaw {
   Eigen::VectorXd v0_, v_previous_;
   std::vector<int> closed_;  // the closed set of W_CC_
   Eigen::MatrixXd W_CC_;
+  Eigen::MatrixXd M_;                  // the last Newton matrix, A_CC + C_CC W_CC on closed_
+  Eigen::MatrixXd formed_A_, formed_C_;  // d × d |closed_|: the node blocks M_'s rows were formed with
   linalg::RowUpdatedLu system_;
 };
 

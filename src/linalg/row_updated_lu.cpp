@@ -13,7 +13,18 @@ Eigen::VectorXd RowUpdatedLu::solve(const std::vector<int>& key, const Eigen::Ma
   if (M.rows() != M.cols() || M.rows() != b.size())
     throw std::invalid_argument("RowUpdatedLu: M must be square, b of its size");
   Eigen::VectorXd x;
-  if (factorised_ && key == key_ && M.rows() == M0_.rows() && update(M, b, x)) return x;
+  if (factorised_ && key == key_ && M.rows() == M0_.rows() && update(M, b, changedRows(M), x)) return x;
+  return factorise(key, M, b);
+}
+
+Eigen::VectorXd RowUpdatedLu::solve(const std::vector<int>& key, const Eigen::MatrixXd& M, const Eigen::VectorXd& b,
+                                    const std::vector<Eigen::Index>& changed) {
+  if (M.rows() != M.cols() || M.rows() != b.size())
+    throw std::invalid_argument("RowUpdatedLu: M must be square, b of its size");
+  for (Eigen::Index i : changed)
+    if (i < 0 || i >= M.rows()) throw std::invalid_argument("RowUpdatedLu: a changed row is outside M");
+  Eigen::VectorXd x;
+  if (factorised_ && key == key_ && M.rows() == M0_.rows() && update(M, b, changedRowsAmong(M, changed), x)) return x;
   return factorise(key, M, b);
 }
 
@@ -24,6 +35,7 @@ Eigen::VectorXd RowUpdatedLu::factorise(const std::vector<int>& key, const Eigen
   lu_.compute(M0_);
   factorised_ = true;
   column_of_.assign(static_cast<std::size_t>(M.rows()), -1);
+  differing_.clear();
   stored_ = 0;
   ++counts_.factorisations;
   return lu_.solve(b);
@@ -36,6 +48,20 @@ std::vector<Eigen::Index> RowUpdatedLu::changedRows(const Eigen::MatrixXd& M) co
   std::vector<Eigen::Index> rows;
   for (Eigen::Index i = 0; i < M.rows(); ++i)
     if (difference[i] != 0.0) rows.push_back(i);
+  return rows;
+}
+
+// The rows of changedRows(M) are among `changed` and the rows that differed at the previous call
+// (the others are those of M₀): the same test, Σ_j |M − M₀|(i, j) ≠ 0 (NaN kept), on those alone.
+std::vector<Eigen::Index> RowUpdatedLu::changedRowsAmong(const Eigen::MatrixXd& M,
+                                                         const std::vector<Eigen::Index>& changed) const {
+  std::vector<Eigen::Index> candidates = differing_;
+  candidates.insert(candidates.end(), changed.begin(), changed.end());
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index i : candidates)
+    if ((M.row(i) - M0_.row(i)).cwiseAbs().sum() != 0.0) rows.push_back(i);
   return rows;
 }
 
@@ -56,8 +82,8 @@ void RowUpdatedLu::ensureColumns(const std::vector<Eigen::Index>& rows) {
   stored_ += k;
 }
 
-bool RowUpdatedLu::update(const Eigen::MatrixXd& M, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-  const std::vector<Eigen::Index> rows = changedRows(M);
+bool RowUpdatedLu::update(const Eigen::MatrixXd& M, const Eigen::VectorXd& b, const std::vector<Eigen::Index>& rows,
+                          Eigen::VectorXd& x) {
   const auto r = static_cast<Eigen::Index>(rows.size());
   if (static_cast<double>(r) > max_share_ * static_cast<double>(M.rows())) return false;
   x = lu_.solve(b);  // y = M₀⁻¹ b
@@ -76,6 +102,7 @@ bool RowUpdatedLu::update(const Eigen::MatrixXd& M, const Eigen::VectorXd& b, Ei
   }
   const bool accepted = x.allFinite() && (b - M * x).norm() <= kResidualBound * b.norm();
   ++(accepted ? counts_.updates : counts_.rejected);
+  if (accepted) differing_ = rows;
   return accepted;
 }
 

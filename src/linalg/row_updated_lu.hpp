@@ -32,6 +32,13 @@ class RowUpdatedLu {
   /// x with M x = b. `key` names the meaning of M's rows; a different key than the factorised
   /// matrix's (or a different size) makes a new LU.
   Eigen::VectorXd solve(const std::vector<int>& key, const Eigen::MatrixXd& M, const Eigen::VectorXd& b);
+  /// The same for an M that differs from the previous call's M in the rows `changed` at most (the
+  /// caller's promise: the Newton systems, whose rows change with their node's law): the rows that
+  /// differ from the factorised matrix are sought among those and the ones that differed at the
+  /// previous call, in O(that many rows · n) instead of the whole comparison's n². The same rows
+  /// are found, so x is the same bit for bit.
+  Eigen::VectorXd solve(const std::vector<int>& key, const Eigen::MatrixXd& M, const Eigen::VectorXd& b,
+                        const std::vector<Eigen::Index>& changed);
 
   struct Counts {
     long factorisations = 0;  ///< LU of a new matrix
@@ -42,8 +49,13 @@ class RowUpdatedLu {
 
  private:
   Eigen::VectorXd factorise(const std::vector<int>& key, const Eigen::MatrixXd& M, const Eigen::VectorXd& b);
-  bool update(const Eigen::MatrixXd& M, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  /// Whether M x = b was solved through the update of M₀'s factor, with `rows` those where M
+  /// differs from M₀ (ascending).
+  bool update(const Eigen::MatrixXd& M, const Eigen::VectorXd& b, const std::vector<Eigen::Index>& rows,
+              Eigen::VectorXd& x);
   std::vector<Eigen::Index> changedRows(const Eigen::MatrixXd& M) const;
+  /// changedRows(M) when M differs from the previous call's M in `changed` at most.
+  std::vector<Eigen::Index> changedRowsAmong(const Eigen::MatrixXd& M, const std::vector<Eigen::Index>& changed) const;
   void ensureColumns(const std::vector<Eigen::Index>& rows);
 
   double max_share_;
@@ -53,6 +65,7 @@ class RowUpdatedLu {
   bool factorised_ = false;
   Eigen::MatrixXd columns_;              // M₀⁻¹ e_j for the rows j of column_of_, in that order
   std::vector<Eigen::Index> column_of_;  // per row of M₀, its column in columns_ (−1: not yet)
+  std::vector<Eigen::Index> differing_;  // the rows where the previous call's M differed from M₀
   Eigen::Index stored_ = 0;
   Counts counts_;
 };

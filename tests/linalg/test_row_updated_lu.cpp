@@ -103,6 +103,35 @@ TEST(RowUpdatedLu, ANonFiniteEntryCountsAsAChangedRow) {
   EXPECT_EQ(lu.counts().rejected, 1);
 }
 
+// The Newton systems' way (cone_newton.cpp): each M differs from the previous one in the rows named,
+// and a row may change back to M₀'s. Told which rows changed, the solver finds the same rows
+// differing from M₀ as by comparing all of M, so the same x bit for bit, and the same counts.
+TEST(RowUpdatedLu, RowsNamedAsChangedGiveTheSameSolutionsBitForBit) {
+  const int n = 50;
+  const Eigen::MatrixXd M0 = wellConditioned(n, 21);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -2.0, 1.0);
+  RowUpdatedLu compared, told;
+  EXPECT_EQ(compared.solve({7}, M0, b), told.solve({7}, M0, b, {}));
+  Eigen::MatrixXd M = M0;
+  // Rows 3 and 30 change; then 3 again and 44; then 30 goes back to M₀'s row; then nothing.
+  const std::vector<std::vector<Eigen::Index>> steps{{3, 30}, {3, 44}, {30}, {}};
+  unsigned seed = 23;
+  for (const std::vector<Eigen::Index>& rows : steps) {
+    for (Eigen::Index i : rows) {
+      if (rows.size() == 1) M.row(i) = M0.row(i);  // back to M₀'s row
+      else M.row(i) = withRowsChanged(M, {static_cast<int>(i)}, ++seed).row(i);
+    }
+    const Eigen::VectorXd x = told.solve({7}, M, b, rows);
+    EXPECT_EQ(x, compared.solve({7}, M, b)) << rows.size() << " rows named";
+    EXPECT_LT(relativeError(x, M.partialPivLu().solve(b)), 1e-12);
+  }
+  EXPECT_EQ(told.counts().factorisations, 1);
+  EXPECT_EQ(told.counts().updates, compared.counts().updates);
+  EXPECT_EQ(told.counts().updates, 4);
+  // A row outside M is the caller's error.
+  EXPECT_THROW(told.solve({7}, M, b, {n}), std::invalid_argument);
+}
+
 TEST(RowUpdatedLu, RejectsAShareOutsideZeroOneAndMismatchedSizes) {
   EXPECT_THROW(RowUpdatedLu(1.5), std::invalid_argument);
   EXPECT_THROW(RowUpdatedLu(-0.1), std::invalid_argument);
