@@ -85,9 +85,11 @@ class Model:
         return best + local
 
 
-def check_runs(folder):
+def check_runs(folder, solve_times=None):
     """The model of today's code (the solves split over the ranks, the rest replicated) against the
-    one- and two-rank cg-gamg solves in `folder` (<solver>-cg-gamg-np1, -np2: summary.json each)."""
+    one- and two-rank cg-gamg solves in `folder` (<solver>-cg-gamg-np1, -np2: summary.json each).
+    `solve_times`: (t_s(1), t_s(2), Krylov iterations per solve) measured the same day at that size,
+    in place of the table's (this machine's CG + GAMG solves vary by up to 2.7 times between days)."""
     import json
     import os
     print("\nWhole solves on CG + GAMG, one rank against two (today's code: the solves split, the rest "
@@ -103,6 +105,8 @@ def check_runs(folder):
         free = next(n for n, _, _ in ONE_RANK if n >= one["n_dofs"] * 0.9)
         t1, k1 = next((t, k) for n, t, k in ONE_RANK if n == free)
         t2 = next(t for n, t in TWO_RANKS if n == free)
+        if solve_times:
+            t1, t2, k1 = solve_times
         solves = one["sparse_solves"]
         share = one["krylov_iterations"] / max(1, solves) / k1  # its Krylov iterations per solve over the table's
         prep = sum(p["seconds"] for p in one["preparations"])
@@ -155,6 +159,10 @@ def main():
     parser.add_argument("--instants", type=int, default=2001)
     parser.add_argument("--check", metavar="DIR",
                         help="the folder of the one- and two-rank solves to check the model against (docs/scale.md)")
+    parser.add_argument("--check-solve-times", type=float, nargs=3, metavar=("T1", "T2", "KRYLOV"),
+                        help="with --check: seconds per right-hand side on one rank and on two, and Krylov "
+                             "iterations per right-hand side on one, measured the same day at the checked size "
+                             "(linear_backends_study --backends cg-gamg), in place of the fitted table's")
     args = parser.parse_args()
     zone, m, relaxations, rest_s = args.measured_relaxation
     if args.local_work is None:
@@ -171,7 +179,7 @@ def main():
         print("| %d | %.3g | %.3g | %.3g | %.3g |" % (n, t, model.solve(n, 1), t2, model.solve(n, 2)))
 
     if args.check:
-        check_runs(args.check)
+        check_runs(args.check, args.check_solve_times)
 
     ranks = [2 ** i for i in range(0, 15)]
     for n in (1e6, 1e7):
