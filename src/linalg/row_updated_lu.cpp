@@ -10,22 +10,29 @@ RowUpdatedLu::RowUpdatedLu(double max_share) : max_share_(max_share) {
 }
 
 Eigen::VectorXd RowUpdatedLu::solve(const std::vector<int>& key, const Eigen::MatrixXd& M, const Eigen::VectorXd& b) {
-  if (M.rows() != M.cols() || M.rows() != b.size())
-    throw std::invalid_argument("RowUpdatedLu: M must be square, b of its size");
+  requireSizes(M, b);
   Eigen::VectorXd x;
-  if (factorised_ && key == key_ && M.rows() == M0_.rows() && update(M, b, changedRows(M), x)) return x;
+  if (updatable(key, M) && update(M, b, changedRows(M), x)) return x;
   return factorise(key, M, b);
 }
 
 Eigen::VectorXd RowUpdatedLu::solve(const std::vector<int>& key, const Eigen::MatrixXd& M, const Eigen::VectorXd& b,
                                     const std::vector<Eigen::Index>& changed) {
-  if (M.rows() != M.cols() || M.rows() != b.size())
-    throw std::invalid_argument("RowUpdatedLu: M must be square, b of its size");
+  requireSizes(M, b);
   for (Eigen::Index i : changed)
     if (i < 0 || i >= M.rows()) throw std::invalid_argument("RowUpdatedLu: a changed row is outside M");
   Eigen::VectorXd x;
-  if (factorised_ && key == key_ && M.rows() == M0_.rows() && update(M, b, changedRowsAmong(M, changed), x)) return x;
+  if (updatable(key, M) && update(M, b, changedRowsAmong(M, changed), x)) return x;
   return factorise(key, M, b);
+}
+
+void RowUpdatedLu::requireSizes(const Eigen::MatrixXd& M, const Eigen::VectorXd& b) {
+  if (M.rows() != M.cols() || M.rows() != b.size())
+    throw std::invalid_argument("RowUpdatedLu: M must be square, b of its size");
+}
+
+bool RowUpdatedLu::updatable(const std::vector<int>& key, const Eigen::MatrixXd& M) const {
+  return factorised_ && key == key_ && M.rows() == M0_.rows();
 }
 
 Eigen::VectorXd RowUpdatedLu::factorise(const std::vector<int>& key, const Eigen::MatrixXd& M,

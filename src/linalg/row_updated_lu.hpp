@@ -48,6 +48,9 @@ class RowUpdatedLu {
   const Counts& counts() const { return counts_; }
 
  private:
+  static void requireSizes(const Eigen::MatrixXd& M, const Eigen::VectorXd& b);  ///< throws std::invalid_argument
+  /// Whether M may be solved through the factor held: one is, of the same key and size.
+  bool updatable(const std::vector<int>& key, const Eigen::MatrixXd& M) const;
   Eigen::VectorXd factorise(const std::vector<int>& key, const Eigen::MatrixXd& M, const Eigen::VectorXd& b);
   /// Whether M x = b was solved through the update of M₀'s factor, with `rows` those where M
   /// differs from M₀ (ascending).
