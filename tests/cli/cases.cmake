@@ -87,6 +87,15 @@ add_test(NAME cli.hemisphere_fretting_within_tolerance_partial_then_gross_slip
          COMMAND python3 -c "import csv, json, sys; d = sys.argv[1]; s = json.load(open(d + '/summary.json')); rows = [(int(r['n_contact']), int(r['n_slip'])) for r in csv.DictReader(open(d + '/reactions.csv'))]; ok = s['termination'] == 'converged' and s['error'] <= 1e-6 and any(0 < k < n for n, k in rows) and any(n > 0 and k == n for n, k in rows); print(s['error'], max(k / n for n, k in rows if n)); sys.exit(0 if ok else 1)" ${out}/hemisphere_fretting)
 set_tests_properties(cli.hemisphere_fretting_within_tolerance_partial_then_gross_slip PROPERTIES
                      DEPENDS cli.solve_hemisphere_fretting_small LABELS cli)
+# The shallow press (examples/scenes/hemisphere_shallow.toml) at divisions 6 and 51 instants:
+# fas-apriori converged with its true error against the incremental solution within tau (2.5e-8
+# measured) and the disc slides as a whole at the end (every contact node slips at the last instant).
+stc_cli_test(solve_hemisphere_shallow_small 0 "fas-apriori: converged" solve ${scenes}/hemisphere_shallow.toml
+             --set mesh.divisions=6 --set time.steps=51 --set output.frames=false --out ${out}/hemisphere_shallow)
+add_test(NAME cli.hemisphere_shallow_within_tolerance_sliding
+         COMMAND python3 -c "import csv, json, sys; d = sys.argv[1]; s = json.load(open(d + '/summary.json')); n, k = [(int(r['n_contact']), int(r['n_slip'])) for r in csv.DictReader(open(d + '/reactions.csv'))][-1]; ok = s['termination'] == 'converged' and s['error'] <= 1e-6 and 0 < n == k; print(s['error'], n, k); sys.exit(0 if ok else 1)" ${out}/hemisphere_shallow)
+set_tests_properties(cli.hemisphere_shallow_within_tolerance_sliding PROPERTIES
+                     DEPENDS cli.solve_hemisphere_shallow_small LABELS cli)
 # The frames read back by readers that share no code with the writer (meshio, xml.etree, VTK's own
 # when python3-vtk9 is installed): array names, types, component names, the stress tensor in VTK's
 # order against Hooke's law, Float32 = Float64 rounded (tests/io/vtu_read_back.py; exit 77 = skipped

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The million-dof solve (docs/linear_solvers.md, "A million degrees of freedom"): the shallow press
+# (examples/scenes/hemisphere_shallow.toml) at mesh.divisions D (44: 1.07M dofs) solved by fas-apriori
+# to τ = 1e-6 with CG + GAMG on N ranks (one thread each), no reference, no frames. The progress goes
+# to OUT.log as the run goes; at the end it prints one Markdown row of summary.json (wall time,
+# relaxations, sparse solves, Krylov iterations, preparation, estimate, peak memory per rank).
+#
+#   scripts/million_dofs.sh [N] [D] [OUT]      (default 2, 44, results/million_dofs_d<D>_np<N>)
+#
+# Needs a build with PETSc and Open MPI's mpirun (docs/linear_solvers.md). As root, Open MPI asks for
+# OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 in the environment.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ranks=${1:-2}
+divisions=${2:-44}
+out=${3:-results/million_dofs_d${divisions}_np${ranks}}
+bin=${STC_BIN:-build/bin/stcontact}
+mkdir -p "$(dirname "$out")"
+mpirun -np "$ranks" --oversubscribe "$bin" solve examples/scenes/hemisphere_shallow.toml \
+  --set "mesh.divisions=$divisions" --set 'solver.linear="cg-gamg"' --tol 1e-6 --no-reference \
+  --set output.frames=false --threads 1 --out "$out" 2>&1 | tee "$out.log"
+"${STC_PYTHON:-python3}" - "$out" <<'EOF'
+import json, os, sys
+s = json.load(open(os.path.join(sys.argv[1], "summary.json")))
+print("| dofs | ranks | termination | wall s | relaxations | sparse solves | Krylov its | preparing s | estimate | peak MB per rank |")
+print("|---:|---:|---|---:|---:|---:|---:|---:|---:|---|")
+print("| %d | %d | %s | %.0f | %d | %d | %d | %.3g | %.2g | %s |" % (
+    s["n_dofs"], s["ranks"], s["termination"], s["wall_s"], s["relaxations"], s["sparse_solves"],
+    s["krylov_iterations"], sum(p["seconds"] for p in s["preparations"]), s["error_estimate"],
+    " / ".join("%d" % (b / 2**20) for b in s["peak_memory_bytes_per_rank"])))
+EOF
