@@ -1,6 +1,7 @@
 # The million-dof solve's history (scripts/million_dofs.sh; docs/linear_solvers.md, "A million
 # degrees of freedom"), drawn from the run's history.csv: the error estimate and the indicator
-# against wall time (left; the true error too when the run had a reference), and the sparse solves and Krylov iterations so far (right).
+# against wall time (left; the true error too when the run had a reference), and the sparse solves
+# and Krylov iterations so far (right).
 # Variables, given with -e:
 #   run    the run folder (holding history.csv)
 #   title  the run's description, for the titles
