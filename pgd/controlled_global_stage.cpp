@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/linalg/dense_product.hpp"
@@ -65,8 +66,19 @@ int ControlledGlobalStage::seed(const Eigen::MatrixXd& directions) {
   return basis_.append(directions);
 }
 
-double ControlledGlobalStage::enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scaled, double error, double target) {
+Eigen::VectorXd ControlledGlobalStage::loosenings(const Eigen::MatrixXd& c_new, double w_norm) const {
+  Eigen::VectorXd out = Eigen::VectorXd::Ones(c_new.rows());
+  if (target_ < 0.0 || !(w_norm > 0.0)) return out;  // no gap known yet
+  const double gap = target_ / options_.gap_share;
+  for (Eigen::Index j = 0; j < out.size(); ++j)
+    out[j] = std::clamp(w_norm / (c_new.row(j).norm() + gap), 1.0, options_.loosening_cap);
+  return out;
+}
+
+double ControlledGlobalStage::enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scaled, double error, double target,
+                                     double w_norm) {
   const Eigen::VectorXd& sqrt_k = basis_.sqrtK();
+  std::vector<double> loosening;
   while (error > target && basis_.size() < basis_.maxSize()) {
     const int room = std::min(options_.block, basis_.maxSize() - basis_.size());
     const Eigen::MatrixXd found = leadingDirections(r_scaled, error, target, room, options_, passes_++);
@@ -80,8 +92,10 @@ double ControlledGlobalStage::enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scal
     c.bottomRows(added) = c_new;
     r_scaled.noalias() -= scaled_new * c_new;
     error = r_scaled.norm();
+    const Eigen::VectorXd added_loosening = loosenings(c_new, w_norm);
+    loosening.insert(loosening.end(), added_loosening.begin(), added_loosening.end());
   }
-  basis_.solvePending();
+  basis_.solvePending(Eigen::Map<const Eigen::VectorXd>(loosening.data(), static_cast<Eigen::Index>(loosening.size())));
   return error;
 }
 
@@ -117,7 +131,7 @@ double ControlledGlobalStage::project(const Eigen::MatrixXd& w_scaled, Eigen::Ma
   r_scaled.noalias() -= scaled * c;
   // Before any gap is known (the first solve, or a warm start) the bound is a share of w itself.
   const double target = target_ >= 0.0 ? target_ : options_.gap_share * w_scaled.norm();
-  return enrich(c, r_scaled, r_scaled.norm(), target);
+  return enrich(c, r_scaled, r_scaled.norm(), target, w_scaled.norm());
 }
 
 Eigen::MatrixXd ControlledGlobalStage::anticipate(const InterfaceHistory& hat) {

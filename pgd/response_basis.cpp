@@ -114,13 +114,18 @@ int ResponseBasis::appendDirections(const Eigen::MatrixXd& candidates, double dr
   return static_cast<int>(added);
 }
 
-void ResponseBasis::solvePending() {
+void ResponseBasis::solvePending(const Eigen::VectorXd& loosening) {
+  if (loosening.size() != 0 && loosening.size() != pending_)
+    throw std::invalid_argument("ResponseBasis::solvePending: one loosening per pending direction");
   if (pending_ == 0) return;
   const Eigen::Index added = pending_;
   if (condensesInterface()) {
     T_.append(condensed_ * Z_.view().rightCols(added));  // T = B A⁻¹ Bᵀ Z = D Z
   } else {
-    const Eigen::MatrixXd X = solveColumns(problem_.contact.B.transpose() * Z_.view().rightCols(added));
+    const Eigen::MatrixXd rhs = problem_.contact.B.transpose() * Z_.view().rightCols(added);
+    // A direct factor's columns in solveColumns' parts whatever is asked (its numbers bit for bit).
+    const Eigen::MatrixXd X =
+        loosening.size() > 0 && !factor_.isDirect() ? factor_.solveLoosened(rhs, loosening) : solveColumns(rhs);
     sparse_solves_ += added;
     T_.append(problem_.contact.B * X);
     keepOrRelease(X);

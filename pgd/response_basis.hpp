@@ -76,8 +76,10 @@ class ResponseBasis {
   /// condensesInterface().
   void completeToEveryRow();
   /// Solves the pending directions' responses in one multi-right-hand-side solve, stores them and
-  /// their traces, and extends the energy factor.
-  void solvePending();
+  /// their traces, and extends the energy factor. `loosening` (empty, or one ≥ 1 per pending
+  /// direction): how many times the factor's relative residual each may be solved to, on an
+  /// iterative backend (SpdSolver::solveLoosened; a direct one solves exactly as without it).
+  void solvePending(const Eigen::VectorXd& loosening = Eigen::VectorXd());
   /// The same basis on another time grid of the same problem (`grid`: stc::onInstants of it, or the
   /// problem itself again): the load histories G and the free response V_F G are taken on its
   /// instants, everything else (directions, responses, energy factor) is spatial and kept. Throws

@@ -24,6 +24,16 @@ Eigen::MatrixXd SpdSolver::solveInParts(const Eigen::MatrixXd& B, int part, std:
 
 Eigen::MatrixXd SpdSolver::solveOnThreads(const Eigen::MatrixXd& B) const { return solve(B); }
 
+void SpdSolver::checkLoosening(const Eigen::MatrixXd& B, const Eigen::VectorXd& loosening) {
+  if (loosening.size() != B.cols() || !(loosening.array() >= 1.0).all())
+    throw std::invalid_argument("SpdSolver::solveLoosened: one loosening of at least 1 per column");
+}
+
+Eigen::MatrixXd SpdSolver::solveLoosened(const Eigen::MatrixXd& B, const Eigen::VectorXd& loosening) const {
+  checkLoosening(B, loosening);
+  return solve(B);
+}
+
 bool SpdSolver::condenses(const Eigen::SparseMatrix<double>&) const { return false; }
 
 Eigen::MatrixXd SpdSolver::condensed(const Eigen::SparseMatrix<double>&) const {

@@ -78,6 +78,12 @@ class SpdSolver {
   /// Many columns of one caller (the Delassus operator of the incremental solver) over the threads
   /// where the backend can. Default: solve(B).
   virtual Eigen::MatrixXd solveOnThreads(const Eigen::MatrixXd& B) const;
+  /// X = A⁻¹ B with column j's relative residual allowed `loosening[j]` (≥ 1) times the prepared
+  /// one: an iterative backend stops there, a direct one solves exactly (the default: solve(B)).
+  /// For right-hand sides whose weight in the result is small (the directions of the separated
+  /// stage, pgd/controlled_global_stage.hpp, "Inexact directions"). std::invalid_argument for a
+  /// loosening of another size than B's columns or below 1.
+  virtual Eigen::MatrixXd solveLoosened(const Eigen::MatrixXd& B, const Eigen::VectorXd& loosening) const;
 
   /// Whether C A⁻¹ Cᵀ is at hand without solves: every nonzero column of C (r × n) among the dofs
   /// named when A was prepared. Default: never.
@@ -97,6 +103,10 @@ class SpdSolver {
   virtual double factorNonZeros() const = 0;
   /// The Krylov solves so far (iterative backends).
   virtual KrylovCounts krylovCounts() const;
+
+ protected:
+  /// solveLoosened's check of its arguments.
+  static void checkLoosening(const Eigen::MatrixXd& B, const Eigen::VectorXd& loosening);
 
  private:
   mutable Workspace own_;  ///< solve(B)'s

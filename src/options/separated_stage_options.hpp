@@ -18,6 +18,10 @@ struct ControlledStageOptions {
   /// traces alone are kept and the modes solved again when asked for (pgd/response_basis.hpp). The
   /// iterates do not depend on it. 0.25 leaves room for the factor or preconditioner and the histories.
   double response_share = 0.25;
+  /// L: the most a direction's relative residual may be loosened on an iterative backend,
+  /// ρ_j = ℓ_j ρ with ℓ_j ≤ L (pgd/controlled_global_stage.hpp, "Inexact directions"); 1 solves
+  /// every direction to ρ. 1e6 keeps ρ_j ≤ 1e-4 at the default ρ = 1e-4 τ, τ = 1e-6.
+  double loosening_cap = 1e6;
   int block = 8;             ///< directions added per enrichment pass at most
   int oversampling = 4;      ///< extra random samples of the range finder
   int power_iterations = 1;  ///< subspace iterations of the range finder
@@ -27,6 +31,7 @@ struct ControlledStageOptions {
     visit("pgd_gap_share", o.gap_share, inOpenUnit());
     visit("pgd_full_share", o.full_share, inUnitHalfOpen());
     visit("pgd_response_share", o.response_share, inUnitClosed());
+    visit("pgd_loosening_cap", o.loosening_cap, atLeast(1));
     visit("block", o.block, atLeast(1), Exposure::Library);
     visit("oversampling", o.oversampling, atLeast(0), Exposure::Library);
     visit("power_iterations", o.power_iterations, atLeast(0), Exposure::Library);

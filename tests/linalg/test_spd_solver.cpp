@@ -6,6 +6,7 @@
 // (no condensed operator but CHOLMOD's trailing block).
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -110,6 +111,35 @@ TEST_P(SpdSolverBackend, SolvesInPartsAsInOneBlock) {
   const Eigen::MatrixXd parts = solver->solveInParts(B, 4, workspaces);
   EXPECT_LE((parts - solver->solve(B)).norm(), 1e-9 * parts.norm());
   EXPECT_FALSE(workspaces.empty());
+}
+
+// Each column to its own loosened residual: a direct backend solves exactly as solve() (bit for bit:
+// the same call), an iterative one stops each column within rtol ℓ_j and spends fewer iterations on
+// the loosened ones than on tight ones. Loosenings below 1 or of another count are refused.
+TEST_P(SpdSolverBackend, SolvesLoosenedColumnsEachToItsOwnResidual) {
+  const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(halfBall());
+  const auto solver = prepare(halfBall(), A);
+  const Eigen::MatrixXd B = randomRightHandSides(halfBall(), 11, 3);
+  const Eigen::MatrixXd B_twice = (Eigen::MatrixXd(B.rows(), 6) << B, B).finished();
+  const Eigen::VectorXd loosening = (Eigen::VectorXd(6) << 1.0, 1.0, 1.0, 1e6, 1e6, 1e6).finished();
+  const stc::KrylovCounts before = solver->krylovCounts();
+  const Eigen::MatrixXd X = solver->solveLoosened(B_twice, loosening);
+  if (direct()) {
+    EXPECT_TRUE(X == solver->solve(B_twice));
+  } else {
+    EXPECT_LE(worstRelativeResidual(A, X.leftCols(3), B), kRtol * 1.0001);
+    EXPECT_LE(worstRelativeResidual(A, X.rightCols(3), B), kRtol * 1e6 * 1.0001);
+    const stc::KrylovCounts tight_then_loose = solver->krylovCounts();
+    solver->solveLoosened(B, Eigen::VectorXd::Constant(3, 1e6));
+    const long long loose = solver->krylovCounts().iterations - tight_then_loose.iterations;
+    const long long tight = tight_then_loose.iterations - before.iterations - loose;
+    std::cout << "[ measured ] Krylov iterations of 3 columns at 1e-12: " << tight << ", at 1e-6: " << loose << "\n";
+    EXPECT_LT(4 * loose, 3 * tight) << "1e-6 against 1e-12: half the decades";
+    // solve() is back at the prepared residual after a loosened call
+    EXPECT_LE(worstRelativeResidual(A, solver->solve(B), B), kRtol * 1.0001);
+  }
+  EXPECT_THROW(solver->solveLoosened(B, Eigen::VectorXd::Ones(2)), std::invalid_argument);
+  EXPECT_THROW(solver->solveLoosened(B, Eigen::VectorXd::Constant(3, 0.5)), std::invalid_argument);
 }
 
 TEST_P(SpdSolverBackend, RefusesAMatrixWithRigidMotions) {

@@ -132,6 +132,28 @@ class PetscSolver final : public SpdSolver {
     return X;
   }
 
+  // Column j to the relative residual rtol ℓ_j; the loosenings agreed among the ranks first (the
+  // smallest of each), since every rank's KSPSolve of one column must stop at the same iteration.
+  Eigen::MatrixXd solveLoosened(const Eigen::MatrixXd& B, const Eigen::VectorXd& loosening) const override {
+    checkLoosening(B, loosening);
+    if (backend_ == LinearBackend::Mumps) return SpdSolver::solve(B);
+    if (B.rows() != n_) throw std::invalid_argument("SpdSolver::solve: right-hand side has the wrong number of rows");
+    Eigen::VectorXd agreed = loosening;
+    if (ranks_.size > 1)
+      MPI_Allreduce(loosening.data(), agreed.data(), static_cast<int>(agreed.size()), MPI_DOUBLE, MPI_MIN, comm_);
+    Eigen::MatrixXd X(n_, B.cols());
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const struct Restore {
+      const PetscSolver& s;
+      ~Restore() { s.setRtol(s.rtol_); }
+    } restore{*this};
+    for (Eigen::Index j = 0; j < B.cols(); ++j) {
+      setRtol(rtol_ * agreed[j]);
+      solveColumn(B.col(j).data(), X.col(j).data());
+    }
+    return X;
+  }
+
   int size() const override { return n_; }
   std::string backend() const override { return backend_ == LinearBackend::Mumps ? "mumps" : "cg-gamg"; }
   bool isDirect() const override { return backend_ == LinearBackend::Mumps; }
@@ -147,6 +169,7 @@ class PetscSolver final : public SpdSolver {
   Ranks ranks_;
   MPI_Comm comm_;
   RowBlock rows_;  ///< this rank's rows
+  double rtol_ = LinearSolverOptions::kRtolFloor;  ///< cg-gamg: the relative residual of solve()
   Mat matrix_ = nullptr;
   Mat factor_ = nullptr;  ///< mumps: MUMPS's factor of matrix_
   KSP ksp_ = nullptr;     ///< cg-gamg
@@ -189,14 +212,21 @@ class PetscSolver final : public SpdSolver {
     check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
     check(KSPSetType(ksp_, KSPCG), "KSPSetType");
     check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
-    check(KSPSetTolerances(ksp_, options.rtol > 0.0 ? options.rtol : LinearSolverOptions::kRtolFloor, 0.0,
-                           PETSC_DEFAULT, options.max_iterations),
-          "KSPSetTolerances");
+    if (options.rtol > 0.0) rtol_ = options.rtol;
+    check(KSPSetTolerances(ksp_, rtol_, 0.0, PETSC_DEFAULT, options.max_iterations), "KSPSetTolerances");
     PC pc = nullptr;
     check(KSPGetPC(ksp_, &pc), "KSPGetPC");
     check(PCSetType(pc, PCGAMG), "PCSetType");
     check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+    PetscReal rtol = 0.0;  // an expert's -stc_ksp_rtol wins, here as in solve()
+    check(KSPGetTolerances(ksp_, &rtol, nullptr, nullptr, nullptr), "KSPGetTolerances");
+    rtol_ = rtol;
     check(KSPSetUp(ksp_), "KSPSetUp");  // the AMG hierarchy
+  }
+
+  // The relative residual alone (PETSC_DEFAULT keeps the others as they are).
+  void setRtol(double rtol) const {
+    check(KSPSetTolerances(ksp_, rtol, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT), "KSPSetTolerances");
   }
 
   void destroy() {
