@@ -23,17 +23,18 @@
 // formed only when asked for. On the zones of 801 arc nodes and of the graded half-ball the
 // enrichment ends at 391 of 462 and 606 of 606 rows (docs/floor.md, "Every row").
 //
-// Inexact directions. On an iterative backend a direction's response is solved to a relative
-// residual ρ_j = ℓ_j ρ (ρ = solver.linear_rtol's), and its error e_j = X̃_j − X_j enters the
-// iterates through its coordinate alone: δv = Σ_j (B e_j) c_j. A direction whose coordinates weigh
-// |c_j| ≪ ‖w̃‖ may take a looser solve for the same δv, as the inexact matrix–vector products of a
-// Krylov method may loosen as its residual falls (Simoncini & Szyld, SIAM J. Sci. Comput. 25, 2003;
-// Bouras & Frayssé, SIAM J. Matrix Anal. Appl. 26, 2005). Its coordinate at the fixed point differs
-// from today's by at most the distance to the fixed point, of the size of the last gap g = ‖s − ŝ‖:
+// Inexact directions. On an iterative backend a direction's response is solved to the relative
+// residual ρ_j = min(ℓ_j ρ, 1e-4) (ρ: solver.linear_rtol's; 1e-4: LinearSolverOptions::kLoosestRtol),
+// and its error e_j = X̃_j − X_j enters the iterates through its coordinates alone:
+// δv = Σ_j (B e_j) c_j. A direction whose coordinates weigh ‖c_j‖ ≪ ‖w̃‖ may take a looser solve
+// for the same δv, as the inexact matrix–vector products of a Krylov method may loosen as its
+// residual falls (Simoncini & Szyld, SIAM J. Sci. Comput. 25, 2003; Bouras & Frayssé, SIAM J. Matrix
+// Anal. Appl. 26, 2005). Its coordinates at the fixed point differ from today's by at most the
+// distance to the fixed point, of the size of the last gap g = ‖s − ŝ‖:
 //   ℓ_j = min(L, max(1, ‖w̃‖ / (‖c_j‖ + g))),   L = ControlledStageOptions::loosening_cap,
-// so each direction's share of δv stays at ρ ‖w̃‖ as with ℓ = 1 for the leading ones; ℓ = 1 until a
-// gap is known. ‖c_j‖ is the row's norm over the instants. A direct backend solves exactly anyway.
-// Measured in docs/linear_solvers.md, "Inexact directions"
+// so each direction's share of δv stays at about ρ ‖w̃‖, as with ℓ = 1 for the leading ones; ℓ = 1
+// until a gap is known. ‖c_j‖ is the row's norm over the instants. A direct backend solves exactly.
+// Measured in docs/linear_solvers.md, "Inexact directions".
 #include "stcontact/latin/linear_stage.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/options/separated_stage_options.hpp"

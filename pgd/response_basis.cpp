@@ -201,8 +201,15 @@ Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>&
   Eigen::MatrixXd time;
   linalg::multiplyTransposed(svd.U.leftCols(rho), whitened, time);
   Eigen::MatrixXd modes = (B_rows * UF_) * C.topRows(q);
-  modes += liftedInterface(B_rows, C.middleRows(q, c.rows()));
+  modes += liftedModes(B_rows, C.middleRows(q, c.rows()), svd.values.head(rho));
   return linalg::freshProduct(modes, time);
+}
+
+Eigen::MatrixXd ResponseBasis::liftedModes(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& M,
+                                           const Eigen::VectorXd& sigma) const {
+  if (factor_.isDirect() || X_.cols() >= M.rows()) return liftedInterface(B_rows, M);  // no loosened solve
+  // Each kept σ_i > 0 (modesWithinBudget keeps none of zero energy).
+  return liftedInterface(B_rows, M * sigma.asDiagonal()) * sigma.cwiseInverse().asDiagonal();
 }
 
 int ResponseBasis::append(const Eigen::MatrixXd& candidates, double drop) {

@@ -125,6 +125,11 @@ class ResponseBasis {
   /// B_rows A⁻¹ Bᵀ (Z_p M) for the first p = M.rows() directions: with X when their responses are
   /// known, else through the rank of Z_p M (linalg/low_rank_solve.hpp).
   Eigen::MatrixXd liftedInterface(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& M) const;
+  /// The same for modes M (p × ρ) of singular values σ (> 0): where an iterative backend solves, the
+  /// modes weighted by σ and the result unweighted, the same product, so that solveThroughRank sees
+  /// the small modes as small and loosens their solves (linalg/low_rank_solve.hpp).
+  Eigen::MatrixXd liftedModes(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& M,
+                              const Eigen::VectorXd& sigma) const;
 
   const Problem& problem_;
   const SpdSolver& factor_;

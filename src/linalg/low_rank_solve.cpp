@@ -18,8 +18,14 @@ Eigen::MatrixXd solveThroughRank(const SpdSolver& factor, const Eigen::SparseMat
   while (rank < svd.values.size() && svd.values[rank] > floor) ++rank;
   solves += rank;
   if (rank == 0) return Eigen::MatrixXd::Zero(C.rows(), M.cols());
-  const Eigen::MatrixXd responses = factor.condenses(R) ? factor.solveFromTrailing(R, svd.U.leftCols(rank))
-                                                        : factor.solveOnThreads(R.transpose() * svd.U.leftCols(rank));
+  const auto U = svd.U.leftCols(rank);
+  Eigen::MatrixXd responses;
+  if (factor.condenses(R))
+    responses = factor.solveFromTrailing(R, U);
+  else if (factor.isDirect())
+    responses = factor.solveOnThreads(R.transpose() * U);
+  else  // mode i to σ_1/σ_i times the relative residual (header)
+    responses = factor.solveLoosened(R.transpose() * U, (svd.values[0] / svd.values.head(rank).array()).matrix());
   return freshProduct(C * responses, svd.values.head(rank).asDiagonal() * svd.V.leftCols(rank).transpose());
 }
 

@@ -79,7 +79,8 @@ class SpdSolver {
   /// where the backend can. Default: solve(B).
   virtual Eigen::MatrixXd solveOnThreads(const Eigen::MatrixXd& B) const;
   /// X = A⁻¹ B with column j's relative residual allowed `loosening[j]` (≥ 1) times the prepared
-  /// one: an iterative backend stops there, a direct one solves exactly (the default: solve(B)).
+  /// one, at most LinearSolverOptions::kLoosestRtol: an iterative backend stops there, a direct one
+  /// solves exactly (the default: solve(B)).
   /// For right-hand sides whose weight in the result is small (the directions of the separated
   /// stage, pgd/controlled_global_stage.hpp, "Inexact directions"). std::invalid_argument for a
   /// loosening of another size than B's columns or below 1.

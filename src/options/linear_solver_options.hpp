@@ -51,6 +51,10 @@ struct LinearSolverOptions {
 
   static constexpr double kRtolPerTolerance = 1e-4;
   static constexpr double kRtolFloor = 1e-12;
+  /// The loosest relative residual a loosened solve stops at, whatever its loosening
+  /// (SpdSolver::solveLoosened): the response's relative error in energy is then at most
+  /// √κ(A) · 1e-4 (docs/method.md §2, "Inexact linear solves").
+  static constexpr double kLoosestRtol = 1e-4;
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {

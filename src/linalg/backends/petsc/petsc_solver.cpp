@@ -132,8 +132,9 @@ class PetscSolver final : public SpdSolver {
     return X;
   }
 
-  // Column j to the relative residual rtol ℓ_j; the loosenings agreed among the ranks first (the
-  // smallest of each), since every rank's KSPSolve of one column must stop at the same iteration.
+  // Column j to the relative residual min(rtol ℓ_j, kLoosestRtol) (never looser than rtol itself);
+  // the loosenings agreed among the ranks first (the smallest of each), since every rank's KSPSolve
+  // of one column must stop at the same iteration. solve() is back at rtol after it, thrown or not.
   Eigen::MatrixXd solveLoosened(const Eigen::MatrixXd& B, const Eigen::VectorXd& loosening) const override {
     checkLoosening(B, loosening);
     if (backend_ == LinearBackend::Mumps) return SpdSolver::solve(B);
@@ -141,16 +142,19 @@ class PetscSolver final : public SpdSolver {
     Eigen::VectorXd agreed = loosening;
     if (ranks_.size > 1)
       MPI_Allreduce(loosening.data(), agreed.data(), static_cast<int>(agreed.size()), MPI_DOUBLE, MPI_MIN, comm_);
+    const double loosest = std::max(rtol_, LinearSolverOptions::kLoosestRtol);
     Eigen::MatrixXd X(n_, B.cols());
     const std::lock_guard<std::mutex> lock(mutex_);
-    const struct Restore {
-      const PetscSolver& s;
-      ~Restore() { s.setRtol(s.rtol_); }
-    } restore{*this};
-    for (Eigen::Index j = 0; j < B.cols(); ++j) {
-      setRtol(rtol_ * agreed[j]);
-      solveColumn(B.col(j).data(), X.col(j).data());
+    try {
+      for (Eigen::Index j = 0; j < B.cols(); ++j) {
+        setRtol(std::min(rtol_ * agreed[j], loosest));
+        solveColumn(B.col(j).data(), X.col(j).data());
+      }
+    } catch (...) {
+      KSPSetTolerances(ksp_, rtol_, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT);
+      throw;
     }
+    setRtol(rtol_);
     return X;
   }
 
