@@ -153,12 +153,22 @@ TEST(LinearBackendResponses, ReleasedAtOnceTheIteratesAreTheSame) {
 // of small weight are solved to a looser residual. fas-apriori in 3D with them (the default cap) and
 // without (cap 1): fewer Krylov iterations, the same relaxations, and converged with a true error
 // within τ both; their contact forces agree within τ.
+namespace {
+
+// The tests' 3D scene's solver at the tolerance on cg-gamg.
+stc::SolverSpec cgGamgSpec() {
+  stc::SolverSpec spec = reference(3).scene.solver;
+  spec.setTolerance(kTolerance);
+  spec.linear.backend = stc::LinearBackend::CgGamg;
+  return spec;
+}
+
+}  // namespace
+
 TEST(LinearBackendInexactDirections, FewerKrylovIterationsTheSameTrueErrorBound) {
   if (!stc::petscBackendsBuilt()) GTEST_SKIP() << "a build without PETSc has no iterative backend";
   const stc::test::StrategyFixture& base = reference(3);
-  stc::SolverSpec loosened = base.scene.solver;
-  loosened.setTolerance(kTolerance);
-  loosened.linear.backend = stc::LinearBackend::CgGamg;
+  const stc::SolverSpec loosened = cgGamgSpec();
   stc::SolverSpec tight = loosened;
   tight.fas_apriori.stage.loosening_cap = 1.0;
   const auto run = [&](const stc::SolverSpec& spec) {
@@ -184,15 +194,12 @@ TEST(LinearBackendInexactDirections, FewerKrylovIterationsTheSameTrueErrorBound)
 // histories, far nodes included, within 1e-7 of those of the kept responses (measured 3e-11).
 TEST(LinearBackendResponses, ReleasedOnCgGamgTheLiftAgreesWithTheKeptResponses) {
   if (!stc::petscBackendsBuilt()) GTEST_SKIP() << "a build without PETSc has no iterative backend";
-  const stc::test::StrategyFixture& base = reference(3);
-  stc::SolverSpec kept = base.scene.solver;
-  kept.setTolerance(kTolerance);
-  kept.linear.backend = stc::LinearBackend::CgGamg;
+  const stc::SolverSpec kept = cgGamgSpec();
   stc::SolverSpec released = kept;
   released.fas_apriori.stage.response_share = 0.0;
   const auto run = [&](const stc::SolverSpec& spec) {
     stc::PreparedOperators operators(spec.linearAtTolerance());
-    return stc::solve(stc::strategyNamed("fas-apriori"), base.problem, spec, {.operators = &operators});
+    return stc::solve(stc::strategyNamed("fas-apriori"), reference(3).problem, spec, {.operators = &operators});
   };
   const stc::SolveResult a = run(kept), b = run(released);
   ASSERT_TRUE(a.summary.converged()) << a.summary.message;
