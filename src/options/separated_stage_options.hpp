@@ -19,8 +19,8 @@ struct ControlledStageOptions {
   /// iterates do not depend on it. 0.25 leaves room for the factor or preconditioner and the histories.
   double response_share = 0.25;
   /// L: the most a direction's relative residual may be loosened on an iterative backend,
-  /// ρ_j = ℓ_j ρ with ℓ_j ≤ L (pgd/controlled_global_stage.hpp, "Inexact directions"); 1 solves
-  /// every direction to ρ. 1e6 keeps ρ_j ≤ 1e-4 at the default ρ = 1e-4 τ, τ = 1e-6.
+  /// ρ_j = min(ℓ_j ρ, 1e-4) with ℓ_j ≤ L (pgd/controlled_global_stage.hpp, "Inexact directions");
+  /// 1 solves every direction to ρ. 1e6 reaches the 1e-4 ceiling at the default ρ = 1e-4 τ, τ = 1e-6.
   double loosening_cap = 1e6;
   int block = 8;             ///< directions added per enrichment pass at most
   int oversampling = 4;      ///< extra random samples of the range finder
