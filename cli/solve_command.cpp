@@ -63,6 +63,7 @@ SolveResult runSolver(const Problem& problem, const Scene& scene, const ErrorRef
   inputs.reference = reference;
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
   inputs.callback = run.callback();
+  inputs.phase_note = run.phaseNote();
   inputs.spatial_modes = false;  // not written
   inputs.separated_displacement = output.frames;
   inputs.operators = &operators;

@@ -75,4 +75,14 @@ void TerminalProgress::note(const std::string& line) {
   if (!quiet_) std::cout << line << std::endl;
 }
 
+void TerminalProgress::phase(const std::string& label, const std::string& line) {
+  const std::string text = "progress: " + label + ": " + line;
+  lines_.push_back(text);
+  if (quiet_ || (!tty_ && log_interval <= 0.0)) return;
+  if (tty_) std::fprintf(stderr, "\r\033[K%s\n", text.c_str());  // below the redrawn iteration line
+  else std::fprintf(stderr, "%s\n", text.c_str());
+  std::fflush(stderr);
+  drawn_ = false;
+}
+
 }  // namespace stc::cli

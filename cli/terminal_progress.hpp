@@ -26,6 +26,10 @@ class TerminalProgress : public ProgressReporter {
   IterationCallback begin(const std::string& label) override;
   void end() override;
   void note(const std::string& line) override;
+  /// "progress: <label>: <line>" on standard error at once (no interval: a phase line is rare and
+  /// announces a long silence), unless quiet or --progress-interval 0 in a log; kept for run.log
+  /// either way.
+  void phase(const std::string& label, const std::string& line) override;
   /// Keeps `line` for the log without printing it (a warning printed elsewhere, the final report).
   void record(std::string line) { lines_.push_back(std::move(line)); }
   /// What the run showed or would have shown: one line each, in order.

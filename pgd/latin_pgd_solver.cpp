@@ -1,6 +1,7 @@
 #include "stcontact/pgd/latin_pgd_solver.hpp"
 
 #include "stcontact/latin/latin_solver.hpp"
+#include "stcontact/pgd/after_iteration.hpp"
 #include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/pgd/separated_history.hpp"
 
@@ -19,12 +20,12 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
   result.interface_directions = stage.basis().directions();
   // The spatial modes and the separated displacement need responses, which a condensed interface
   // has not solved yet (response_basis.hpp): the last record counts those solves.
-  const long before = stage.sparseSolves();
+  const AfterIteration after(stage.basis(), inputs);
   if (inputs.spatial_modes) result.spatial_modes = energyModes(stage.basis(), stage.coordinates());
   if (inputs.separated_displacement)
     result.displacement = separatedDisplacement(stage.basis(), stage.coordinates(),
                                                 truncationBudget(result.summary, options.latin.stop.tolerance));
-  result.summary.addSolvesAfterIteration(stage.sparseSolves() - before);
+  after.finish(result.summary);
   return result;
 }
 

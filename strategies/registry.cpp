@@ -59,6 +59,7 @@ SolveResult solve(Strategy strategy, const Problem& problem, const SolverSpec& s
     if (r.strategy == strategy) {
       SolveResult result = solveWith(r, problem, spec, with);
       result.summary.krylov_iterations = with.origin.krylov();
+      result.summary.countKrylovAfterIteration();
       return result;
     }
   throw std::logic_error("strategy without a registration: " + std::string(nameOf(strategy)));

@@ -4,6 +4,7 @@
 // sees the records). A study asks for one callback per run and ends the run when it returns.
 #include <string>
 
+#include "stcontact/solver/solve_inputs.hpp"
 #include "stcontact/solver/solve_summary.hpp"
 
 namespace stc {
@@ -18,13 +19,16 @@ class ProgressReporter {
   virtual void end() = 0;
   /// A line of result once an item of the study is done (a strategy, a value of a sweep).
   virtual void note(const std::string& line) = 0;
+  /// A line from the run named `label` saying what it does outside its iterations
+  /// (SolveInputs::phase_note: the lift after the last one).
+  virtual void phase(const std::string& label, const std::string& line) = 0;
 };
 
 /// One run's progress: begins on construction, ends on destruction; no reporter, no progress.
 class RunProgress {
  public:
   RunProgress(ProgressReporter* reporter, const std::string& label)
-      : reporter_(reporter), callback_(reporter ? reporter->begin(label) : IterationCallback{}) {}
+      : reporter_(reporter), label_(label), callback_(reporter ? reporter->begin(label) : IterationCallback{}) {}
   ~RunProgress() {
     if (reporter_) reporter_->end();
   }
@@ -32,11 +36,17 @@ class RunProgress {
   RunProgress& operator=(const RunProgress&) = delete;
   /// The callback to pass to the solver (empty without a reporter).
   const IterationCallback& callback() const { return callback_; }
+  /// What to pass as SolveInputs::phase_note (empty without a reporter).
+  PhaseNote phaseNote() const {
+    if (!reporter_) return {};
+    return [reporter = reporter_, label = label_](const std::string& line) { reporter->phase(label, line); };
+  }
   /// Shows `record` (true: the run goes on); without a reporter, nothing.
   bool show(const IterationRecord& record) const { return !callback_ || callback_(record); }
 
  private:
   ProgressReporter* reporter_;
+  std::string label_;
   IterationCallback callback_;
 };
 

@@ -32,6 +32,7 @@ TimedSolve timedSolve(const Problem& problem, const Scene& scene, const SolveInp
   {
     const RunProgress progress(settings.progress, label);
     inputs.callback = progress.callback();
+    inputs.phase_note = progress.phaseNote();
     out.result = solve(settings.solver, problem, scene.solver, inputs);
   }
   out.cost = costOf(out.result.summary, std::chrono::duration<double>(Clock::now() - start).count());

@@ -4,6 +4,7 @@
 
 #include "stcontact/fas/apriori/nested_in_time.hpp"
 #include "stcontact/linalg/dense_product.hpp"
+#include "stcontact/pgd/after_iteration.hpp"
 #include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/pgd/separated_history.hpp"
 
@@ -27,7 +28,7 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   // e + (τ − ε_est) ≤ τ of the reference in the true error's measure (triangle inequality). When the
   // separated displacement is asked for, the far nodes' displacement is its trace, B_F Y_ρ (Σ_ρ W_ρᵀ):
   // the same truncation, no solve of its own, and the written fields and interface agree there.
-  const long before = stage.sparseSolves();
+  const pgd::AfterIteration after(stage.basis(), inputs);
   const double budget = pgd::truncationBudget(result.summary, options.fas.stop.tolerance);
   if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
   if (inputs.separated_displacement)
@@ -36,7 +37,7 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
     far_v = linalg::freshProduct(B_far * result.displacement.modes, result.displacement.time);
   else
     far_v = stage.basis().displacementOn(B_far, stage.coordinates(), budget);
-  result.summary.addSolvesAfterIteration(stage.sparseSolves() - before);
+  after.finish(result.summary);
   return result;
 }
 

@@ -131,6 +131,7 @@ class ZoneRounds {
     round.separated_displacement = inputs_.separated_displacement;
     round.operators = inputs_.operators;
     round.origin = originOfNextRound();
+    round.phase_note = inputs_.phase_note;
     Eigen::MatrixXd v;  // the far nodes' displacement on every row
     // B of the nodes left out on the interface's rows (farNodesB); none on the whole interface.
     SolveResult r = solveAprioriOn(part ? *part : problem_, budgetOfNextRound(whole), round,

@@ -14,6 +14,9 @@
 
 namespace stc {
 
+/// A line saying what a solve is doing outside its iterations (SolveInputs::phase_note).
+using PhaseNote = std::function<void(const std::string&)>;
+
 struct SolveInputs {
   /// Adds the true error to every history record (e.g. an ErrorReference against the incremental
   /// solution, src/incremental/error_reference.hpp).
@@ -50,6 +53,11 @@ struct SolveInputs {
   /// the parts before it and the whole solve's clock. A strategy called on its own starts its clock
   /// on entry (RecordOrigin::clocked), its set-up included.
   RecordOrigin origin = {};
+  /// Told, one line each, when the solve enters and leaves a phase outside its iterations that may
+  /// take long and that `callback` does not see: `fas-apriori`'s and `latin-pgd`'s displacement
+  /// from the converged interface history (the far nodes' lift: at 10⁶ dofs, 151 solves and 720 s
+  /// after the last iteration, docs/linear_solvers.md). For a progress display or a log; empty: none.
+  PhaseNote phase_note = {};
 };
 
 /// Where an iterative solve starts: inputs.start, else s = 0 on `problem`'s interface.

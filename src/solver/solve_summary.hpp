@@ -75,6 +75,11 @@ struct SolveSummary {
   void addSolvesAfterIteration(long solves) {
     if (!history.empty()) history.back().sparse_solves += static_cast<int>(solves);
   }
+  /// Sets the last record's Krylov iterations to the solve's (krylov_iterations), so that history.csv's
+  /// last row counts those made after the last iteration too, as it counts their solves.
+  void countKrylovAfterIteration() {
+    if (!history.empty()) history.back().krylov_iterations = krylov_iterations;
+  }
   /// Sets `message` from the reason, the remarks and the stages.
   void composeMessage();
   /// Appends `stage` and its clause to the message.

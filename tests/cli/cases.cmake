@@ -277,6 +277,14 @@ add_test(NAME cli.progress_lines_in_a_log
            && ${cli} solve ${seed} ${small_text} --solver latin --out $d/run --quiet --progress-interval 0.001 2>$d/quiet \
            && ! grep -q progress: $d/off $d/quiet")
 set_tests_properties(cli.progress_lines_in_a_log PROPERTIES LABELS cli)
+# The phase after the last iteration (the far nodes' lift of a zone solve, SolveInputs::phase_note),
+# which no iteration line covers, is told at once in the log and kept in run.log.
+add_test(NAME cli.progress_phase_after_the_iteration
+         COMMAND bash -c "set -e; d=${out}/progress_phase; rm -rf $d; mkdir -p $d \
+           && ${cli} solve ${scenes}/hemisphere_shallow.toml --no-reference --set output.frames=false --out $d/run 2>$d/log >/dev/null \
+           && grep -Eq '^progress: fas-apriori: after the last iteration: the displacement from the converged history, at most [0-9]+ sparse solves$' $d/log \
+           && grep -Eq '^progress: fas-apriori: after the last iteration: [1-9][0-9]* sparse solves, [0-9.]+ s$' $d/run/run.log")
+set_tests_properties(cli.progress_phase_after_the_iteration PROPERTIES LABELS cli)
 stc_cli_test(bad_progress_interval 1 "--progress-interval: -1 seconds: must be >= 0" solve ${seed}
              --progress-interval -1)
 

@@ -191,18 +191,31 @@ TEST(LinearBackendInexactDirections, FewerKrylovIterationsTheSameTrueErrorBound)
 
 // The same on cg-gamg, where the lift of the nodes left out solves through the rank of the history with
 // its small modes loosened (pgd/response_basis.hpp, liftedModes): the same iterates, and the interface
-// histories, far nodes included, within 1e-7 of those of the kept responses (measured 3e-11).
+// histories, far nodes included, within 1e-7 of those of the kept responses (measured 3e-11). The
+// lift after the last iteration is told through phase_note (two lines; none where the responses
+// were kept: no solve), and the last record counts its Krylov iterations as the summary does.
 TEST(LinearBackendResponses, ReleasedOnCgGamgTheLiftAgreesWithTheKeptResponses) {
   if (!stc::petscBackendsBuilt()) GTEST_SKIP() << "a build without PETSc has no iterative backend";
   const stc::SolverSpec kept = cgGamgSpec();
   stc::SolverSpec released = kept;
   released.fas_apriori.stage.response_share = 0.0;
+  std::vector<std::string> notes;
   const auto run = [&](const stc::SolverSpec& spec) {
+    notes.clear();
     stc::PreparedOperators operators(spec.linearAtTolerance());
-    return stc::solve(stc::strategyNamed("fas-apriori"), reference(3).problem, spec, {.operators = &operators});
+    stc::SolveInputs inputs{.operators = &operators};
+    inputs.phase_note = [&](const std::string& line) { notes.push_back(line); };
+    return stc::solve(stc::strategyNamed("fas-apriori"), reference(3).problem, spec, inputs);
   };
-  const stc::SolveResult a = run(kept), b = run(released);
+  const stc::SolveResult a = run(kept);
+  EXPECT_TRUE(notes.empty()) << notes.front();
+  const stc::SolveResult b = run(released);
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_NE(notes[0].find("at most"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[1].find("sparse solves"), std::string::npos) << notes[1];
   ASSERT_TRUE(a.summary.converged()) << a.summary.message;
+  ASSERT_GE(b.summary.history.size(), 2u);
+  EXPECT_EQ(b.summary.history.back().krylov_iterations, b.summary.krylov_iterations);
   EXPECT_EQ(b.summary.iterations, a.summary.iterations);
   EXPECT_GT(b.summary.sparseSolves(), a.summary.sparseSolves());
   const double difference = relativeDifference(b.interface.v, a.interface.v);
