@@ -26,6 +26,7 @@ struct SolveArgs {
   std::vector<std::string> overrides;
   bool quiet = false;
   bool no_reference = false;
+  bool reference = false;  ///< --reference: the incremental reference whatever the size
 };
 
 struct SvdArgs {

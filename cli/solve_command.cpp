@@ -1,5 +1,5 @@
 // stcontact solve SCENE: choose the solver, compute the incremental reference for the true error
-// (scenes small enough, unless --no-reference), solve, write every output file.
+// (scenes small enough unless --no-reference, any size with --reference), solve, write every output file.
 #include <chrono>
 #include <iomanip>
 #include <iostream>
@@ -85,6 +85,10 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
   cmd->add_flag("--quiet", args.quiet, "no progress, no final report");
   cmd->add_flag("--no-reference", args.no_reference,
                 "do not compute the incremental reference (no true error in history.csv)");
+  cmd->add_flag("--reference", args.reference,
+                "compute the incremental reference (the true error in history.csv) whatever the size "
+                "(default: at most " + std::to_string(kMaxReferenceContactNodes) + " contact nodes)")
+      ->excludes("--no-reference");
   addThreadsOption(*cmd);
   addProgressIntervalOption(*cmd);
   return cmd;
@@ -133,7 +137,10 @@ int runSolve(const SolveArgs& args) {
   PreparedOperators operators(linear);
   std::unique_ptr<ErrorReference> reference;
   std::optional<double> reference_s;
-  if (scene.solver.strategy != Strategy::Incremental && !args.no_reference && problem.contact.size() <= kMaxReferenceContactNodes) {
+  const ReferenceWish wish = args.no_reference ? ReferenceWish::Never
+                             : args.reference   ? ReferenceWish::Always
+                                                : ReferenceWish::UpToMaxNodes;
+  if (computesReference(problem, scene.solver.strategy, wish)) {
     const auto begun = std::chrono::steady_clock::now();
     reference = referenceOrWarning(problem, progress, operators);
     reference_s = secondsSince(begun);

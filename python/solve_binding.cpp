@@ -199,8 +199,8 @@ SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_refer
                      CallbackBridge& bridge, std::string& warning, std::optional<double>& reference_s) {
   py::gil_scoped_release unlocked;
   std::unique_ptr<ErrorReference> reference;
-  if (scene.solver.strategy != Strategy::Incremental && with_reference &&
-      problem.contact.size() <= kMaxReferenceContactNodes) {
+  if (computesReference(problem, scene.solver.strategy,
+                        with_reference ? ReferenceWish::UpToMaxNodes : ReferenceWish::Never)) {
     const auto begun = std::chrono::steady_clock::now();
     reference = solveReference(problem, bridge.signalsOnly(), warning, *inputs.operators);
     reference_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();

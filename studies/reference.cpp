@@ -35,6 +35,11 @@ ReferenceSolution computeReference(const Problem& problem, ProgressReporter* pro
   return out;
 }
 
+bool computesReference(const Problem& problem, Strategy strategy, ReferenceWish wish) {
+  if (strategy == Strategy::Incremental || wish == ReferenceWish::Never) return false;
+  return wish == ReferenceWish::Always || problem.contact.size() <= kMaxReferenceContactNodes;
+}
+
 // A reference that fails (Newton stops at some instant) is not an internal failure: the solve
 // goes on without a true error, and the warning says why.
 std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,

@@ -7,14 +7,23 @@
 #include "stcontact/incremental/error_reference.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/problem/problem.hpp"
+#include "stcontact/options/strategy.hpp"
 #include "stcontact/studies/progress.hpp"
 
 namespace stc {
 
 /// `stcontact solve` and the Python module's solve compute no incremental reference (no true error)
-/// beyond this many contact nodes: the reference solve and its per-iteration error evaluation become
-/// a noticeable cost.
+/// beyond this many contact nodes unless asked to (ReferenceWish::Always): the reference solve and
+/// its per-iteration error evaluation become a noticeable cost.
 inline constexpr int kMaxReferenceContactNodes = 1000;
+
+/// What a solve was told about its reference: `--no-reference` (Never), nothing (UpToMaxNodes:
+/// kMaxReferenceContactNodes at most), `--reference` (Always, whatever the size).
+enum class ReferenceWish { Never, UpToMaxNodes, Always };
+
+/// Whether a solve of `problem` by `strategy` computes the incremental reference: never for the
+/// incremental solver itself (it is the reference), else as `wish` says.
+bool computesReference(const Problem& problem, Strategy strategy, ReferenceWish wish);
 
 struct ReferenceSolution {
   std::unique_ptr<ErrorReference> reference;

@@ -277,6 +277,17 @@ add_test(NAME cli.progress_lines_in_a_log
            && ${cli} solve ${seed} ${small_text} --solver latin --out $d/run --quiet --progress-interval 0.001 2>$d/quiet \
            && ! grep -q progress: $d/off $d/quiet")
 set_tests_properties(cli.progress_lines_in_a_log PROPERTIES LABELS cli)
+# The incremental reference (the true error column of history.csv) is skipped beyond 1000 contact nodes
+# unless --reference asks for it (1161 nodes here); --reference and --no-reference exclude each other.
+add_test(NAME cli.reference_whatever_the_size
+         COMMAND bash -c "set -e; d=${out}/reference_size; rm -rf $d; mkdir -p $d; \
+           S='--set mesh.divisions=10 --set output.frames=false --quiet'; \
+           ${cli} solve ${scenes}/hemisphere_shallow.toml $S --out $d/default \
+           && ${cli} solve ${scenes}/hemisphere_shallow.toml $S --reference --out $d/asked \
+           && tail -1 $d/default/history.csv | grep -Eq '^[0-9]+,[0-9]+,[0-9.e+-]+,,' \
+           && tail -1 $d/asked/history.csv | grep -Eq '^[0-9]+,[0-9]+,[0-9.e+-]+,[0-9]\\.[0-9]+e-0[7-9],' \
+           && bash ${expect} 1 'excludes' ${cli} solve ${scenes}/hemisphere_shallow.toml --reference --no-reference")
+set_tests_properties(cli.reference_whatever_the_size PROPERTIES LABELS cli)
 # The phase after the last iteration (the far nodes' lift of a zone solve, SolveInputs::phase_note),
 # which no iteration line covers, is told at once in the log and kept in run.log.
 add_test(NAME cli.progress_phase_after_the_iteration
