@@ -7,8 +7,11 @@
 #
 #   scripts/million_dofs.sh [N] [D] [OUT]      (default 2, 44, results/million_dofs_d<D>_np<N>)
 #
-# With REFERENCE=1 in the environment the incremental reference is computed first (--reference) and
-# the row gets the true error at termination (the `error` of summary.json) beside the estimate.
+# SOLVER=incremental in the environment solves it with the incremental solver instead (--solver, its
+# default OUT ending in _incremental): the competitor on the same engine, which on CG + GAMG (no
+# trailing block) solves for the Delassus columns of the nodes that close, three Krylov solves each.
+# With REFERENCE=1 the incremental reference is computed first (--reference) and the row gets the
+# true error at termination (the `error` of summary.json) beside the estimate.
 #
 # Needs a build with PETSc and Open MPI's mpirun (docs/linear_solvers.md). As root, Open MPI asks for
 # OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 in the environment.
@@ -16,12 +19,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ranks=${1:-2}
 divisions=${2:-44}
-out=${3:-results/million_dofs_d${divisions}_np${ranks}}
+solver=${SOLVER:-fas-apriori}
+suffix=$([ "$solver" = fas-apriori ] || echo "_$solver")
+out=${3:-results/million_dofs_d${divisions}_np${ranks}${suffix}}
 bin=${STC_BIN:-build/bin/stcontact}
 reference=--no-reference
 [ "${REFERENCE:-0}" = 1 ] && reference=--reference
 mkdir -p "$(dirname "$out")"
-mpirun -np "$ranks" --oversubscribe "$bin" solve examples/scenes/hemisphere_shallow.toml \
+mpirun -np "$ranks" --oversubscribe "$bin" solve examples/scenes/hemisphere_shallow.toml --solver "$solver" \
   --set "mesh.divisions=$divisions" --set 'solver.linear="cg-gamg"' --tol 1e-6 "$reference" \
   --set output.frames=false --threads 1 --out "$out" 2>&1 | tee "$out.log"
 "${STC_PYTHON:-python3}" - "$out" <<'EOF'
