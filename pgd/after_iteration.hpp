@@ -21,7 +21,7 @@ class AfterIteration {
 
  private:
   const ResponseBasis& basis_;
-  const PhaseNote& note_;
+  PhaseNote note_;
   long solves_before_;
   std::chrono::steady_clock::time_point started_;
 };
