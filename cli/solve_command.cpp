@@ -37,7 +37,7 @@ std::unique_ptr<ErrorReference> referenceOrWarning(const Problem& problem, Termi
   std::unique_ptr<ErrorReference> reference;
   {
     const RunProgress run(&progress, "reference (incremental)");
-    reference = solveReference(problem, run.callback(), warning, operators);
+    reference = solveReference(problem, run.callback(), warning, operators, run.phaseNote());
   }
   if (!warning.empty()) {
     std::cerr << "warning: " << warning << std::endl;

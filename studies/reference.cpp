@@ -43,9 +43,11 @@ bool computesReference(const Problem& problem, Strategy strategy, ReferenceWish 
 // A reference that fails (Newton stops at some instant) is not an internal failure: the solve
 // goes on without a true error, and the warning says why.
 std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
-                                               std::string& warning, PreparedOperators& operators) {
+                                               std::string& warning, PreparedOperators& operators,
+                                               const PhaseNote& note) {
   try {
-    SolveResult ref = solveIncremental(problem, {}, {.callback = callback, .operators = &operators});
+    SolveResult ref =
+        solveIncremental(problem, {}, {.callback = callback, .operators = &operators, .phase_note = note});
     if (!ref.summary.converged()) {
       warning = "no true error: the incremental reference did not converge (" + ref.summary.message + ")";
       return nullptr;

@@ -40,8 +40,10 @@ ReferenceSolution computeReference(const Problem& problem, ProgressReporter* pro
 
 /// A solve's reference: the same with the run's `operators`, or nullptr with the reason in
 /// `warning` when the incremental solve stops early (the solve then goes on without a true error).
-/// `callback` sees the incremental solver's records (progress, Ctrl-C).
+/// `callback` sees the incremental solver's records (progress, Ctrl-C), `note` its phases outside
+/// them (SolveInputs::phase_note).
 std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
-                                               std::string& warning, PreparedOperators& operators);
+                                               std::string& warning, PreparedOperators& operators,
+                                               const PhaseNote& note = {});
 
 }  // namespace stc

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -315,14 +316,32 @@ SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& opti
   return result;
 }
 
+// The Delassus columns of `zone`'s nodes before the march (ConeLaw::prepare then finds them), told
+// through `note`: d solves per node, at 10⁶ dofs on CG + GAMG the longest part of the march with no
+// record (about 25 minutes on two ranks for the shallow press, docs/linear_solvers.md).
+void learnZoneColumns(LazyDelassus& delassus, const std::vector<int>& zone, int d, const PhaseNote& note) {
+  if (zone.empty()) return;
+  const auto started = Clock::now();
+  const int before = delassus.sparseSolves();
+  if (note)
+    note("before the march: the Delassus columns of the " + std::to_string(zone.size()) + " nodes within reach, " +
+         std::to_string(d * static_cast<int>(zone.size())) + " sparse solves");
+  delassus.ensure(zone);
+  std::ostringstream done;
+  done << "before the march: " << delassus.sparseSolves() - before << " sparse solves, " << std::fixed
+       << std::setprecision(1) << std::chrono::duration<double>(Clock::now() - started).count() << " s";
+  if (note) note(done.str());
+}
+
 // The cone law of cone_newton.hpp on every node, with the Delassus columns computed on demand; those
 // of `zone`'s nodes first, in blocks on every thread (most of those the march would ask for a few at
 // a time).
 SolveResult solveConeOnEveryNode(const Problem& problem, const IncrementalOptions& options,
                                  const IterationCallback& callback, const MarchClock& start, const SpdSolver& factor,
-                                 const std::optional<std::vector<int>>& zone) {
+                                 const std::optional<std::vector<int>>& zone, const PhaseNote& phase_note) {
   const Eigen::MatrixXd v0 = freeInterfaceResponse(problem, factor);
   LazyDelassus delassus(problem, factor);
+  if (zone) learnZoneColumns(delassus, *zone, problem.contact.dimension, phase_note);
   SolveResult result = solveConeWith(problem, options, callback, start, v0, delassus,
                                      static_cast<int>(problem.loads.size()), zone.value_or(std::vector<int>()));
   std::ostringstream note;
@@ -337,8 +356,11 @@ SolveResult solveConeOnEveryNode(const Problem& problem, const IncrementalOption
 // lifted to every node; on every node, lazily, when the factor does not condense the zone or a node
 // left out penetrates.
 SolveResult solveCone(const Problem& problem, const IncrementalOptions& options, const IterationCallback& callback,
-                      const MarchClock& start, const SpdSolver& factor, const std::optional<std::vector<int>>& zone) {
-  const auto on_every_node = [&] { return solveConeOnEveryNode(problem, options, callback, start, factor, zone); };
+                      const MarchClock& start, const SpdSolver& factor, const std::optional<std::vector<int>>& zone,
+                      const PhaseNote& phase_note) {
+  const auto on_every_node = [&] {
+    return solveConeOnEveryNode(problem, options, callback, start, factor, zone, phase_note);
+  };
   if (!zone || !factor.condenses(restrictToNodes(problem.contact, *zone).B)) return on_every_node();
   ZoneCondensation c = ZoneCondensation::build(problem, factor, *zone);
   Problem part = problem;
@@ -369,7 +391,7 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
   const std::shared_ptr<const SpdSolver> factor =
       operatorsOr(inputs.operators, own).stiffnessFree(problem, {zone_dofs, CholmodFactor::kTrailingWork});
   if (problem.contact.dimension == 3 || options.cone_law)
-    return solveCone(problem, options, callback, start, *factor, zone);
+    return solveCone(problem, options, callback, start, *factor, zone, inputs.phase_note);
   return solvePlane(problem, options, callback, start, *factor, zone);
 }
 

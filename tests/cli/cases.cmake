@@ -296,6 +296,17 @@ add_test(NAME cli.progress_phase_after_the_iteration
            && grep -Eq '^progress: fas-apriori: after the last iteration: the displacement from the converged history, at most [0-9]+ sparse solves$' $d/log \
            && grep -Eq '^progress: fas-apriori: after the last iteration: [1-9][0-9]* sparse solves, [0-9.]+ s$' $d/run/run.log")
 set_tests_properties(cli.progress_phase_after_the_iteration PROPERTIES LABELS cli)
+# On a backend without a trailing block the incremental solver (and a solve's reference) solves for
+# the Delassus columns of the nodes within reach before its first record: told at once, in the log.
+if(STC_HAVE_PETSC)
+  add_test(NAME cli.progress_phase_before_the_march
+           COMMAND bash -c "set -e; d=${out}/progress_march; rm -rf $d; mkdir -p $d \
+             && ${cli} solve ${scenes}/hemisphere_shallow.toml --solver incremental --set 'solver.linear=\"cg-gamg\"' \
+                --set output.frames=false --out $d/run 2>$d/log >/dev/null \
+             && grep -Eq '^progress: incremental: before the march: the Delassus columns of the [1-9][0-9]* nodes within reach, [1-9][0-9]* sparse solves$' $d/log \
+             && grep -Eq '^progress: incremental: before the march: [1-9][0-9]* sparse solves, [0-9.]+ s$' $d/run/run.log")
+  set_tests_properties(cli.progress_phase_before_the_march PROPERTIES LABELS cli)
+endif()
 stc_cli_test(bad_progress_interval 1 "--progress-interval: -1 seconds: must be >= 0" solve ${seed}
              --progress-interval -1)
 
