@@ -318,7 +318,7 @@ SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& opti
 
 // The Delassus columns of `zone`'s nodes before the march (ConeLaw::prepare then finds them), told
 // through `note`: d solves per node, at 10⁶ dofs on CG + GAMG the longest part of the march with no
-// record (about 25 minutes on two ranks for the shallow press, docs/linear_solvers.md).
+// record (more than 25 minutes on two ranks for the shallow press, docs/linear_solvers.md).
 void learnZoneColumns(LazyDelassus& delassus, const std::vector<int>& zone, int d, const PhaseNote& note) {
   if (zone.empty()) return;
   const auto started = Clock::now();
