@@ -3,11 +3,10 @@
 // modes, the separated displacement and the far nodes' lift, whose responses a condensed interface
 // or released responses have not solved (pgd/response_basis.hpp). It may be long (at 10⁶ dofs on
 // two ranks, 151 solves and 720 s, docs/linear_solvers.md) and no iteration callback sees it: this
-// phase tells SolveInputs::phase_note when it starts and what it cost, and counts its solves in the
-// last record (SolveSummary::addSolvesAfterIteration).
-#include <chrono>
-
+// phase tells SolveInputs::phase_note when it starts and what it cost (src/solver/noted_phase.hpp),
+// and counts its solves in the last record (SolveSummary::addSolvesAfterIteration).
 #include "stcontact/pgd/response_basis.hpp"
+#include "stcontact/solver/noted_phase.hpp"
 #include "stcontact/solver/solve_inputs.hpp"
 
 namespace stc::pgd {
@@ -21,9 +20,8 @@ class AfterIteration {
 
  private:
   const ResponseBasis& basis_;
-  PhaseNote note_;
+  NotedPhase phase_;
   long solves_before_;
-  std::chrono::steady_clock::time_point started_;
 };
 
 }  // namespace stc::pgd

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <iomanip>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -20,6 +19,7 @@
 #include "stcontact/incremental/newton_instant.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
 #include "stcontact/linalg/spd_solver.hpp"
+#include "stcontact/solver/noted_phase.hpp"
 
 namespace stc {
 namespace {
@@ -321,16 +321,12 @@ SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& opti
 // record (more than 25 minutes on two ranks for the shallow press, docs/linear_solvers.md).
 void learnZoneColumns(LazyDelassus& delassus, const std::vector<int>& zone, int d, const PhaseNote& note) {
   if (zone.empty()) return;
-  const auto started = Clock::now();
+  const NotedPhase phase(note, "before the march: ");
   const int before = delassus.sparseSolves();
-  if (note)
-    note("before the march: the Delassus columns of the " + std::to_string(zone.size()) + " nodes within reach, " +
-         std::to_string(d * static_cast<int>(zone.size())) + " sparse solves");
+  phase.begin("the Delassus columns of the " + std::to_string(zone.size()) + " nodes within reach, " +
+              std::to_string(d * static_cast<int>(zone.size())) + " sparse solves");
   delassus.ensure(zone);
-  std::ostringstream done;
-  done << "before the march: " << delassus.sparseSolves() - before << " sparse solves, " << std::fixed
-       << std::setprecision(1) << std::chrono::duration<double>(Clock::now() - started).count() << " s";
-  if (note) note(done.str());
+  phase.end(delassus.sparseSolves() - before);
 }
 
 // The cone law of cone_newton.hpp on every node, with the Delassus columns computed on demand; those
