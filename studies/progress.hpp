@@ -4,7 +4,6 @@
 // sees the records). A study asks for one callback per run and ends the run when it returns.
 #include <string>
 
-#include "stcontact/solver/solve_inputs.hpp"
 #include "stcontact/solver/solve_summary.hpp"
 
 namespace stc {

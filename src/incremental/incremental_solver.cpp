@@ -317,15 +317,20 @@ SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& opti
 }
 
 // The Delassus columns of `zone`'s nodes before the march (ConeLaw::prepare then finds them), told
-// through `note`: d solves per node, at 10⁶ dofs on CG + GAMG the longest part of the march with no
-// record (more than 25 minutes on two ranks for the shallow press, docs/linear_solvers.md).
+// through `note` with a line a minute while they are solved: d solves per node, at 10⁶ dofs on
+// CG + GAMG the longest part of the march with no record (more than 25 minutes on two ranks for the
+// shallow press, docs/linear_solvers.md).
 void learnZoneColumns(LazyDelassus& delassus, const std::vector<int>& zone, int d, const PhaseNote& note) {
   if (zone.empty()) return;
-  const NotedPhase phase(note, "before the march: ");
+  NotedPhase phase(note, "before the march: ");
   const int before = delassus.sparseSolves();
   phase.begin("the Delassus columns of the " + std::to_string(zone.size()) + " nodes within reach, " +
               std::to_string(d * static_cast<int>(zone.size())) + " sparse solves");
-  delassus.ensure(zone);
+  delassus.ensure(zone, [&](int done, int missing) {
+    if (done < missing)  // the last chunk's line is the end's
+      phase.during(std::to_string(done) + " of " + std::to_string(missing) + " nodes, " +
+                   std::to_string(delassus.sparseSolves() - before) + " sparse solves");
+  });
   phase.end(delassus.sparseSolves() - before);
 }
 

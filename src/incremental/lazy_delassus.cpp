@@ -31,16 +31,18 @@ LazyDelassus::LazyDelassus(const Problem& problem, Eigen::MatrixXd W)
   giveHeldRowsCompliance(problem.contact, columns_);
 }
 
-void LazyDelassus::ensure(const std::vector<int>& nodes) {
+void LazyDelassus::ensure(const std::vector<int>& nodes, const ChunkDone& after_chunk) {
   std::vector<int> missing;
   for (int j : nodes)
     if (slot_[j] < 0 && std::find(missing.begin(), missing.end(), j) == missing.end()) missing.push_back(j);
   if (missing.empty()) return;
   reserve(count_ + static_cast<int>(missing.size()));
   const auto chunk = static_cast<std::size_t>(chunkNodes());
-  for (std::size_t first = 0; first < missing.size(); first += chunk)
-    solveColumns({missing.begin() + static_cast<std::ptrdiff_t>(first),
-                  missing.begin() + static_cast<std::ptrdiff_t>(std::min(missing.size(), first + chunk))});
+  for (std::size_t first = 0; first < missing.size(); first += chunk) {
+    const std::size_t last = std::min(missing.size(), first + chunk);
+    solveColumns({missing.begin() + static_cast<std::ptrdiff_t>(first), missing.begin() + static_cast<std::ptrdiff_t>(last)});
+    if (after_chunk) after_chunk(static_cast<int>(last), static_cast<int>(missing.size()));
+  }
 }
 
 // Capacity for `nodes` nodes: doubling (amortised copies), never beyond the d n_C columns of W.

@@ -6,6 +6,7 @@
 // (the Newton system), never those of the nodes that stay open: memory d n_C × d n_ever-closed
 // instead of the dense (d n_C)², and as many sparse solves as nodes ever closed (times d).
 #include <Eigen/Core>
+#include <functional>
 #include <vector>
 
 #include "stcontact/linalg/spd_solver.hpp"
@@ -27,10 +28,13 @@ class LazyDelassus {
   /// never solves.
   LazyDelassus(const Problem& problem, Eigen::MatrixXd W);
 
+  /// After each chunk of ensure(): how many of the missing nodes have their columns, of how many.
+  using ChunkDone = std::function<void(int nodes_done, int nodes_missing)>;
+
   /// Computes the columns of the nodes of `nodes` that do not have them yet (one multi-right-hand-
-  /// side solve per chunk of them, chunkNodes()); a held row gets the compliance of
-  /// giveHeldRowsCompliance (condensed_interface.hpp).
-  void ensure(const std::vector<int>& nodes);
+  /// side solve per chunk of them, chunkNodes()), calling `after_chunk` after each; a held row gets
+  /// the compliance of giveHeldRowsCompliance (condensed_interface.hpp).
+  void ensure(const std::vector<int>& nodes, const ChunkDone& after_chunk = {});
   bool has(int node) const { return slot_[node] >= 0; }
   /// W(:, d node + a), a = 0 … d − 1 (the node's columns must exist).
   auto column(int node, int a) const { return columns_.col(static_cast<Eigen::Index>(slot_[node]) * d_ + a); }

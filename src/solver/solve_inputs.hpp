@@ -14,9 +14,6 @@
 
 namespace stc {
 
-/// A line saying what a solve is doing outside its iterations (SolveInputs::phase_note).
-using PhaseNote = std::function<void(const std::string&)>;
-
 struct SolveInputs {
   /// Adds the true error to every history record (e.g. an ErrorReference against the incremental
   /// solution, src/incremental/error_reference.hpp).

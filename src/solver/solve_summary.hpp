@@ -89,4 +89,8 @@ struct SolveSummary {
 /// Called after every iteration; returning false stops the solve (Termination::StoppedByCallback).
 using IterationCallback = std::function<bool(const IterationRecord&)>;
 
+/// A line saying what a solve is doing outside its iterations (SolveInputs::phase_note,
+/// src/solver/noted_phase.hpp).
+using PhaseNote = std::function<void(const std::string&)>;
+
 }  // namespace stc

@@ -47,7 +47,8 @@ TEST(ErrorReference, LazyDelassusGivesTheSameErrorAsTheWholeOperator) {
 }
 
 // Columns solved node by node (the smallest chunk) equal the dense Delassus operator's, held rows
-// included: the chunked solves of ensure() change the blocking only.
+// included: the chunked solves of ensure() change the blocking only; ensure() says after each chunk
+// how many of the missing nodes are done.
 TEST(LazyDelassus, ColumnsSolvedInChunksEqualTheWholeOperator) {
   for (const stc::Scene& scene :
        {stc::test::seedScene(31, 11), stc::test::hemisphereScene(3, 11), stc::test::slabScene(31, 11)}) {
@@ -58,8 +59,14 @@ TEST(LazyDelassus, ColumnsSolvedInChunksEqualTheWholeOperator) {
     stc::LazyDelassus lazy(problem, factor, 1.0);
     std::vector<int> every(problem.contact.size());
     for (int j = 0; j < problem.contact.size(); ++j) every[j] = problem.contact.size() - 1 - j;
-    lazy.ensure(every);
+    std::vector<int> done_after_chunk;
+    lazy.ensure(every, [&](int done, int missing) {
+      EXPECT_EQ(missing, problem.contact.size());
+      done_after_chunk.push_back(done);
+    });
     ASSERT_EQ(lazy.nodesComputed(), problem.contact.size());
+    ASSERT_EQ(static_cast<int>(done_after_chunk.size()), problem.contact.size()) << "one node per chunk";
+    for (std::size_t c = 0; c < done_after_chunk.size(); ++c) EXPECT_EQ(done_after_chunk[c], static_cast<int>(c) + 1);
     if (scene.name == "slab") ASSERT_FALSE(problem.contact.held_rows.empty()) << "the slab holds rows along z";
     const int d = problem.contact.dimension;
     double worst = 0.0;
