@@ -17,13 +17,6 @@ class ColumnStore {
   /// The columns held (a view: valid until the next append).
   View view() const { return data_.leftCols(cols_); }
 
-  /// Columns of storage while `more` are appended: the capacity, and while it grows the new one too
-  /// (the resize holds both).
-  Eigen::Index storageWhileAppending(Eigen::Index more) const {
-    const Eigen::Index needed = cols_ + more;
-    return needed > data_.cols() ? data_.cols() + grownCapacity(needed) : data_.cols();
-  }
-
   void append(const Eigen::Ref<const Eigen::MatrixXd>& block) {
     const Eigen::Index needed = cols_ + block.cols();
     if (needed > data_.cols()) data_.conservativeResize(Eigen::NoChange, grownCapacity(needed));

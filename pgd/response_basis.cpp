@@ -1,6 +1,7 @@
 #include "stcontact/pgd/response_basis.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 #include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/linalg/dense_product.hpp"
@@ -124,11 +125,11 @@ void ResponseBasis::solvePending(const Eigen::VectorXd& loosening) {
   } else {
     const Eigen::MatrixXd rhs = problem_.contact.B.transpose() * Z_.view().rightCols(added);
     // A direct factor's columns in solveColumns' parts whatever is asked (its numbers bit for bit).
-    const Eigen::MatrixXd X =
+    Eigen::MatrixXd X =
         loosening.size() > 0 && !factor_.isDirect() ? factor_.solveLoosened(rhs, loosening) : solveColumns(rhs);
     sparse_solves_ += added;
     T_.append(problem_.contact.B * X);
-    keepOrRelease(X);
+    keepOrRelease(std::move(X));
   }
   pending_ = 0;
   extendEnergyFactor(added);
@@ -146,36 +147,34 @@ void ResponseBasis::completeToEveryRow() {
   solvePending();
 }
 
-void ResponseBasis::keepOrRelease(const Eigen::MatrixXd& X) {
+void ResponseBasis::keepOrRelease(Eigen::MatrixXd&& X) {
   if (released_) return;
-  // The storage while they are appended (ColumnStore doubles its capacity, and holds both meanwhile).
-  const double bytes = static_cast<double>(sizeof(double)) * static_cast<double>(X.rows()) *
-                       static_cast<double>(X_.storageWhileAppending(X.cols()));
+  const double bytes = X_.bytes() + static_cast<double>(sizeof(double)) * static_cast<double>(X.size());
   if (bytes <= response_bytes_) {
-    X_.append(X);
+    X_.append(std::move(X));
     return;
   }
-  X_ = ColumnStore(problem_.numFreeDofs());  // its memory given back
+  X_ = ColumnBlocks(problem_.numFreeDofs());  // its memory given back
   released_ = true;
 }
 
-ResponseBasis::View ResponseBasis::responses() const {
+const ColumnBlocks& ResponseBasis::responses() const {
   if (released_) throw std::logic_error("ResponseBasis::responses: released beyond their bytes (responsesOf solves them)");
   const Eigen::Index solved = X_.cols(), known = Z_.cols() - pending_;
   if (solved < known) X_.append(solveInterfaceLoads(Z_.view().middleCols(solved, known - solved)));
-  return X_.view();
+  return X_;
 }
 
 Eigen::MatrixXd ResponseBasis::responsesOf(const Eigen::MatrixXd& M) const {
   const Eigen::Index p = M.rows();
-  if (X_.cols() >= p) return X_.view().leftCols(p) * M;
+  if (X_.cols() >= p) return X_.times(M);
   return solveInterfaceLoads(Z_.view().leftCols(p) * M);
 }
 
 Eigen::MatrixXd ResponseBasis::liftedInterface(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& M) const {
   const Eigen::Index p = M.rows();
   if (B_rows.rows() == 0) return Eigen::MatrixXd(0, M.cols());  // no row to lift to: no solve
-  if (X_.cols() >= p) return (B_rows * X_.view().leftCols(p)) * M;
+  if (X_.cols() >= p) return X_.rowsOf(B_rows, p) * M;
   return linalg::solveThroughRank(factor_, B_rows, problem_.contact.B, Z_.view().leftCols(p) * M, sparse_solves_);
 }
 

@@ -8,8 +8,9 @@
 // of the separated displacement u_k ≈ U_F g_k + X c_k) and their traces T = B X (d n_C × p), and the
 // Cholesky factor of the energy Gram matrix of Φ = [U_F X] (pgd/energy_factor.hpp), from traces:
 //   U_Fᵀ A U_F = U_Fᵀ F,   U_Fᵀ A X = U_Fᵀ Bᵀ Z = V_Fᵀ Z,   Xᵀ A X = Xᵀ Bᵀ Z = Tᵀ Z.
-// Nothing here is n_free × m: memory O((q + p) n_free + (q + p + m) n_C). Columns are appended to
-// storage with spare capacity (pgd/column_store.hpp): the accessors are views.
+// Nothing here is n_free × m: memory O((q + p) n_free + (q + p + m) n_C). The interface's columns
+// are appended to storage with spare capacity (pgd/column_store.hpp: the accessors are views), the
+// responses X kept as the blocks they were solved in (pgd/column_blocks.hpp: no copy as they grow).
 // When the factor ordered the interface's dofs last (SpdSolver::condenses B), the operator
 // D = B A⁻¹ Bᵀ comes from its trailing block with no solve, and a new direction's trace is T = D Z:
 // the iteration then makes no sparse solve, and the responses X are solved only when asked for
@@ -25,6 +26,7 @@
 #include <vector>
 
 #include "stcontact/linalg/spd_solver.hpp"
+#include "stcontact/pgd/column_blocks.hpp"
 #include "stcontact/pgd/column_store.hpp"
 #include "stcontact/pgd/energy_factor.hpp"
 #include "stcontact/problem/problem.hpp"
@@ -43,9 +45,9 @@ class ResponseBasis {
   int maxSize() const { return static_cast<int>(Z_.rows()); }    ///< d n_C: Z then spans every w
   View directions() const { return Z_.view(); }                  ///< Z, d n_C × p
   View scaledDirections() const { return Zs_.view(); }           ///< k^{-1/2} Z: orthonormal columns
-  /// X = A⁻¹ Bᵀ Z, n_free × p (solved now for the directions whose responses were not). Throws
-  /// std::logic_error once they were released (holdsResponses(): use responsesOf).
-  View responses() const;
+  /// X = A⁻¹ Bᵀ Z, n_free × p, in blocks (solved now for the directions whose responses were not).
+  /// Throws std::logic_error once they were released (holdsResponses(): use responsesOf).
+  const ColumnBlocks& responses() const;
   /// False once the responses outgrew the bytes the basis was given and were released (header).
   bool holdsResponses() const { return !released_; }
   View traces() const { return T_.view(); }                      ///< T = B X, d n_C × p
@@ -112,9 +114,9 @@ class ResponseBasis {
   /// k^{-1/2}-scaled candidates made orthonormal to Zs and each other; dependent ones dropped.
   Eigen::MatrixXd orthonormalised(const Eigen::MatrixXd& candidates, double drop) const;
   void extendEnergyFactor(Eigen::Index added);  ///< the energy factor's columns for the new directions
-  /// Appends the new directions' responses X to X_ while X_'s storage stays within response_bytes_
-  /// (its spare capacity and the copy while it grows counted); else releases X_ for good (header).
-  void keepOrRelease(const Eigen::MatrixXd& X);
+  /// Keeps the new directions' responses X (moved into X_, no copy) while X_ with them stays within
+  /// response_bytes_; else releases X_ for good (header).
+  void keepOrRelease(Eigen::MatrixXd&& X);
   /// A⁻¹ Bᵀ M (n_free × k), k solves counted: half-solves from the factor's trailing block when it
   /// condenses the interface (SpdSolver::solveFromTrailing: the forward substitution of Bᵀ M, zero
   /// above that block, is the block's alone), else solveColumns.
@@ -136,7 +138,7 @@ class ResponseBasis {
   Eigen::VectorXd sqrt_k_, inv_sqrt_k_;
   Eigen::MatrixXd condensed_;  ///< D = B A⁻¹ Bᵀ from the factor's trailing block, or empty
   ColumnStore Z_, Zs_, T_;
-  mutable ColumnStore X_;      ///< behind Z_ when D gives the traces: solved by responses()
+  mutable ColumnBlocks X_;     ///< behind Z_ when D gives the traces: solved by responses()
   double response_bytes_;      ///< the most X_ may hold where each direction is solved
   bool released_ = false;      ///< X_ outgrew response_bytes_ and was released: traces alone
   Eigen::MatrixXd UF_, VF_, G_, v0_;

@@ -81,7 +81,7 @@ Eigen::MatrixXd spatialModes(const ResponseBasis& basis, const Eigen::MatrixXd& 
   if (!basis.holdsResponses())  // released beyond their bytes: the modes' own solves
     Y += basis.responsesOf(combination.bottomRows(combination.rows() - q));
   else
-    Y.noalias() += basis.responses() * combination.bottomRows(combination.rows() - q);
+    basis.responses().addProduct(combination.bottomRows(combination.rows() - q), Y);
   return Y;
 }
 

@@ -58,9 +58,9 @@ TEST(ResponseBasis, DirectionsAreOrthonormalInTheInverseSearchProductAndResponse
   const Eigen::MatrixXd& Z = basis.directions();
   const Eigen::MatrixXd gram = Z.transpose() * f.problem.contact.search_direction.cwiseInverse().asDiagonal() * Z;
   EXPECT_LE((gram - Eigen::MatrixXd::Identity(basis.size(), basis.size())).cwiseAbs().maxCoeff(), 1e-12);
-  const Eigen::MatrixXd residual = stage.matrix() * basis.responses() - f.problem.contact.B.transpose() * Z;
+  const Eigen::MatrixXd residual = stage.matrix() * basis.responses().gathered() - f.problem.contact.B.transpose() * Z;
   EXPECT_LE(residual.norm(), 1e-9 * (f.problem.contact.B.transpose() * Z).norm());
-  EXPECT_LE((basis.traces() - f.problem.contact.B * basis.responses()).norm(), 1e-12 * basis.traces().norm());
+  EXPECT_LE((basis.traces() - f.problem.contact.B * basis.responses().gathered()).norm(), 1e-12 * basis.traces().norm());
 }
 
 // Candidates almost in the span of the directions (a warm start's, say) lose most of their norm in
@@ -103,8 +103,8 @@ TEST(ResponseBasis, DirectionsSolvedInOneBlockAreThoseSolvedPassByPass) {
   EXPECT_EQ(in_block.sparseSolves(), loads + 11);
   EXPECT_EQ(in_block.sparseSolves(), by_pass.sparseSolves());
   EXPECT_TRUE(Eigen::MatrixXd(in_block.directions()) == Eigen::MatrixXd(by_pass.directions()));
-  const Eigen::MatrixXd X = by_pass.responses();
-  EXPECT_LE((Eigen::MatrixXd(in_block.responses()) - X).norm(), 1e-12 * X.norm());
+  const Eigen::MatrixXd X = by_pass.responses().gathered();
+  EXPECT_LE((in_block.responses().gathered() - X).norm(), 1e-12 * X.norm());
   EXPECT_EQ(in_block.energyFactor().size(), by_pass.energyFactor().size());
   EXPECT_EQ(in_block.energyFactor().rank(), by_pass.energyFactor().rank());
 }
@@ -136,8 +136,8 @@ TEST(ResponseBasis, TracesFromTheFactorsTrailingBlockAreThoseOfTheSolves) {
   const Eigen::MatrixXd v = solved.displacementOn(B_rows, c);
   EXPECT_LE((condensed.displacementOn(B_rows, c) - v).norm(), 1e-10 * v.norm());
   EXPECT_EQ(condensed.sparseSolves(), loads + 3);
-  const Eigen::MatrixXd X = solved.responses();
-  EXPECT_LE((Eigen::MatrixXd(condensed.responses()) - X).norm(), 1e-12 * X.norm());
+  const Eigen::MatrixXd X = solved.responses().gathered();
+  EXPECT_LE((condensed.responses().gathered() - X).norm(), 1e-12 * X.norm());
   EXPECT_EQ(condensed.sparseSolves(), loads + 3 + 11);
 }
 
@@ -180,6 +180,25 @@ TEST(ResponseBasis, ReleasesItsResponsesBeyondItsBytesAndSolvesThemAgainWhenAske
   const Eigen::MatrixXd Y = stc::pgd::spatialModes(kept, combination);
   EXPECT_LE((stc::pgd::spatialModes(bounded, combination) - Y).norm(), 1e-10 * Y.norm());
   EXPECT_EQ(bounded.sparseSolves(), solves + 9);
+}
+
+// The responses are kept in the blocks they were solved in, so that appending copies nothing held:
+// with room for exactly 12 columns, 12 directions appended one at a time keep all 12 (storage grown
+// by doubling held 8 + 16 columns while the 9th came), and the 13th releases them.
+TEST(ResponseBasis, KeepsItsResponsesWhileTheyFitExactly) {
+  const auto& f = fixture();
+  const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(f.problem);
+  const stc::CholmodFactor plain(A, "K + B^T k B");
+  const double twelve = 12.0 * sizeof(double) * f.problem.numFreeDofs();
+  stc::pgd::ResponseBasis bounded(f.problem, plain, twelve);
+  std::srand(23);
+  const Eigen::MatrixXd candidates = Eigen::MatrixXd::Random(f.problem.contact.rows(), 13);
+  for (int j = 0; j < 12; ++j) ASSERT_EQ(bounded.append(candidates.col(j)), 1);
+  ASSERT_TRUE(bounded.holdsResponses());
+  EXPECT_EQ(bounded.responses().cols(), 12);
+  EXPECT_EQ(bounded.responses().bytes(), twelve);
+  ASSERT_EQ(bounded.append(candidates.col(12)), 1);
+  EXPECT_FALSE(bounded.holdsResponses());
 }
 
 // Completed to span every row (from 11 directions), the basis stays k⁻¹-orthonormal, its traces are
@@ -276,7 +295,7 @@ TEST(ControlledGlobalStage, IsInEquilibrium) {
   stc::InterfaceHistory s;
   stage.solve(f.hat(), s);
   const auto& basis = stage.basis();
-  const Eigen::MatrixXd u = basis.loadResponses() * basis.loadHistories() + basis.responses() * stage.coordinates();
+  const Eigen::MatrixXd u = basis.loadResponses() * basis.loadHistories() + basis.responses().times(stage.coordinates());
   EXPECT_LE((f.problem.contact.B * u - s.v).norm(), 1e-12 * s.v.norm());
   const Eigen::MatrixXd lhs = f.problem.stiffness_free * u;
   const Eigen::MatrixXd rhs = f.problem.loadBlock(0, f.problem.numSteps()) + f.problem.contact.B.transpose() * s.lambda;

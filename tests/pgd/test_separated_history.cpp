@@ -18,7 +18,7 @@ TEST(SeparatedHistory, EnergySvdEqualsTheSvdOfTheFullHistory) {
   stage.observeGap(0.0);
   stage.solve(hat, s);
   const auto& basis = stage.basis();
-  const Eigen::MatrixXd u = basis.loadResponses() * basis.loadHistories() + basis.responses() * stage.coordinates();
+  const Eigen::MatrixXd u = basis.loadResponses() * basis.loadHistories() + basis.responses().times(stage.coordinates());
   // Dense: σ_i² are the eigenvalues of uᵀ A u (m × m).
   const Eigen::MatrixXd gram = u.transpose() * (stage.matrix() * u);
   const stc::linalg::SymmetricEigen dense = stc::linalg::symmetricEigen(0.5 * (gram + gram.transpose()));
