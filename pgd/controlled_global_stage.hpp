@@ -72,6 +72,9 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// iteration in time uses to solve on a sub-grid and then on the whole grid with one basis.
   void retime(const Problem& grid);
   const ResponseBasis& basis() const { return basis_; }
+  /// The basis keeps its responses' traces on `B_rows` too (ResponseBasis::keepTracesOn): before
+  /// the first direction, seed() included.
+  void keepTracesOn(const Eigen::SparseMatrix<double>& B_rows) { basis_.keepTracesOn(B_rows); }
   const Eigen::SparseMatrix<double>& matrix() const { return operator_->matrix; }
   /// c of the last solve (p × m): the displacement history is u_k = U_F g_k + X c_k.
   const Eigen::MatrixXd& coordinates() const;

@@ -129,6 +129,7 @@ void ResponseBasis::solvePending(const Eigen::VectorXd& loosening) {
         loosening.size() > 0 && !factor_.isDirect() ? factor_.solveLoosened(rhs, loosening) : solveColumns(rhs);
     sparse_solves_ += added;
     T_.append(problem_.contact.B * X);
+    if (kept_rows_.rows() > 0) kept_traces_.append(kept_rows_ * X);
     keepOrRelease(std::move(X));
   }
   pending_ = 0;
@@ -181,6 +182,23 @@ Eigen::MatrixXd ResponseBasis::liftedInterface(const Eigen::SparseMatrix<double>
 Eigen::MatrixXd ResponseBasis::displacementOn(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& c) const {
   Eigen::MatrixXd v = linalg::freshProduct(B_rows * UF_, G_);
   if (c.rows() > 0) v += liftedInterface(B_rows, c);
+  return v;
+}
+
+void ResponseBasis::keepTracesOn(const Eigen::SparseMatrix<double>& B_rows) {
+  if (Z_.cols() > 0) throw std::logic_error("ResponseBasis::keepTracesOn: before the first direction");
+  if (B_rows.cols() != problem_.numFreeDofs())
+    throw std::invalid_argument("ResponseBasis::keepTracesOn: rows of another width than the free dofs");
+  if (condensesInterface()) return;
+  kept_rows_ = B_rows;
+  kept_traces_ = ColumnBlocks(B_rows.rows());
+}
+
+Eigen::MatrixXd ResponseBasis::displacementOnKeptRows(const Eigen::MatrixXd& c) const {
+  if (!keepsTracesFor(c.rows()))
+    throw std::logic_error("ResponseBasis::displacementOnKeptRows: no traces kept on other rows for these directions");
+  Eigen::MatrixXd v = linalg::freshProduct(kept_rows_ * UF_, G_);
+  if (c.rows() > 0) kept_traces_.addProduct(c, v);
   return v;
 }
 

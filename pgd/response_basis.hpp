@@ -100,6 +100,18 @@ class ResponseBasis {
   /// history with coordinates c (p' × m, p' ≤ p): with X when every response is known, else
   /// B_rows U_F G + B_rows A⁻¹ Bᵀ (Z c) with rank(Z c) solves (linalg/low_rank_solve.hpp).
   Eigen::MatrixXd displacementOn(const Eigen::SparseMatrix<double>& B_rows, const Eigen::MatrixXd& c) const;
+  /// Keeps, beside T = B X, the traces B_rows X on other rows (e.g. the contact nodes left out of a
+  /// zone: d n_F × p, n_F × 3 × 8 bytes per direction), taken from each response as it is solved, so
+  /// that displacementOnKeptRows needs no solve, X released or not. No effect where the factor
+  /// condenses the interface (no response is solved per direction there: displacementOn solves
+  /// through the rank). Throws std::logic_error once a direction was appended, std::invalid_argument
+  /// for rows of another width than n_free.
+  void keepTracesOn(const Eigen::SparseMatrix<double>& B_rows);
+  /// Whether keepTracesOn's rows have the traces of the first p directions.
+  bool keepsTracesFor(Eigen::Index p) const { return kept_rows_.rows() > 0 && kept_traces_.cols() >= p; }
+  /// B_rows (U_F G + X c) on keepTracesOn's rows, exact, from the traces kept: no solve. Throws
+  /// std::logic_error unless keepsTracesFor(c.rows()).
+  Eigen::MatrixXd displacementOnKeptRows(const Eigen::MatrixXd& c) const;
   /// The same, of the history truncated in energy: with Θ = [G; c] and its whitened coordinates
   /// R Θ = U Σ Vᵀ (energy_factor.hpp: u = Φ̂ R Θ, Φ̂ A-orthonormal), the fewest ρ modes whose
   /// dropped energy Σ_{i>ρ} σ_i² = Σ_k ‖u_k − u_ρ,k‖²_A is at most `energy_budget`,
@@ -141,6 +153,8 @@ class ResponseBasis {
   mutable ColumnBlocks X_;     ///< behind Z_ when D gives the traces: solved by responses()
   double response_bytes_;      ///< the most X_ may hold where each direction is solved
   bool released_ = false;      ///< X_ outgrew response_bytes_ and was released: traces alone
+  Eigen::SparseMatrix<double> kept_rows_;  ///< keepTracesOn's rows, or none
+  ColumnBlocks kept_traces_;   ///< kept_rows_ X
   Eigen::MatrixXd UF_, VF_, G_, v0_;
   EnergyFactor energy_;
   mutable std::vector<SpdSolver::Workspace> workspaces_;

@@ -16,6 +16,7 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   counted.origin = inputs.origin.clocked();  // the stage's set-up on the solve's clock
   std::unique_ptr<PreparedOperators> own;
   pgd::ControlledGlobalStage stage(problem, options.stage, operatorsOr(inputs.operators, own));
+  if (B_far.rows() > 0) stage.keepTracesOn(B_far);  // the far nodes' lift with no solve (below)
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
   // The loads' responses and a warm start's directions, solved before the iteration.
   counted.origin.sparse_solves += stage.sparseSolves();
@@ -28,6 +29,9 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   // e + (τ − ε_est) ≤ τ of the reference in the true error's measure (triangle inequality). When the
   // separated displacement is asked for, the far nodes' displacement is its trace, B_F Y_ρ (Σ_ρ W_ρᵀ):
   // the same truncation, no solve of its own, and the written fields and interface agree there.
+  // Else, where each direction's response was solved, their traces on the far rows were kept as
+  // they came (ResponseBasis::keepTracesOn): B_F (U_F G + X c) exactly, with no solve, even once X
+  // was released; where the factor condensed the interface, the lift solves through the rank.
   const pgd::AfterIteration after(stage.basis(), inputs);
   const double budget = pgd::truncationBudget(result.summary, options.fas.stop.tolerance);
   if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
@@ -35,6 +39,8 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
     result.displacement = pgd::separatedDisplacement(stage.basis(), stage.coordinates(), budget);
   if (result.displacement.held)
     far_v = linalg::freshProduct(B_far * result.displacement.modes, result.displacement.time);
+  else if (stage.basis().keepsTracesFor(stage.coordinates().rows()))
+    far_v = stage.basis().displacementOnKeptRows(stage.coordinates());
   else
     far_v = stage.basis().displacementOn(B_far, stage.coordinates(), budget);
   after.finish(result.summary);

@@ -201,6 +201,36 @@ TEST(ResponseBasis, KeepsItsResponsesWhileTheyFitExactly) {
   EXPECT_FALSE(bounded.holdsResponses());
 }
 
+// The traces on other rows kept as each response is solved (the far nodes of a zone): once X is
+// released, their displacement is that of the basis keeping X, with no solve; asked for after the
+// first direction they are refused, and a factor that condenses the interface keeps none (its
+// directions solve no response).
+TEST(ResponseBasis, TracesKeptOnOtherRowsGiveTheirDisplacementWithNoSolve) {
+  const auto& f = fixture();
+  const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(f.problem);
+  const stc::CholmodFactor plain(A, "K + B^T k B"), last(A, "K + B^T k B", stc::dofsReadBy(f.problem.contact.B), 0.0);
+  const Eigen::SparseMatrix<double> B_rows = stc::restrictToNodes(f.problem.contact, {0, 1, 2, 3}).B;
+  const double eleven = 11.0 * sizeof(double) * f.problem.numFreeDofs();
+  stc::pgd::ResponseBasis kept(f.problem, plain), traced(f.problem, plain, eleven), condensed(f.problem, last);
+  traced.keepTracesOn(B_rows);
+  condensed.keepTracesOn(B_rows);
+  EXPECT_FALSE(condensed.keepsTracesFor(0));
+  std::srand(29);
+  const Eigen::MatrixXd candidates = Eigen::MatrixXd::Random(f.problem.contact.rows(), 12);
+  ASSERT_EQ(kept.append(candidates), 12);
+  ASSERT_EQ(traced.append(candidates.leftCols(5)), 5);
+  ASSERT_EQ(traced.append(candidates.rightCols(7)), 7);
+  ASSERT_FALSE(traced.holdsResponses());
+  ASSERT_TRUE(traced.keepsTracesFor(12));
+  EXPECT_THROW(kept.keepTracesOn(B_rows), std::logic_error);
+  const Eigen::MatrixXd c = Eigen::MatrixXd::Random(12, f.problem.numSteps());
+  const long solves = traced.sparseSolves();
+  const Eigen::MatrixXd v = kept.displacementOn(B_rows, c);
+  EXPECT_LE((traced.displacementOnKeptRows(c) - v).norm(), 1e-12 * v.norm());
+  EXPECT_EQ(traced.sparseSolves(), solves);
+  EXPECT_THROW(condensed.displacementOnKeptRows(c.topRows(0)), std::logic_error);
+}
+
 // Completed to span every row (from 11 directions), the basis stays k⁻¹-orthonormal, its traces are
 // D Z = B A⁻¹ Bᵀ Z (checked against solves), its energy factor covers every column, and no sparse
 // solve was made. A basis whose factor does not give D refuses.
