@@ -129,7 +129,7 @@ void ResponseBasis::solvePending(const Eigen::VectorXd& loosening) {
         loosening.size() > 0 && !factor_.isDirect() ? factor_.solveLoosened(rhs, loosening) : solveColumns(rhs);
     sparse_solves_ += added;
     T_.append(problem_.contact.B * X);
-    if (kept_rows_.rows() > 0) kept_traces_.append(kept_rows_ * X);
+    if (kept_rows_.rows() > 0) kept_traces_.append(Eigen::MatrixXd(kept_rows_ * X));
     keepOrRelease(std::move(X));
   }
   pending_ = 0;
