@@ -4,10 +4,11 @@
 
 namespace stc::pgd {
 
-AfterIteration::AfterIteration(const ResponseBasis& basis, const SolveInputs& inputs)
+AfterIteration::AfterIteration(const ResponseBasis& basis, const SolveInputs& inputs, bool lift_solves)
     : basis_(basis), phase_(inputs.phase_note, "after the last iteration: "), solves_before_(basis.sparseSolves()) {
   const bool lacks_responses = basis.condensesInterface() || !basis.holdsResponses();
-  if (lacks_responses && basis.size() > 0)
+  const bool needs_responses = inputs.spatial_modes || inputs.separated_displacement || lift_solves;
+  if (lacks_responses && needs_responses && basis.size() > 0)
     phase_.begin("the displacement from the converged history, at most " + std::to_string(basis.size()) +
                  " sparse solves");
 }

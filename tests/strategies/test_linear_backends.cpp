@@ -153,7 +153,7 @@ TEST(LinearBackendResponses, ReleasedAtOnceTheIteratesAreTheSame) {
 
 // Without the spatial modes, releasing the responses costs no solve: the lift of the nodes left out
 // of the zone (which solved through the rank of the history once X was released) reads the traces
-// kept on their rows (ResponseBasis::keepTracesOn).
+// kept on their rows (ResponseBasis::keepTracesOn), and no phase after the last iteration is told.
 TEST(LinearBackendResponses, ReleasedTheLiftOfTheNodesLeftOutSolvesNothing) {
   if (!stc::petscBackendsBuilt()) GTEST_SKIP() << "a build without PETSc: every factor condenses the interface";
   const stc::test::StrategyFixture& base = reference(3);
@@ -162,14 +162,17 @@ TEST(LinearBackendResponses, ReleasedTheLiftOfTheNodesLeftOutSolvesNothing) {
   kept.linear.backend = stc::LinearBackend::Mumps;
   stc::SolverSpec released = kept;
   released.fas_apriori.stage.response_share = 0.0;
+  std::vector<std::string> notes;
   const auto run = [&](const stc::SolverSpec& spec) {
     stc::PreparedOperators operators(spec.linearAtTolerance());
     stc::SolveInputs inputs;
     inputs.operators = &operators;
     inputs.spatial_modes = false;  // as `stcontact solve`: the modes would solve again
+    inputs.phase_note = [&](const std::string& line) { notes.push_back(line); };
     return stc::solve(stc::strategyNamed("fas-apriori"), base.problem, spec, inputs);
   };
   const stc::SolveResult a = run(kept), b = run(released);
+  EXPECT_TRUE(notes.empty()) << notes.front();  // no phase that cannot solve is announced
   ASSERT_TRUE(a.summary.converged()) << a.summary.message;
   // Solved on a zone: some nodes are left out and lifted.
   const auto zone = std::find_if(b.summary.stages.begin(), b.summary.stages.end(),
