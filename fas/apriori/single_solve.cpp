@@ -32,15 +32,15 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   // Else, where each direction's response was solved, their traces on the far rows were kept as
   // they came (ResponseBasis::keepTracesOn): B_F (U_F G + X c) exactly, with no solve, even once X
   // was released; where the factor condensed the interface, the lift solves through the rank.
-  const bool lift_solves = B_far.rows() > 0 && !stage.basis().keepsTracesFor(stage.coordinates().rows());
-  const pgd::AfterIteration after(stage.basis(), inputs, lift_solves);
+  const bool far_traces_kept = stage.basis().keepsTracesFor(stage.coordinates().rows());
+  const pgd::AfterIteration after(stage.basis(), inputs, /*lift_solves=*/B_far.rows() > 0 && !far_traces_kept);
   const double budget = pgd::truncationBudget(result.summary, options.fas.stop.tolerance);
   if (inputs.spatial_modes) result.spatial_modes = pgd::energyModes(stage.basis(), stage.coordinates());
   if (inputs.separated_displacement)
     result.displacement = pgd::separatedDisplacement(stage.basis(), stage.coordinates(), budget);
   if (result.displacement.held)
     far_v = linalg::freshProduct(B_far * result.displacement.modes, result.displacement.time);
-  else if (stage.basis().keepsTracesFor(stage.coordinates().rows()))
+  else if (far_traces_kept)
     far_v = stage.basis().displacementOnKeptRows(stage.coordinates());
   else
     far_v = stage.basis().displacementOn(B_far, stage.coordinates(), budget);
