@@ -32,15 +32,17 @@ def carried(values, coarse_xy, fine_xy, neighbours=3):
 
 
 def carried_rows(rows, coarse, fine, per_area):
-    """d n_C x m interface rows (row d i + j: component j of node i) carried from `coarse` to `fine`
-    (SolveResults); forces and directions as densities over the tributary areas when per_area."""
-    d = coarse.dimension
-    out = np.zeros((d * len(fine.tributary), rows.shape[1]))
+    """d n_C x m interface rows (row d i + j: component j of node i) carried from `coarse` to `fine`,
+    each (contact xy, SolveResult); forces and directions as densities over the tributary areas
+    when per_area."""
+    (coarse_xy, coarse_result), (fine_xy, fine_result) = coarse, fine
+    d = coarse_result.dimension
+    out = np.zeros((d * len(fine_xy), rows.shape[1]))
     for j in range(d):
-        part = rows[j::d] / coarse.tributary[:, None] if per_area else rows[j::d]
-        out[j::d] = carried(part, coarse.xy, fine.xy)
+        part = rows[j::d] / coarse_result.tributary[:, None] if per_area else rows[j::d]
+        out[j::d] = carried(part, coarse_xy, fine_xy)
         if per_area:
-            out[j::d] *= fine.tributary[:, None]
+            out[j::d] *= fine_result.tributary[:, None]
     return np.asfortranarray(out)
 
 
@@ -60,11 +62,11 @@ def main():
                                start=start, seed_basis=seed_basis)
 
     coarse, cold = solve(a.coarse), solve(a.fine)
-    coarse.xy, cold.xy = contact_xy(scene[a.coarse]), contact_xy(scene[a.fine])
+    pair = ((contact_xy(scene[a.coarse]), coarse), (contact_xy(scene[a.fine]), cold))
     start = types.SimpleNamespace(
-        interface_forces=carried_rows(coarse.interface_forces, coarse, cold, True),
-        interface_displacements=carried_rows(coarse.interface_displacements, coarse, cold, False),
-        interface_directions=carried_rows(coarse.interface_directions, coarse, cold, True))
+        interface_forces=carried_rows(coarse.interface_forces, *pair, True),
+        interface_displacements=carried_rows(coarse.interface_displacements, *pair, False),
+        interface_directions=carried_rows(coarse.interface_directions, *pair, True))
     forces = cold.interface_forces
 
     def distance(f):
