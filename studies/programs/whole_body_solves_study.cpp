@@ -15,7 +15,7 @@
 // The check: the closed nodes' normal reactions K u − f of the whole-body solve are the incremental
 // solver's λ_n to 1e-6 of the instant's largest force (exit 2 otherwise): the imposed active set
 // reproduces the solution (a wrong one is off by the forces themselves; the solves' own error, at
-// 1e-10 of ‖b‖, leaves at most 1.2e-8 on the scenes of docs/scale.md).
+// 1e-10 of ‖b‖, leaves at most 1.3e-8 on the scenes of docs/scale.md).
 // Needs a build with PETSc and a rigid obstacle whose contact rows each read one dof (a plane
 // along the axes: the half-ball's scenes); one process.
 //   whole_body_solves_study examples/scenes/hemisphere_shallow.toml --sizes 12,20,30
