@@ -26,7 +26,6 @@
 #include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/operators/rigid_body_modes.hpp"
 #include "stcontact/problem/problem.hpp"
-#include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/studies/peak_memory.hpp"
 #include "stcontact/studies/programs/study_program.hpp"
 #include "stcontact/studies/work_precision.hpp"
@@ -123,9 +122,7 @@ int main(int argc, char** argv) {
     std::vector<Row> rows;
     bool agree = true;
     for (int divisions : sizes) {
-      std::vector<std::string> sets = o.overrides;
-      sets.push_back("mesh.divisions=" + std::to_string(divisions));
-      const stc::Problem problem = stc::buildProblem(stc::readScene(o.scene, sets));
+      const stc::Problem problem = stc::study::problemAtDivisions(o, divisions);
       const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(problem);
       std::srand(17);
       const Eigen::MatrixXd B = Eigen::MatrixXd(problem.contact.B.transpose() *

@@ -17,6 +17,8 @@
 #include "stcontact/core/clock.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
+#include "stcontact/problem/problem.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/solver/solve_summary.hpp"
 
 namespace stc::study {
@@ -43,6 +45,14 @@ inline void addStudyOptions(CLI::App& app, StudyOptions& o) {
   app.add_flag("--small", o.small, "the small settings of the ctest case (mesh.arc_nodes=21, time.steps=21)");
   app.add_option("--repeats", o.repeats, "timed runs, medians over them")->capture_default_str()->check(
       CLI::PositiveNumber);
+}
+
+/// The study's scene (its --set overrides applied) at mesh.divisions `divisions`: one size of a
+/// study's --sizes.
+inline Problem problemAtDivisions(const StudyOptions& o, int divisions) {
+  std::vector<std::string> sets = o.overrides;
+  sets.push_back("mesh.divisions=" + std::to_string(divisions));
+  return buildProblem(readScene(o.scene, sets));
 }
 
 /// Parses the command line, then runs `study` (which returns 0 or 2) under the exit-status contract.

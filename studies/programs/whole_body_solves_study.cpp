@@ -34,7 +34,6 @@
 #include "stcontact/linalg/ranks.hpp"
 #include "stcontact/operators/rigid_body_modes.hpp"
 #include "stcontact/problem/problem.hpp"
-#include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/studies/programs/study_program.hpp"
 
 namespace {
@@ -48,12 +47,14 @@ struct RowDofs {
 };
 
 RowDofs rowDofs(const stc::ContactInterface& contact) {
+  if (contact.isPair())
+    throw stc::InputError("whole_body_solves_study needs a rigid obstacle, not two bodies in contact");
   RowDofs out{std::vector<int>(static_cast<size_t>(contact.rows()), -1), std::vector<double>(static_cast<size_t>(contact.rows()), 0.0)};
   for (int col = 0; col < contact.B.outerSize(); ++col)
     for (Sparse::InnerIterator it(contact.B, col); it; ++it) {
       if (it.value() == 0.0) continue;
       const auto row = static_cast<size_t>(it.row());
-      if (out.dof[row] != -1 || contact.isPair())
+      if (out.dof[row] != -1)
         throw stc::InputError("whole_body_solves_study needs a rigid obstacle whose contact rows read one dof each "
                               "(a plane along the axes); row " + std::to_string(it.row()) + " reads more");
       out.dof[row] = col;
@@ -128,7 +129,7 @@ Reduced reduce(const Sparse& K, const ActiveSet& a) {
 }
 
 struct Counts {
-  int instants = 0, contact_instants = 0, newton_iterations = 0, solves = 0;
+  int free_dofs = 0, instants = 0, contact_instants = 0, newton_iterations = 0, solves = 0;
   long long krylov_contact = 0, krylov_free = 0;
   double setup_s = 0.0, solve_s = 0.0, worst_reaction = 0.0;
 };
@@ -182,6 +183,7 @@ Counts measure(const stc::Problem& problem, double tolerance) {
   const Eigen::MatrixXd modes = stc::rigidBodyModesOfFreeDofs(problem);
   const double rtol = stc::LinearSolverOptions::kRtolPerTolerance * tolerance;
   Counts counts;
+  counts.free_dofs = problem.numFreeDofs();
   counts.instants = problem.numSteps();
   counts.newton_iterations = newtonIterations(incremental.summary.message);
   Eigen::VectorXd u = Eigen::VectorXd::Zero(problem.numFreeDofs());
@@ -198,16 +200,15 @@ Counts measure(const stc::Problem& problem, double tolerance) {
   return counts;
 }
 
-std::string table(const std::vector<std::pair<int, Counts>>& sizes, const std::vector<int>& free_dofs) {
+std::string table(const std::vector<std::pair<int, Counts>>& sizes) {
   std::ostringstream out;
   out << "| divisions | free dofs | instants | in contact | Newton its | Krylov its in contact | per instant in contact | "
          "Krylov its without contact | GAMG set-up s per solve | s per solve | reaction error |\n"
          "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
       << std::setprecision(3);
-  for (size_t i = 0; i < sizes.size(); ++i) {
-    const auto& [divisions, c] = sizes[i];
+  for (const auto& [divisions, c] : sizes) {
     const double solves = std::max(1, c.solves);
-    out << "| " << divisions << " | " << free_dofs[i] << " | " << c.instants << " | " << c.contact_instants << " | "
+    out << "| " << divisions << " | " << c.free_dofs << " | " << c.instants << " | " << c.contact_instants << " | "
         << c.newton_iterations << " | " << c.krylov_contact << " | "
         << (c.contact_instants ? double(c.krylov_contact) / c.contact_instants : 0.0) << " | " << c.krylov_free << " | "
         << c.setup_s / solves << " | " << c.solve_s / solves << " | " << c.worst_reaction << " |\n";
@@ -234,21 +235,16 @@ int main(int argc, char** argv) {
     if (stc::startRanks().size > 1) throw stc::InputError("whole_body_solves_study runs in one process");
     if (o.repeats != 1) throw stc::InputError("whole_body_solves_study counts iterations, which do not change between runs: no --repeats");
     std::vector<std::pair<int, Counts>> rows;
-    std::vector<int> free_dofs;
     bool agree = true;
     for (int divisions : sizes) {
-      std::vector<std::string> sets = o.overrides;
-      sets.push_back("mesh.divisions=" + std::to_string(divisions));
-      const stc::Problem problem = stc::buildProblem(stc::readScene(o.scene, sets));
-      const Counts c = measure(problem, tolerance);
+      const Counts c = measure(stc::study::problemAtDivisions(o, divisions), tolerance);
       std::cerr << "divisions " << divisions << ": " << c.krylov_contact << " Krylov iterations on " << c.contact_instants
                 << " instants in contact, reaction error " << c.worst_reaction << "\n";
       agree = agree && c.worst_reaction <= 1e-6;
       rows.emplace_back(divisions, c);
-      free_dofs.push_back(problem.numFreeDofs());
     }
     std::filesystem::create_directories(o.out);
-    const std::string report = table(rows, free_dofs);
+    const std::string report = table(rows);
     std::ofstream(o.out / "whole_body_solves.md") << report;
     std::cout << report;
     return agree ? 0 : 2;
