@@ -18,6 +18,7 @@
 #include "stcontact/incremental/lazy_delassus.hpp"
 #include "stcontact/incremental/newton_instant.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
+#include "stcontact/incremental/whole_body_newton.hpp"
 #include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/solver/noted_phase.hpp"
 
@@ -245,6 +246,10 @@ SolveResult solvePlaneOnEveryNode(const Problem& problem, const IncrementalOptio
 // far above the round-off of v = v_0 + W λ, far below any gap the law resolves.
 constexpr double kFarPenetration = 1e-12;
 
+// The whole-body form's noise floor relative to the linear solves' relative residual: the held
+// rows' forces are read off an equilibrium solved to rtol ‖b‖ (whole_body_newton.hpp).
+constexpr double kWholeBodyNoise = 1e3;
+
 std::string nodesText(std::size_t count, int n) {
   return std::to_string(count) + " of " + std::to_string(n) + " contact nodes";
 }
@@ -379,18 +384,42 @@ SolveResult solveCone(const Problem& problem, const IncrementalOptions& options,
   return liftedOrWhole(problem, factor, c, std::move(on_zone), start, on_every_node);
 }
 
+// The whole-body form (whole_body_newton.hpp) on `stiffness`, its instants stopping at the larger
+// of the options' tolerance and kWholeBodyNoise times the linear solves' relative residual.
+SolveResult solveWholeBody(const Problem& problem, const IncrementalOptions& options,
+                           const IterationCallback& callback, const MarchClock& start, const SpdSolver& stiffness,
+                           double linear_rtol) {
+  WholeBodyLaw law(problem, stiffness);
+  const double tolerance = std::max(options.tolerance, kWholeBodyNoise * linear_rtol);
+  const auto solve_at = [&](int k, const Eigen::VectorXd& lambda, const Eigen::VectorXd& v_previous) {
+    return law.solve(k, lambda, v_previous, tolerance, options.max_newton_iterations);
+  };
+  SolveResult result = march(problem, callback, start, solve_at, [&] { return law.solves(); });
+  std::ostringstream note;
+  note << "whole-body form: " << law.solves() << " sparse solves with dofs held, instants stopped at "
+       << tolerance << " of the force scale";
+  result.summary.remarks.push_back(note.str());
+  result.summary.composeMessage();
+  return result;
+}
+
 }  // namespace
 
 SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& options, const SolveInputs& inputs) {
   const IterationCallback& callback = inputs.callback;
   options.validate();
   const MarchClock start{Clock::now(), inputs.origin.krylov};
+  std::unique_ptr<PreparedOperators> own;
+  PreparedOperators& operators = operatorsOr(inputs.operators, own);
+  if (options.form == IncrementalForm::WholeBody) {
+    const double rtol = operators.linear().rtol > 0.0 ? operators.linear().rtol : LinearSolverOptions::kRtolFloor;
+    return solveWholeBody(problem, options, callback, start, *operators.stiffnessFree(problem), rtol);
+  }
   // The zone's dofs ordered last: its Delassus operator from the factorisation (reach_zone.hpp).
   const std::optional<std::vector<int>> zone = options.zone_within_reach ? reachZone(problem) : std::nullopt;
   const std::vector<int> zone_dofs = zone ? dofsReadBy(restrictToNodes(problem.contact, *zone).B) : std::vector<int>();
-  std::unique_ptr<PreparedOperators> own;
   const std::shared_ptr<const SpdSolver> factor =
-      operatorsOr(inputs.operators, own).stiffnessFree(problem, {zone_dofs, CholmodFactor::kTrailingWork});
+      operators.stiffnessFree(problem, {zone_dofs, CholmodFactor::kTrailingWork});
   if (problem.contact.dimension == 3 || options.cone_law)
     return solveCone(problem, options, callback, start, *factor, zone, inputs.phase_note);
   return solvePlane(problem, options, callback, start, *factor, zone);

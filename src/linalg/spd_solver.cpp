@@ -44,6 +44,13 @@ Eigen::MatrixXd SpdSolver::solveFromTrailing(const Eigen::SparseMatrix<double>&,
   throw std::invalid_argument("SpdSolver::solveFromTrailing: the " + backend() + " backend holds no condensed operator");
 }
 
+bool SpdSolver::holdsDofs() const { return false; }
+
+Eigen::VectorXd SpdSolver::solveHeld(const Eigen::VectorXd&, const std::vector<int>&, const Eigen::VectorXd&,
+                                     const ReplacedRows&) const {
+  throw std::invalid_argument("SpdSolver::solveHeld: the " + backend() + " backend does not hold dofs");
+}
+
 KrylovCounts SpdSolver::krylovCounts() const { return {}; }
 
 }  // namespace stc

@@ -95,6 +95,25 @@ class SpdSolver {
   /// block); std::invalid_argument for another.
   virtual Eigen::MatrixXd solveFromTrailing(const Eigen::SparseMatrix<double>& R, const Eigen::MatrixXd& U) const;
 
+  /// Rows of A replaced for one solveHeld (a Newton step's friction rows, which make the operator
+  /// nonsymmetric): row dofs[j] of the operator becomes rows.row(j) (size() columns, within the
+  /// pattern of A's rows of dofs[j]'s node).
+  struct ReplacedRows {
+    std::vector<int> dofs;
+    Eigen::SparseMatrix<double, Eigen::RowMajor> rows;
+  };
+  /// Whether solveHeld is at hand: a backend that solves A with some dofs held at given values
+  /// without preparing again (cg-gamg: the preconditioner prepared for A, reused). Default: never.
+  virtual bool holdsDofs() const;
+  /// The x with x_i = x0_i on the dofs of `held` (increasing, no repeats, none of them replaced) and
+  /// (A' x)_j = b_j on the others, A' being A with `replaced`'s rows, started from x0 there: the
+  /// Dirichlet problem A'_FF x_F = b_F − A'_FH x0_H, warm. An iterative backend stops at a residual of
+  /// rtol ‖b‖ (a warm start's relative residual, of the right-hand side with the held values moved
+  /// into it): CG, or GMRES when rows are replaced. std::invalid_argument for another backend or
+  /// sizes.
+  virtual Eigen::VectorXd solveHeld(const Eigen::VectorXd& b, const std::vector<int>& held, const Eigen::VectorXd& x0,
+                                    const ReplacedRows& replaced) const;
+
   virtual int size() const = 0;
   /// The backend's name as solver.linear spells it ("cholmod", "mumps", "cg-gamg").
   virtual std::string backend() const = 0;

@@ -1,9 +1,29 @@
 #pragma once
 // Options of `incremental`, the reference solver (src/incremental/incremental_solver.hpp): the
 // time-discrete problem solved instant by instant to round-off.
+#include <array>
+#include <string_view>
+#include <utility>
+
 #include "stcontact/options/option_fields.hpp"
 
 namespace stc {
+
+/// How the incremental solver solves an instant (src/incremental/incremental_solver.hpp).
+enum class IncrementalForm {
+  /// Semismooth Newton on the contact forces, with the interface condensed (the Delassus operator
+  /// from the factor or from column solves): any scene, any backend. The default.
+  Interface,
+  /// Active sets on the whole body's displacement, one warm sparse solve per iteration
+  /// (src/incremental/whole_body_newton.hpp): a rigid obstacle whose contact rows read one dof, on
+  /// a backend that holds dofs (cg-gamg).
+  WholeBody,
+};
+
+inline constexpr std::array<std::pair<std::string_view, IncrementalForm>, 2> kIncrementalForms = {{
+    {"interface", IncrementalForm::Interface},
+    {"whole-body", IncrementalForm::WholeBody},
+}};
 
 struct IncrementalOptions {
   /// On ‖F‖∞ / S_k (src/incremental/incremental_solver.hpp): a few hundred ulps, so the reference is
@@ -20,6 +40,8 @@ struct IncrementalOptions {
   /// dense W of (d |Z|)² instead of d n_C and (d n_C)². Without a prescribed translation, or when
   /// a node left out penetrates, every node is solved.
   bool zone_within_reach = true;
+  /// solver.incremental_form: "interface" or "whole-body" (IncrementalForm).
+  IncrementalForm form = IncrementalForm::Interface;
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
@@ -27,6 +49,7 @@ struct IncrementalOptions {
     visit("max_newton_iterations", o.max_newton_iterations, atLeast(1), Exposure::Library);
     visit("cone_law", o.cone_law, anyFlag(), Exposure::Library);
     visit("zone_within_reach", o.zone_within_reach, anyFlag(), Exposure::Library);
+    visit("incremental_form", o.form, Keywords<IncrementalForm>(kIncrementalForms));
   }
   void validate() const { validateFields(*this, "incremental"); }
 };

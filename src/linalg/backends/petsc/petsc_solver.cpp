@@ -158,6 +158,43 @@ class PetscSolver final : public SpdSolver {
     return X;
   }
 
+  bool holdsDofs() const override { return backend_ == LinearBackend::CgGamg; }
+
+  // A copy of A with `replaced`'s rows set and the held rows and columns zeroed (MatZeroRowsColumns:
+  // the diagonal set to A's mean diagonal, the held values moved to the right-hand side), solved
+  // from x0 by CG (GMRES, right-preconditioned, when rows were replaced) with the GAMG hierarchy of
+  // A itself as preconditioner (set up once, never again); the held entries of the result are
+  // x0's exactly (the Krylov steps may touch them by round-off of the preconditioner).
+  Eigen::VectorXd solveHeld(const Eigen::VectorXd& b, const std::vector<int>& held, const Eigen::VectorXd& x0,
+                            const ReplacedRows& replaced) const override {
+    if (backend_ != LinearBackend::CgGamg) return SpdSolver::solveHeld(b, held, x0, replaced);
+    if (b.size() != n_ || x0.size() != n_ || replaced.rows.rows() != static_cast<Eigen::Index>(replaced.dofs.size()) ||
+        (!replaced.dofs.empty() && replaced.rows.cols() != n_))
+      throw std::invalid_argument("SpdSolver::solveHeld: right-hand side, start or replaced rows of the wrong size");
+    Eigen::VectorXd x(n_);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    Mat held_matrix = nullptr;
+    Vec vb = localCopy(b), vx = localCopy(x0);
+    PetscErrorCode code = MatDuplicate(matrix_, MAT_COPY_VALUES, &held_matrix);
+    if (code == 0) code = replaceRows(held_matrix, replaced);
+    const std::vector<PetscInt> local = ownedAmong(held);  // MatZeroRowsColumns' global indices
+    if (code == 0)
+      code = MatZeroRowsColumns(held_matrix, static_cast<PetscInt>(local.size()), local.data(), mean_diagonal_, vx, vb);
+    const KSP ksp = replaced.dofs.empty() ? ksp_ : gmres();
+    if (code == 0) code = KSPSetOperators(ksp, held_matrix, matrix_);
+    if (code == 0) code = KSPSetInitialGuessNonzero(ksp, PETSC_TRUE);
+    const KrylovRun run = code == 0 ? krylovSolve(ksp, vb, vx, x.data()) : KrylovRun{code};
+    KSPSetInitialGuessNonzero(ksp, PETSC_FALSE);
+    KSPSetOperators(ksp_, matrix_, matrix_);
+    MatDestroy(&held_matrix);
+    VecDestroy(&vb);
+    VecDestroy(&vx);
+    check(run.code, "KSPSolve (held dofs)");
+    count(run);
+    for (int h : held) x[h] = x0[h];
+    return x;
+  }
+
   int size() const override { return n_; }
   std::string backend() const override { return backend_ == LinearBackend::Mumps ? "mumps" : "cg-gamg"; }
   bool isDirect() const override { return backend_ == LinearBackend::Mumps; }
@@ -177,6 +214,9 @@ class PetscSolver final : public SpdSolver {
   Mat matrix_ = nullptr;
   Mat factor_ = nullptr;  ///< mumps: MUMPS's factor of matrix_
   KSP ksp_ = nullptr;     ///< cg-gamg
+  mutable KSP gmres_ = nullptr;  ///< cg-gamg: solveHeld's when rows are replaced, made on first use
+  static constexpr PetscInt kGmresRestart = 200;  ///< no restart within the iterations a warm solve takes
+  double mean_diagonal_ = 1.0;  ///< cg-gamg: A's, the diagonal of solveHeld's held rows
   double factor_entries_ = 0.0;
   mutable std::mutex mutex_;
   mutable KrylovCounts counts_;
@@ -226,6 +266,14 @@ class PetscSolver final : public SpdSolver {
     check(KSPGetTolerances(ksp_, &rtol, nullptr, nullptr, nullptr), "KSPGetTolerances");
     rtol_ = rtol;
     check(KSPSetUp(ksp_), "KSPSetUp");  // the AMG hierarchy
+    check(KSPSetReusePreconditioner(ksp_, PETSC_TRUE), "KSPSetReusePreconditioner");  // for solveHeld's operators
+    Vec diagonal = nullptr;
+    check(MatCreateVecs(matrix_, &diagonal, nullptr), "MatCreateVecs");
+    check(MatGetDiagonal(matrix_, diagonal), "MatGetDiagonal");
+    PetscScalar sum = 0.0;
+    check(VecSum(diagonal, &sum), "VecSum");
+    check(VecDestroy(&diagonal), "VecDestroy");
+    mean_diagonal_ = sum / n_;
   }
 
   // The relative residual alone (PETSC_DEFAULT keeps the others as they are).
@@ -234,6 +282,7 @@ class PetscSolver final : public SpdSolver {
   }
 
   void destroy() {
+    KSPDestroy(&gmres_);
     KSPDestroy(&ksp_);
     MatDestroy(&factor_);
     MatDestroy(&matrix_);
@@ -289,6 +338,109 @@ class PetscSolver final : public SpdSolver {
                    comm_);
   }
 
+  // The dofs of `dofs` this rank owns.
+  std::vector<PetscInt> ownedAmong(const std::vector<int>& dofs) const {
+    std::vector<PetscInt> out;
+    for (int d : dofs)
+      if (d >= rows_.begin && d < rows_.begin + rows_.count) out.push_back(d);
+    return out;
+  }
+
+  // The rows of `replaced` this rank owns written over M's (zeroed first, their pattern kept),
+  // then assembled.
+  PetscErrorCode replaceRows(Mat M, const ReplacedRows& replaced) const {
+    if (replaced.dofs.empty()) return 0;
+    for (const MatOption option : {MAT_SYMMETRIC, MAT_SYMMETRY_ETERNAL})  // A's, no longer
+      if (const PetscErrorCode code = MatSetOption(M, option, PETSC_FALSE)) return code;
+    if (const PetscErrorCode code = MatSetOption(M, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE)) return code;
+    const std::vector<PetscInt> owned = ownedAmong(replaced.dofs);
+    if (const PetscErrorCode code = MatZeroRows(M, static_cast<PetscInt>(owned.size()), owned.data(), 0.0, nullptr, nullptr))
+      return code;
+    for (std::size_t j = 0; j < replaced.dofs.size(); ++j) {
+      const PetscInt row = replaced.dofs[j];
+      if (row < rows_.begin || row >= rows_.begin + rows_.count) continue;
+      std::vector<PetscInt> cols;
+      std::vector<PetscScalar> values;
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(replaced.rows, static_cast<Eigen::Index>(j)); it;
+           ++it) {
+        cols.push_back(static_cast<PetscInt>(it.col()));
+        values.push_back(it.value());
+      }
+      if (const PetscErrorCode code = MatSetValues(M, 1, &row, static_cast<PetscInt>(cols.size()), cols.data(),
+                                                   values.data(), INSERT_VALUES))
+        return code;
+    }
+    if (const PetscErrorCode code = MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY)) return code;
+    return MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY);
+  }
+
+  // solveHeld's Krylov solver for a nonsymmetric operator: GMRES on the unpreconditioned residual
+  // (right preconditioning), sharing ksp_'s GAMG hierarchy; made on first use.
+  KSP gmres() const {
+    if (gmres_) return gmres_;
+    PC pc = nullptr;
+    check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+    check(KSPCreate(comm_, &gmres_), "KSPCreate");
+    check(KSPSetOptionsPrefix(gmres_, "stc_held_"), "KSPSetOptionsPrefix");
+    check(KSPSetType(gmres_, KSPGMRES), "KSPSetType");
+    check(KSPGMRESSetRestart(gmres_, kGmresRestart), "KSPGMRESSetRestart");
+    check(KSPSetPCSide(gmres_, PC_RIGHT), "KSPSetPCSide");
+    check(KSPSetNormType(gmres_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+    PetscInt max_iterations = 0;
+    check(KSPGetTolerances(ksp_, nullptr, nullptr, nullptr, &max_iterations), "KSPGetTolerances");
+    check(KSPSetTolerances(gmres_, rtol_, 0.0, PETSC_DEFAULT, max_iterations), "KSPSetTolerances");
+    check(KSPSetPC(gmres_, pc), "KSPSetPC");
+    check(KSPSetReusePreconditioner(gmres_, PETSC_TRUE), "KSPSetReusePreconditioner");
+    check(KSPSetFromOptions(gmres_), "KSPSetFromOptions");
+    return gmres_;
+  }
+
+  // What one KSPSolve returned.
+  struct KrylovRun {
+    PetscErrorCode code = 0;
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    PetscInt iterations = 0;
+  };
+
+  // KSPSolve(b, x) and the whole solution gathered into `whole` (when it succeeded).
+  KrylovRun krylovSolve(KSP ksp, Vec vb, Vec vx, double* whole) const {
+    KrylovRun run;
+    run.code = KSPSolve(ksp, vb, vx);
+    KSPGetConvergedReason(ksp, &run.reason);
+    KSPGetIterationNumber(ksp, &run.iterations);
+    if (run.code == 0) {
+      const PetscScalar* values = nullptr;
+      VecGetArrayRead(vx, &values);
+      gather(values, whole);
+      VecRestoreArrayRead(vx, &values);
+    }
+    return run;
+  }
+
+  // A solve's iterations counted; a solve that did not converge is a LinearSolveFailure.
+  void count(const KrylovRun& run) const {
+    ++counts_.solves;
+    counts_.iterations += run.iterations;
+    counts_.max_iterations = std::max(counts_.max_iterations, static_cast<int>(run.iterations));
+    if (run.reason < 0)
+      throw LinearSolveFailure("the cg-gamg linear solve did not converge: " +
+                               std::string(KSPConvergedReasons[run.reason]) + " after " +
+                               std::to_string(run.iterations) +
+                               " iterations (solver.linear_max_iterations, solver.linear_rtol; or solver.linear = "
+                               "\"mumps\" or \"cholmod\")");
+  }
+
+  // This rank's rows of the whole vector `v` in a vector of their own (matrix_'s layout).
+  Vec localCopy(const Eigen::VectorXd& v) const {
+    Vec out = nullptr;
+    check(MatCreateVecs(matrix_, &out, nullptr), "MatCreateVecs");
+    PetscScalar* values = nullptr;
+    check(VecGetArray(out, &values), "VecGetArray");
+    std::copy(v.data() + rows_.begin, v.data() + rows_.begin + rows_.count, values);
+    check(VecRestoreArray(out, &values), "VecRestoreArray");
+    return out;
+  }
+
   // x = A⁻¹ b by CG to the relative residual, from x = 0.
   void solveColumn(const double* b, double* x) const {
     Vec vb = nullptr, vx = nullptr;
@@ -298,28 +450,11 @@ class PetscSolver final : public SpdSolver {
       check(VecCreateMPIWithArray(comm_, 1, rows_.count, n_, b + rows_.begin, &vb), "VecCreateMPIWithArray");
     }
     check(VecDuplicate(vb, &vx), "VecDuplicate");
-    const PetscErrorCode code = KSPSolve(ksp_, vb, vx);
-    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
-    PetscInt iterations = 0;
-    KSPGetConvergedReason(ksp_, &reason);
-    KSPGetIterationNumber(ksp_, &iterations);
-    if (code == 0) {
-      const PetscScalar* values = nullptr;
-      VecGetArrayRead(vx, &values);
-      gather(values, x);
-      VecRestoreArrayRead(vx, &values);
-    }
+    const KrylovRun run = krylovSolve(ksp_, vb, vx, x);
     VecDestroy(&vb);
     VecDestroy(&vx);
-    check(code, "KSPSolve");
-    ++counts_.solves;
-    counts_.iterations += iterations;
-    counts_.max_iterations = std::max(counts_.max_iterations, static_cast<int>(iterations));
-    if (reason < 0)
-      throw LinearSolveFailure("the cg-gamg linear solve did not converge: " + std::string(KSPConvergedReasons[reason]) +
-                               " after " + std::to_string(iterations) +
-                               " iterations (solver.linear_max_iterations, solver.linear_rtol; or solver.linear = "
-                               "\"mumps\" or \"cholmod\")");
+    check(run.code, "KSPSolve");
+    count(run);
   }
 };
 

@@ -8,7 +8,9 @@
 //   cg-gamg   KSPCG on the unpreconditioned residual, PCGAMG with the near-null space given (the
 //             rigid-body motions), set up once and reused for every right-hand side; each column
 //             stops at ‖b − A x‖ ≤ rtol ‖b‖ (LinearSolverOptions), a column that does not is a
-//             LinearSolveFailure.
+//             LinearSolveFailure; dofs held at given values (solveHeld, the incremental solver's
+//             whole-body form) by a copy of A with their rows and columns zeroed, solved by CG from
+//             the caller's start with the same hierarchy.
 // PETSc is initialised on first use (reading the environment's PETSC_OPTIONS, the experts'
 // pass-through, with the prefix "stc_" for these solvers: PETSC_OPTIONS="-stc_ksp_monitor") and
 // finalised at exit. One process: PETSC_COMM_SELF. Several ranks (src/linalg/ranks.hpp): the
