@@ -10,6 +10,8 @@
 # SOLVER=incremental in the environment solves it with the incremental solver instead (--solver, its
 # default OUT ending in _incremental): the competitor on the same engine, which on CG + GAMG (no
 # trailing block) solves for the Delassus columns of the nodes that close, three Krylov solves each.
+# FORM=whole-body with SOLVER=incremental solves it in the incremental solver's whole-body form
+# (solver.incremental_form, docs/scale.md "The whole-body form"; OUT ending in _incremental_whole_body).
 # With REFERENCE=1 the incremental reference is computed first (--reference) and the row gets the
 # true error at termination (the `error` of summary.json) beside the estimate.
 #
@@ -20,14 +22,16 @@ cd "$(dirname "$0")/.."
 ranks=${1:-2}
 divisions=${2:-44}
 solver=${SOLVER:-fas-apriori}
-suffix=$([ "$solver" = fas-apriori ] || echo "_$solver")
+form=${FORM:-interface}
+suffix=$([ "$solver" = fas-apriori ] || echo "_$solver")$([ "$form" = interface ] || echo "_${form//-/_}")
 out=${3:-results/million_dofs_d${divisions}_np${ranks}${suffix}}
 bin=${STC_BIN:-build/bin/stcontact}
 reference=--no-reference
 [ "${REFERENCE:-0}" = 1 ] && reference=--reference
 mkdir -p "$(dirname "$out")"
 mpirun -np "$ranks" --oversubscribe "$bin" solve examples/scenes/hemisphere_shallow.toml --solver "$solver" \
-  --set "mesh.divisions=$divisions" --set 'solver.linear="cg-gamg"' --tol 1e-6 "$reference" \
+  --set "mesh.divisions=$divisions" --set 'solver.linear="cg-gamg"' --set "solver.incremental_form=\"$form\"" \
+  --tol 1e-6 "$reference" \
   --set output.frames=false --threads 1 --out "$out" 2>&1 | tee "$out.log"
 "${STC_PYTHON:-python3}" - "$out" <<'EOF'
 import json, os, sys

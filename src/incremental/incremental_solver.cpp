@@ -246,9 +246,6 @@ SolveResult solvePlaneOnEveryNode(const Problem& problem, const IncrementalOptio
 // far above the round-off of v = v_0 + W λ, far below any gap the law resolves.
 constexpr double kFarPenetration = 1e-12;
 
-// The whole-body form's noise floor relative to the linear solves' relative residual: the held
-// rows' forces are read off an equilibrium solved to rtol ‖b‖ (whole_body_newton.hpp).
-constexpr double kWholeBodyNoise = 1e3;
 
 std::string nodesText(std::size_t count, int n) {
   return std::to_string(count) + " of " + std::to_string(n) + " contact nodes";
@@ -384,20 +381,16 @@ SolveResult solveCone(const Problem& problem, const IncrementalOptions& options,
   return liftedOrWhole(problem, factor, c, std::move(on_zone), start, on_every_node);
 }
 
-// The whole-body form (whole_body_newton.hpp) on `stiffness`, its instants stopping at the larger
-// of the options' tolerance and kWholeBodyNoise times the linear solves' relative residual.
+// The whole-body form (whole_body_newton.hpp) on `stiffness`.
 SolveResult solveWholeBody(const Problem& problem, const IncrementalOptions& options,
-                           const IterationCallback& callback, const MarchClock& start, const SpdSolver& stiffness,
-                           double linear_rtol) {
+                           const IterationCallback& callback, const MarchClock& start, const SpdSolver& stiffness) {
   WholeBodyLaw law(problem, stiffness);
-  const double tolerance = std::max(options.tolerance, kWholeBodyNoise * linear_rtol);
   const auto solve_at = [&](int k, const Eigen::VectorXd& lambda, const Eigen::VectorXd& v_previous) {
-    return law.solve(k, lambda, v_previous, tolerance, options.max_newton_iterations);
+    return law.solve(k, lambda, v_previous, options.tolerance, options.max_newton_iterations);
   };
   SolveResult result = march(problem, callback, start, solve_at, [&] { return law.solves(); });
   std::ostringstream note;
-  note << "whole-body form: " << law.solves() << " sparse solves with dofs held, instants stopped at "
-       << tolerance << " of the force scale";
+  note << "whole-body form: " << law.solves() << " sparse solves with dofs held";
   result.summary.remarks.push_back(note.str());
   result.summary.composeMessage();
   return result;
@@ -411,10 +404,8 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
   const MarchClock start{Clock::now(), inputs.origin.krylov};
   std::unique_ptr<PreparedOperators> own;
   PreparedOperators& operators = operatorsOr(inputs.operators, own);
-  if (options.form == IncrementalForm::WholeBody) {
-    const double rtol = operators.linear().rtol > 0.0 ? operators.linear().rtol : LinearSolverOptions::kRtolFloor;
-    return solveWholeBody(problem, options, callback, start, *operators.stiffnessFree(problem), rtol);
-  }
+  if (options.form == IncrementalForm::WholeBody)
+    return solveWholeBody(problem, options, callback, start, *operators.stiffnessFree(problem));
   // The zone's dofs ordered last: its Delassus operator from the factorisation (reach_zone.hpp).
   const std::optional<std::vector<int>> zone = options.zone_within_reach ? reachZone(problem) : std::nullopt;
   const std::vector<int> zone_dofs = zone ? dofsReadBy(restrictToNodes(problem.contact, *zone).B) : std::vector<int>();

@@ -43,6 +43,11 @@
 // active set itself is large: do not form W at all and solve each Newton step as the sparse
 // saddle-point system [K_ff  B_Aᵀ; B_A  0] (sparse LDLᵀ, or a Schur complement by CG preconditioned
 // with diag(W)).
+//
+// IncrementalOptions::form = WholeBody solves the same law on the displacement of the whole body
+// instead, one warm solve with the contact dofs held per active-set iteration and no column of W
+// (whole_body_newton.hpp): for a rigid obstacle whose normal is an axis, on a backend that holds
+// dofs (cg-gamg), where the Delassus columns are solves.
 #include "stcontact/options/incremental_options.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/solver/solve_inputs.hpp"

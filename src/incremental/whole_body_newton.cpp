@@ -157,11 +157,15 @@ Eigen::VectorXd WholeBodyLaw::solveActiveSet(const Evaluation& e, const Eigen::V
   replaced.rows.setFromTriplets(slip_rows.begin(), slip_rows.end());
   u_ = stiffness_.solveHeld(b, held, x0, replaced);
   ++solves_;
-  const Eigen::VectorXd residual = K_ * u_ - f;
+  Eigen::VectorXd residual = K_ * u_ - f;
+  const Eigen::VectorXd forces = residual;
+  for (int dof : held) residual[dof] = 0.0;
+  for (int dof : replaced.dofs) residual[dof] = 0.0;
+  noise_ = residual.norm();  // the equilibrium's residual on the rows solved for
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(rows);
   for (int r = 0; r < rows; ++r)
     if (e.piece[static_cast<std::size_t>(r / d_)] != ContactState::Open)
-      lambda[r] = residual[dof_[static_cast<std::size_t>(r)]] / coefficient_[r];
+      lambda[r] = forces[dof_[static_cast<std::size_t>(r)]] / coefficient_[r];
   return lambda;
 }
 
@@ -189,7 +193,7 @@ InstantOutcome WholeBodyLaw::solve(int k, const Eigen::VectorXd& lambda_previous
       out.failure = "non-finite residual";
       break;
     }
-    if (r <= tolerance * scale) {
+    if (r <= std::max(tolerance * scale, kNoiseMargin * noise_)) {
       out.converged = true;
       before_ = {u_previous, lambda_previous};
       return out;

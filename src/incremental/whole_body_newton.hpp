@@ -24,12 +24,13 @@
 // a held row is exact in one solve). The instant ends at ‖F‖∞ ≤ tolerance · S_k,
 //   S_k = max(‖λ‖∞, ρ_max ‖v − v(t_{k−1})‖∞)
 // (the interface form's scale with the instant's motion for the free one, which this form never
-// solves).
+// solves), or where F reaches the noise of the solves (kNoiseMargin below): the forces are read off
+// an equilibrium solved to a relative residual, so they are as exact as the solves and no more.
 //
 // Cost: one solve per iteration, each warm (about two per instant in contact on the presses); the
 // backend's preconditioner of K_ff reused for every held set (cg-gamg), so no set-up after the
-// first. The forces are as exact as the solves: a relative residual rtol leaves an error of about
-// rtol ‖b‖ in the closed rows' forces, so the tolerance must stay above it.
+// first. Each instant starts from the linear extrapolation of the two before (u and λ, hence the
+// predicted active set).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <string>
@@ -58,6 +59,11 @@ class WholeBodyLaw {
   InstantOutcome solve(int k, const Eigen::VectorXd& lambda_previous, const Eigen::VectorXd& v_previous,
                        double tolerance, int max_iterations);
   int solves() const { return solves_; }
+
+  /// The instant's stop above the solves' noise: ‖F‖∞ ≤ max(tolerance S_k, kNoiseMargin ν), ν the
+  /// last solve's equilibrium residual ‖(K_ff u − f)_F‖₂ on the rows it solved (F: neither held nor
+  /// replaced), which bounds the error of the forces read off the held rows to about ν.
+  static constexpr double kNoiseMargin = 4.0;
 
  private:
   struct Evaluation {
@@ -91,6 +97,7 @@ class WholeBodyLaw {
     Eigen::VectorXd u, lambda;
   } before_;  ///< instant k − 2's, for the prediction
   int solves_ = 0;
+  double noise_ = 0.0;  ///< ν of the last solve
 };
 
 }  // namespace stc
