@@ -173,6 +173,7 @@ class PetscSolver final : public SpdSolver {
       throw std::invalid_argument("SpdSolver::solveHeld: right-hand side, start or replaced rows of the wrong size");
     Eigen::VectorXd x(n_);
     const std::lock_guard<std::mutex> lock(mutex_);
+    const KSP ksp = replaced.dofs.empty() ? ksp_ : gmres();  // before any object that a throw would leak
     Mat held_matrix = nullptr;
     Vec vb = localCopy(b), vx = localCopy(x0);
     PetscErrorCode code = MatDuplicate(matrix_, MAT_COPY_VALUES, &held_matrix);
@@ -180,7 +181,6 @@ class PetscSolver final : public SpdSolver {
     const std::vector<PetscInt> local = ownedAmong(held);  // MatZeroRowsColumns' global indices
     if (code == 0)
       code = MatZeroRowsColumns(held_matrix, static_cast<PetscInt>(local.size()), local.data(), mean_diagonal_, vx, vb);
-    const KSP ksp = replaced.dofs.empty() ? ksp_ : gmres();
     if (code == 0) code = KSPSetOperators(ksp, held_matrix, matrix_);
     if (code == 0) code = KSPSetInitialGuessNonzero(ksp, PETSC_TRUE);
     const KrylovRun run = code == 0 ? krylovSolve(ksp, vb, vx, x.data()) : KrylovRun{code};
