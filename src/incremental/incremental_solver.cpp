@@ -246,7 +246,6 @@ SolveResult solvePlaneOnEveryNode(const Problem& problem, const IncrementalOptio
 // far above the round-off of v = v_0 + W λ, far below any gap the law resolves.
 constexpr double kFarPenetration = 1e-12;
 
-
 std::string nodesText(std::size_t count, int n) {
   return std::to_string(count) + " of " + std::to_string(n) + " contact nodes";
 }

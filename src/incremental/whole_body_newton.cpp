@@ -8,17 +8,8 @@
 
 namespace stc {
 
-namespace {
-
-// The free dof each row of B reads and its coefficient b_r (explicit zeros skipped); dof −1 for a
-// row that reads none, −2 for one that reads several.
-struct RowDofs {
-  std::vector<int> dof;
-  Eigen::VectorXd coefficient;
-};
-
-RowDofs rowDofs(const Eigen::SparseMatrix<double>& B) {
-  RowDofs out{std::vector<int>(static_cast<std::size_t>(B.rows()), -1), Eigen::VectorXd::Zero(B.rows())};
+ContactRowDofs contactRowDofs(const Eigen::SparseMatrix<double>& B) {
+  ContactRowDofs out{std::vector<int>(static_cast<std::size_t>(B.rows()), -1), Eigen::VectorXd::Zero(B.rows())};
   for (Eigen::Index col = 0; col < B.outerSize(); ++col)
     for (Eigen::SparseMatrix<double>::InnerIterator it(B, col); it; ++it) {
       if (it.value() == 0.0) continue;
@@ -29,15 +20,13 @@ RowDofs rowDofs(const Eigen::SparseMatrix<double>& B) {
   return out;
 }
 
-}  // namespace
-
 std::string wholeBodyRefusal(const Problem& problem, const SpdSolver& stiffness) {
   const ContactInterface& c = problem.contact;
   if (!stiffness.holdsDofs())
     return "the " + stiffness.backend() + " backend cannot hold dofs (solver.linear = \"cg-gamg\" can)";
   if (c.isPair()) return "it needs a rigid obstacle, not two bodies in contact";
   if (!c.held_rows.empty()) return "it does not take held tangential rows (a symmetry plane at the contact)";
-  const RowDofs rows = rowDofs(c.B);
+  const ContactRowDofs rows = contactRowDofs(c.B);
   std::vector<char> read(static_cast<std::size_t>(c.B.cols()), 0);
   for (std::size_t r = 0; r < rows.dof.size(); ++r)
     if (rows.dof[r] < 0 || read[static_cast<std::size_t>(rows.dof[r])]++)
@@ -51,7 +40,7 @@ WholeBodyLaw::WholeBodyLaw(const Problem& problem, const SpdSolver& stiffness)
   if (const std::string why = wholeBodyRefusal(problem, stiffness); !why.empty())
     throw InputError("solver.incremental_form = \"whole-body\": " + why);
   K_ = problem.stiffness_free.selfadjointView<Eigen::Lower>();
-  RowDofs rows = rowDofs(contact_.B);
+  ContactRowDofs rows = contactRowDofs(contact_.B);
   dof_ = std::move(rows.dof);
   coefficient_ = std::move(rows.coefficient);
   const int nc = contact_.size();
@@ -158,14 +147,13 @@ Eigen::VectorXd WholeBodyLaw::solveActiveSet(const Evaluation& e, const Eigen::V
   u_ = stiffness_.solveHeld(b, held, x0, replaced);
   ++solves_;
   Eigen::VectorXd residual = K_ * u_ - f;
-  const Eigen::VectorXd forces = residual;
-  for (int dof : held) residual[dof] = 0.0;
-  for (int dof : replaced.dofs) residual[dof] = 0.0;
-  noise_ = residual.norm();  // the equilibrium's residual on the rows solved for
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(rows);
   for (int r = 0; r < rows; ++r)
     if (e.piece[static_cast<std::size_t>(r / d_)] != ContactState::Open)
-      lambda[r] = forces[dof_[static_cast<std::size_t>(r)]] / coefficient_[r];
+      lambda[r] = residual[dof_[static_cast<std::size_t>(r)]] / coefficient_[r];
+  for (int dof : held) residual[dof] = 0.0;
+  for (int dof : replaced.dofs) residual[dof] = 0.0;
+  noise_ = residual.norm();  // the equilibrium's residual on the rows solved for
   return lambda;
 }
 

@@ -43,6 +43,14 @@
 
 namespace stc {
 
+/// The free dof each row of B reads and its coefficient b_r (explicit zeros skipped): dof −1 for a
+/// row that reads none (a held row), −2 for a row that reads several.
+struct ContactRowDofs {
+  std::vector<int> dof;
+  Eigen::VectorXd coefficient;
+};
+ContactRowDofs contactRowDofs(const Eigen::SparseMatrix<double>& B);
+
 /// Why `problem` cannot be solved in the whole-body form on `stiffness` (empty when it can): a pair
 /// of bodies, held rows, a contact row reading other than one free dof (or two rows one dof), a
 /// backend that does not hold dofs.

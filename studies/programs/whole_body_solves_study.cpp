@@ -31,6 +31,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/linalg/prepare_spd_solver.hpp"
+#include "stcontact/incremental/whole_body_newton.hpp"
 #include "stcontact/linalg/ranks.hpp"
 #include "stcontact/operators/rigid_body_modes.hpp"
 #include "stcontact/problem/problem.hpp"
@@ -41,25 +42,16 @@ namespace {
 using Sparse = Eigen::SparseMatrix<double>;
 
 // The free dof each contact row reads and its coefficient (−1 for a held row, which reads none).
-struct RowDofs {
-  std::vector<int> dof;
-  std::vector<double> coefficient;
-};
+using RowDofs = stc::ContactRowDofs;
 
 RowDofs rowDofs(const stc::ContactInterface& contact) {
   if (contact.isPair())
     throw stc::InputError("whole_body_solves_study needs a rigid obstacle, not two bodies in contact");
-  RowDofs out{std::vector<int>(static_cast<size_t>(contact.rows()), -1), std::vector<double>(static_cast<size_t>(contact.rows()), 0.0)};
-  for (int col = 0; col < contact.B.outerSize(); ++col)
-    for (Sparse::InnerIterator it(contact.B, col); it; ++it) {
-      if (it.value() == 0.0) continue;
-      const auto row = static_cast<size_t>(it.row());
-      if (out.dof[row] != -1)
-        throw stc::InputError("whole_body_solves_study needs a rigid obstacle whose contact rows read one dof each "
-                              "(a plane along the axes); row " + std::to_string(it.row()) + " reads more");
-      out.dof[row] = col;
-      out.coefficient[row] = it.value();
-    }
+  RowDofs out = stc::contactRowDofs(contact.B);
+  for (std::size_t row = 0; row < out.dof.size(); ++row)
+    if (out.dof[row] == -2)
+      throw stc::InputError("whole_body_solves_study needs a rigid obstacle whose contact rows read one dof each "
+                            "(a plane along the axes); row " + std::to_string(row) + " reads more");
   return out;
 }
 
@@ -83,7 +75,7 @@ ActiveSet activeSetAt(const stc::Problem& problem, const RowDofs& rows, const st
     const bool sticks = solution.lambda.block(rn + 1, k, d - 1, 1).norm() < contact.friction * normal * (1.0 - 1e-9);
     for (int r = rn; r < rn + d; ++r) {
       const int dof = rows.dof[static_cast<size_t>(r)];
-      const double c = rows.coefficient[static_cast<size_t>(r)];
+      const double c = rows.coefficient[r];
       if (dof < 0) continue;
       if (r == rn || sticks) {
         a.held[static_cast<size_t>(dof)] = 1;
@@ -165,7 +157,7 @@ double reactionError(const stc::Problem& problem, const RowDofs& rows, const Act
   const double scale = solution.lambda.col(k).lpNorm<Eigen::Infinity>();
   double worst = 0.0;
   for (int rn : a.closed_normal_rows) {
-    const double r = reaction[rows.dof[static_cast<size_t>(rn)]] / rows.coefficient[static_cast<size_t>(rn)];
+    const double r = reaction[rows.dof[static_cast<size_t>(rn)]] / rows.coefficient[rn];
     worst = std::max(worst, std::abs(r - solution.lambda(rn, k)) / scale);
   }
   return worst;
