@@ -10,8 +10,9 @@
 # SOLVER=incremental in the environment solves it with the incremental solver instead (--solver, its
 # default OUT ending in _incremental): the competitor on the same engine, which on CG + GAMG (no
 # trailing block) solves for the Delassus columns of the nodes that close, three Krylov solves each.
-# FORM=whole-body with SOLVER=incremental solves it in the incremental solver's whole-body form
-# (solver.incremental_form, docs/scale.md "The whole-body form"; OUT ending in _incremental_whole_body).
+# FORM (solver.incremental_form, docs/scale.md "The whole-body form") with SOLVER=incremental: "auto"
+# by default (the whole-body form on this scene past divisions 12), "interface" or "whole-body" (OUT
+# ending in _incremental_interface or _incremental_whole_body).
 # With REFERENCE=1 the incremental reference is computed first (--reference) and the row gets the
 # true error at termination (the `error` of summary.json) beside the estimate.
 #
@@ -22,8 +23,8 @@ cd "$(dirname "$0")/.."
 ranks=${1:-2}
 divisions=${2:-44}
 solver=${SOLVER:-fas-apriori}
-form=${FORM:-interface}
-suffix=$([ "$solver" = fas-apriori ] || echo "_$solver")$([ "$form" = interface ] || echo "_${form//-/_}")
+form=${FORM:-auto}
+suffix=$([ "$solver" = fas-apriori ] || echo "_$solver")$([ "$form" = auto ] || echo "_${form//-/_}")
 out=${3:-results/million_dofs_d${divisions}_np${ranks}${suffix}}
 bin=${STC_BIN:-build/bin/stcontact}
 reference=--no-reference

@@ -15,6 +15,7 @@
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/cone_newton.hpp"
+#include "stcontact/incremental/form_choice.hpp"
 #include "stcontact/incremental/lazy_delassus.hpp"
 #include "stcontact/incremental/newton_instant.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
@@ -395,6 +396,14 @@ SolveResult solveWholeBody(const Problem& problem, const IncrementalOptions& opt
   return result;
 }
 
+// `result` with `remark` among its remarks (none when empty).
+SolveResult remarked(SolveResult result, const std::string& remark) {
+  if (remark.empty()) return result;
+  result.summary.remarks.push_back(remark);
+  result.summary.composeMessage();
+  return result;
+}
+
 }  // namespace
 
 SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& options, const SolveInputs& inputs) {
@@ -410,9 +419,12 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
   const std::vector<int> zone_dofs = zone ? dofsReadBy(restrictToNodes(problem.contact, *zone).B) : std::vector<int>();
   const std::shared_ptr<const SpdSolver> factor =
       operators.stiffnessFree(problem, {zone_dofs, CholmodFactor::kTrailingWork});
+  const FormChoice choice = chooseIncrementalForm(options.form, problem, *factor, zone);
+  if (choice.form == IncrementalForm::WholeBody)
+    return remarked(solveWholeBody(problem, options, callback, start, *factor), choice.reason);
   if (problem.contact.dimension == 3 || options.cone_law)
-    return solveCone(problem, options, callback, start, *factor, zone, inputs.phase_note);
-  return solvePlane(problem, options, callback, start, *factor, zone);
+    return remarked(solveCone(problem, options, callback, start, *factor, zone, inputs.phase_note), choice.reason);
+  return remarked(solvePlane(problem, options, callback, start, *factor, zone), choice.reason);
 }
 
 }  // namespace stc

@@ -11,8 +11,13 @@ namespace stc {
 
 /// How the incremental solver solves an instant (src/incremental/incremental_solver.hpp).
 enum class IncrementalForm {
+  /// The form expected to make fewer sparse solves on this scene and backend
+  /// (src/incremental/form_choice.hpp): the interface form but on a backend that holds dofs
+  /// (cg-gamg), where the whole-body form is chosen when the instants are fewer than the interface
+  /// form's column solves. The default.
+  Auto,
   /// Semismooth Newton on the contact forces, with the interface condensed (the Delassus operator
-  /// from the factor or from column solves): any scene, any backend. The default.
+  /// from the factor or from column solves): any scene, any backend.
   Interface,
   /// Active sets on the whole body's displacement, one warm sparse solve per iteration
   /// (src/incremental/whole_body_newton.hpp): a rigid obstacle whose contact rows read one dof, on
@@ -20,7 +25,8 @@ enum class IncrementalForm {
   WholeBody,
 };
 
-inline constexpr std::array<std::pair<std::string_view, IncrementalForm>, 2> kIncrementalForms = {{
+inline constexpr std::array<std::pair<std::string_view, IncrementalForm>, 3> kIncrementalForms = {{
+    {"auto", IncrementalForm::Auto},
     {"interface", IncrementalForm::Interface},
     {"whole-body", IncrementalForm::WholeBody},
 }};
@@ -40,8 +46,8 @@ struct IncrementalOptions {
   /// dense W of (d |Z|)² instead of d n_C and (d n_C)². Without a prescribed translation, or when
   /// a node left out penetrates, every node is solved.
   bool zone_within_reach = true;
-  /// solver.incremental_form: "interface" or "whole-body" (IncrementalForm).
-  IncrementalForm form = IncrementalForm::Interface;
+  /// solver.incremental_form: "auto", "interface" or "whole-body" (IncrementalForm).
+  IncrementalForm form = IncrementalForm::Auto;
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {

@@ -1,0 +1,110 @@
+// solver.incremental_form = "auto" (src/incremental/form_choice.hpp): the whole-body form on a
+// backend that holds dofs where the instants are fewer than the interface form's column solves
+// (m < d |Z|), the interface form elsewhere; the choice and its reason in the summary, and the run
+// solved in the form chosen.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "fixtures/hemisphere_scene.hpp"
+#include "stcontact/incremental/form_choice.hpp"
+#include "stcontact/incremental/incremental_solver.hpp"
+#include "stcontact/incremental/reach_zone.hpp"
+#include "stcontact/operators/prepared_operators.hpp"
+
+namespace {
+
+using testing::HasSubstr;
+using testing::IsEmpty;
+using testing::Not;
+
+stc::LinearSolverOptions on(stc::LinearBackend backend) {
+  stc::LinearSolverOptions linear;
+  linear.backend = backend;
+  linear.rtol = 1e-12;
+  return linear;
+}
+
+std::vector<int> firstNodes(int count) {
+  std::vector<int> zone(static_cast<std::size_t>(count));
+  std::iota(zone.begin(), zone.end(), 0);
+  return zone;
+}
+
+}  // namespace
+
+TEST(IncrementalFormChoice, IsTheWholeBodyFormExactlyWhereTheInstantsAreFewerThanTheColumnSolves) {
+  if (!stc::petscBackendsBuilt()) GTEST_SKIP() << "cg-gamg needs PETSc";
+  const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(3, 21));
+  stc::PreparedOperators operators(on(stc::LinearBackend::CgGamg));
+  const stc::SpdSolver& stiffness = *operators.stiffnessFree(problem);
+  // d |Z| = 3 · 7 = 21 column solves: not more than the 21 instants; 3 · 8 = 24 are.
+  const stc::FormChoice level = chooseIncrementalForm(stc::IncrementalForm::Auto, problem, stiffness, firstNodes(7));
+  EXPECT_EQ(level.form, stc::IncrementalForm::Interface);
+  EXPECT_THAT(level.reason, HasSubstr("interface; 21 instants"));
+  EXPECT_THAT(level.reason, HasSubstr("against 21 column solves for the 7 nodes within reach"));
+  const stc::FormChoice more = chooseIncrementalForm(stc::IncrementalForm::Auto, problem, stiffness, firstNodes(8));
+  EXPECT_EQ(more.form, stc::IncrementalForm::WholeBody);
+  EXPECT_THAT(more.reason, HasSubstr("incremental form (auto): whole-body; 21 instants"));
+  // No zone: nothing says what the interface form would pay.
+  const stc::FormChoice none = chooseIncrementalForm(stc::IncrementalForm::Auto, problem, stiffness, std::nullopt);
+  EXPECT_EQ(none.form, stc::IncrementalForm::Interface);
+  EXPECT_THAT(none.reason, HasSubstr("no zone within reach"));
+  // A form asked for is the form run, with no reason.
+  const stc::FormChoice asked = chooseIncrementalForm(stc::IncrementalForm::Interface, problem, stiffness, firstNodes(8));
+  EXPECT_EQ(asked.form, stc::IncrementalForm::Interface);
+  EXPECT_THAT(asked.reason, IsEmpty());
+}
+
+TEST(IncrementalFormChoice, IsTheInterfaceFormWhereTheWholeBodyFormCannotRun) {
+  const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(3, 5));
+  stc::PreparedOperators cholmod(on(stc::LinearBackend::Cholmod));
+  const stc::FormChoice direct =
+      chooseIncrementalForm(stc::IncrementalForm::Auto, problem, *cholmod.stiffnessFree(problem), firstNodes(30));
+  EXPECT_EQ(direct.form, stc::IncrementalForm::Interface);
+  EXPECT_THAT(direct.reason, IsEmpty()) << "the only form on a backend that cannot hold dofs: nothing weighed";
+  if (!stc::petscBackendsBuilt()) GTEST_SKIP() << "cg-gamg needs PETSc";
+  stc::Scene tilted = stc::test::hemisphereScene(3, 5);
+  tilted.obstacle.normal = Eigen::Vector3d(0.0, 0.6, 0.8);  // rows that read several dofs
+  tilted.obstacle.point = -1.01 * tilted.obstacle.normal;
+  const stc::Problem slanted = stc::buildProblem(tilted);
+  stc::PreparedOperators gamg(on(stc::LinearBackend::CgGamg));
+  const stc::FormChoice refused =
+      chooseIncrementalForm(stc::IncrementalForm::Auto, slanted, *gamg.stiffnessFree(slanted), firstNodes(30));
+  EXPECT_EQ(refused.form, stc::IncrementalForm::Interface);
+  EXPECT_THAT(refused.reason, HasSubstr("the whole-body form cannot run: contact row"));
+}
+
+TEST(IncrementalFormChoice, AutoSolvesInTheFormItChoseAndSaysWhy) {
+  if (!stc::petscBackendsBuilt()) GTEST_SKIP() << "cg-gamg needs PETSc";
+  const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(4, 21));
+  const std::optional<std::vector<int>> zone = stc::reachZone(problem);
+  ASSERT_TRUE(zone.has_value());
+  ASSERT_GT(3 * static_cast<int>(zone->size()), problem.numSteps()) << "the scene must favour the whole-body form";
+  stc::PreparedOperators operators(on(stc::LinearBackend::CgGamg));
+  const stc::SolveResult chosen = stc::solveIncremental(problem, {}, {.operators = &operators});
+  ASSERT_EQ(chosen.summary.termination, stc::Termination::Converged) << chosen.summary.message;
+  EXPECT_THAT(chosen.summary.message, HasSubstr("incremental form (auto): whole-body"));
+  EXPECT_THAT(chosen.summary.message, HasSubstr("whole-body form: "));
+  // The same instants in the interface form, asked for, on the same backend: the same solution.
+  stc::IncrementalOptions interface;
+  interface.form = stc::IncrementalForm::Interface;
+  stc::PreparedOperators again(on(stc::LinearBackend::CgGamg));
+  const stc::SolveResult asked = stc::solveIncremental(problem, interface, {.operators = &again});
+  EXPECT_THAT(asked.summary.message, Not(HasSubstr("incremental form (auto)")));
+  EXPECT_THAT(asked.summary.message, Not(HasSubstr("whole-body form: ")));
+  // The forms agree to the noise of solves at a relative residual of 1e-12 (test_whole_body.cpp).
+  const double scale = asked.interface.lambda.cwiseAbs().maxCoeff();
+  EXPECT_LE((chosen.interface.lambda - asked.interface.lambda).cwiseAbs().maxCoeff(), 1e-7 * scale);
+}
+
+TEST(IncrementalFormChoice, AutoOnCholmodIsTheInterfaceFormBitForBit) {
+  const stc::Problem problem = stc::buildProblem(stc::test::hemisphereScene(3, 7));
+  stc::IncrementalOptions interface;
+  interface.form = stc::IncrementalForm::Interface;
+  const stc::SolveResult chosen = stc::solveIncremental(problem);
+  const stc::SolveResult asked = stc::solveIncremental(problem, interface);
+  EXPECT_EQ(chosen.interface.lambda, asked.interface.lambda);
+  EXPECT_EQ(chosen.summary.message, asked.summary.message);
+}
