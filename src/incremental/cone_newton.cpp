@@ -4,14 +4,12 @@
 #include <algorithm>
 
 #include "stcontact/contact/contact_interface.hpp"
+#include "stcontact/incremental/cone_piece.hpp"
 #include "stcontact/incremental/newton_instant.hpp"
 
 namespace stc {
 namespace {
 
-// The tangential parts of a node (d − 1 = 1 or 2 entries), on the stack: nodeLaw runs for every
-// node at every evaluation of the march.
-using Tangent = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2, 1>;
 using TangentMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 2, 2>;
 
 }  // namespace
@@ -56,33 +54,26 @@ void ConeLaw::nodeLaw(int i, const Eigen::VectorXd& lambda, Evaluation& e) const
   auto A = e.A.middleCols(n, d_), C = e.C.middleCols(n, d_);
   A.setZero();
   C.setZero();
-  const double g = contact_.initial_gap[i] + e.v[n];
-  const double hat_n = lambda[n] - rho_n_[i] * g;
-  if (!(hat_n > 0.0)) {  // open (also an uncomputed node with g ≥ 0: ρ_n = 0, λ = 0)
-    e.F.segment(n, d_) = lambda.segment(n, d_);
+  const Tangent s = e.v.segment(t, dt) - v_previous_.segment(t, dt);
+  const ConePiece p = conePiece(lambda[n], lambda.segment(t, dt), contact_.initial_gap[i] + e.v[n], s, rho_n_[i],
+                                rho_t_[i], contact_.friction);
+  e.F[n] = p.F_n;
+  e.F.segment(t, dt) = p.F_t;
+  if (p.state == ContactState::Open) {
     A.setIdentity();
     return;
   }
   e.closed[i] = true;
-  const Tangent s = e.v.segment(t, dt) - v_previous_.segment(t, dt);
-  const Tangent lt = lambda.segment(t, dt);
-  const Tangent xi = lt - rho_t_[i] * s;
-  const double radius = contact_.friction * hat_n, norm = xi.norm();
-  e.F[n] = rho_n_[i] * g;
   C(0, 0) = rho_n_[i];
-  if (norm <= radius) {  // stick
-    e.F.segment(t, dt) = rho_t_[i] * s;
+  if (p.state == ContactState::Stick) {
     C.bottomRightCorner(dt, dt).diagonal().setConstant(rho_t_[i]);
     return;
   }
-  const Tangent unit = xi / norm;
-  const double q = radius / norm;
-  const TangentMatrix P = TangentMatrix::Identity(dt, dt) - unit * unit.transpose();
-  e.F.segment(t, dt) = lt - radius * unit;
-  A.bottomRightCorner(dt, dt) = TangentMatrix::Identity(dt, dt) - q * P;
-  A.bottomLeftCorner(dt, 1) = -contact_.friction * unit;
-  C.bottomLeftCorner(dt, 1) = contact_.friction * rho_n_[i] * unit;
-  C.bottomRightCorner(dt, dt) = q * rho_t_[i] * P;
+  const TangentMatrix P = TangentMatrix::Identity(dt, dt) - p.unit * p.unit.transpose();
+  A.bottomRightCorner(dt, dt) = TangentMatrix::Identity(dt, dt) - p.q * P;
+  A.bottomLeftCorner(dt, 1) = -contact_.friction * p.unit;
+  C.bottomLeftCorner(dt, 1) = contact_.friction * rho_n_[i] * p.unit;
+  C.bottomRightCorner(dt, dt) = p.q * rho_t_[i] * P;
 }
 
 ConeLaw::Evaluation ConeLaw::evaluate(const Eigen::VectorXd& lambda) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/incremental/cone_piece.hpp"
 
 namespace stc {
 
@@ -58,7 +59,7 @@ WholeBodyLaw::WholeBodyLaw(const Problem& problem, const SpdSolver& stiffness)
   u_ = Eigen::VectorXd::Zero(problem.numFreeDofs());
 }
 
-// The Alart–Curnier residual of cone_newton.hpp node by node, with this form's ρ.
+// The Alart–Curnier residual of cone_newton.hpp node by node (cone_piece.hpp), with this form's ρ.
 WholeBodyLaw::Evaluation WholeBodyLaw::evaluate(const Eigen::VectorXd& lambda, const Eigen::VectorXd& v,
                                                 const Eigen::VectorXd& v_previous) const {
   const int nc = contact_.size(), dt = d_ - 1;
@@ -66,25 +67,15 @@ WholeBodyLaw::Evaluation WholeBodyLaw::evaluate(const Eigen::VectorXd& lambda, c
                Eigen::MatrixXd::Zero(dt, nc), Eigen::VectorXd::Zero(nc)};
   for (int i = 0; i < nc; ++i) {
     const int n = d_ * i, t = n + 1;
-    ContactState& piece = e.piece[static_cast<std::size_t>(i)];
-    const double g = contact_.initial_gap[i] + v[n], hat_n = lambda[n] - rho_n_[i] * g;
-    if (!(hat_n > 0.0)) {
-      piece = ContactState::Open;
-      e.F.segment(n, d_) = lambda.segment(n, d_);
-      continue;
-    }
-    const Eigen::VectorXd s = v.segment(t, dt) - v_previous.segment(t, dt);
-    const Eigen::VectorXd xi = lambda.segment(t, dt) - rho_t_[i] * s;
-    const double radius = contact_.friction * hat_n, norm = xi.norm();
-    e.F[n] = rho_n_[i] * g;
-    if (norm <= radius) {
-      piece = ContactState::Stick;
-      e.F.segment(t, dt) = rho_t_[i] * s;
-    } else {
-      piece = ContactState::Slip;
-      e.unit.col(i) = xi / norm;
-      e.q[i] = radius / norm;
-      e.F.segment(t, dt) = lambda.segment(t, dt) - radius * e.unit.col(i);
+    const Tangent s = v.segment(t, dt) - v_previous.segment(t, dt);
+    const ConePiece p = conePiece(lambda[n], lambda.segment(t, dt), contact_.initial_gap[i] + v[n], s, rho_n_[i],
+                                  rho_t_[i], contact_.friction);
+    e.piece[static_cast<std::size_t>(i)] = p.state;
+    e.F[n] = p.F_n;
+    e.F.segment(t, dt) = p.F_t;
+    if (p.state == ContactState::Slip) {
+      e.unit.col(i) = p.unit;
+      e.q[i] = p.q;
     }
   }
   return e;
