@@ -412,19 +412,19 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
   const MarchClock start{Clock::now(), inputs.origin.krylov};
   std::unique_ptr<PreparedOperators> own;
   PreparedOperators& operators = operatorsOr(inputs.operators, own);
-  if (options.form == IncrementalForm::WholeBody)
-    return solveWholeBody(problem, options, callback, start, *operators.stiffnessFree(problem));
   // The zone's dofs ordered last: its Delassus operator from the factorisation (reach_zone.hpp).
   const std::optional<std::vector<int>> zone = options.zone_within_reach ? reachZone(problem) : std::nullopt;
   const std::vector<int> zone_dofs = zone ? dofsReadBy(restrictToNodes(problem.contact, *zone).B) : std::vector<int>();
   const std::shared_ptr<const SpdSolver> factor =
       operators.stiffnessFree(problem, {zone_dofs, CholmodFactor::kTrailingWork});
   const FormChoice choice = chooseIncrementalForm(options.form, problem, *factor, zone);
-  if (choice.form == IncrementalForm::WholeBody)
-    return remarked(solveWholeBody(problem, options, callback, start, *factor), choice.reason);
-  if (problem.contact.dimension == 3 || options.cone_law)
-    return remarked(solveCone(problem, options, callback, start, *factor, zone, inputs.phase_note), choice.reason);
-  return remarked(solvePlane(problem, options, callback, start, *factor, zone), choice.reason);
+  const auto solve = [&] {
+    if (choice.form == IncrementalForm::WholeBody) return solveWholeBody(problem, options, callback, start, *factor);
+    if (problem.contact.dimension == 3 || options.cone_law)
+      return solveCone(problem, options, callback, start, *factor, zone, inputs.phase_note);
+    return solvePlane(problem, options, callback, start, *factor, zone);
+  };
+  return remarked(solve(), choice.reason);
 }
 
 }  // namespace stc
