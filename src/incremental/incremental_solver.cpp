@@ -424,7 +424,9 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
       return solveCone(problem, options, callback, start, *factor, zone, inputs.phase_note);
     return solvePlane(problem, options, callback, start, *factor, zone);
   };
-  return remarked(solve(), choice.reason);
+  SolveResult result = remarked(solve(), choice.reason);
+  result.summary.incremental_form = nameOf(choice.form);
+  return result;
 }
 
 }  // namespace stc

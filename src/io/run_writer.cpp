@@ -125,6 +125,8 @@ std::string summaryJson(const Problem& problem, const SolveSummary& summary, con
   json.add("solver", summary.solver)
       .add("termination", toString(summary.termination))
       .add("message", summary.message)
+      .add("incremental_form", summary.incremental_form.empty() ? std::nullopt
+                                                                : std::optional<std::string>(summary.incremental_form))
       .add("iterations", summary.iterations)
       .add("relaxations", summary.relaxations)
       .add("sparse_solves", summary.sparseSolves())

@@ -149,6 +149,7 @@ void writeAttributes(const h5::Group& root, const Problem& problem, const SolveS
   root.attribute("solver", summary.solver);
   root.attribute("termination", toString(summary.termination));
   root.attribute("message", summary.message);
+  if (!summary.incremental_form.empty()) root.attribute("incremental_form", summary.incremental_form);
   root.attribute("iterations", summary.iterations);
   root.attribute("relaxations", summary.relaxations);
   root.attribute("sparse_solves", summary.sparseSolves());

@@ -31,6 +31,13 @@ inline constexpr std::array<std::pair<std::string_view, IncrementalForm>, 3> kIn
     {"whole-body", IncrementalForm::WholeBody},
 }};
 
+/// The form's name as solver.incremental_form spells it.
+constexpr std::string_view nameOf(IncrementalForm form) {
+  for (const auto& [name, f] : kIncrementalForms)
+    if (f == form) return name;
+  return "unknown";
+}
+
 struct IncrementalOptions {
   /// On ‖F‖∞ / S_k (src/incremental/incremental_solver.hpp): a few hundred ulps, so the reference is
   /// exact to round-off. In (0, 1).

@@ -54,6 +54,9 @@ struct SolveSummary {
   std::string reason;                ///< why the iteration ended (IterationMonitor, the incremental march)
   std::vector<std::string> remarks;  ///< what the iteration reports beside (FAS: corrections rejected)
   std::vector<SolveStage> stages;    ///< parts of the solve beside its iteration, in order
+  /// The incremental solver's form that solved ("interface" or "whole-body", solver.incremental_form:
+  /// "auto"'s choice or the form asked for); empty for the other solvers.
+  std::string incremental_form;
   std::vector<IterationRecord> history;
   int iterations = 0;
   int relaxations = 0;

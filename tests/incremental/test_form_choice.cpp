@@ -86,6 +86,7 @@ TEST(IncrementalFormChoice, AutoSolvesInTheFormItChoseAndSaysWhy) {
   ASSERT_EQ(chosen.summary.termination, stc::Termination::Converged) << chosen.summary.message;
   EXPECT_THAT(chosen.summary.message, HasSubstr("incremental form (auto): whole-body"));
   EXPECT_THAT(chosen.summary.message, HasSubstr("whole-body form: "));
+  EXPECT_EQ(chosen.summary.incremental_form, "whole-body");
   // The same instants in the interface form, asked for, on the same backend: the same solution.
   stc::IncrementalOptions interface;
   interface.form = stc::IncrementalForm::Interface;
@@ -93,6 +94,7 @@ TEST(IncrementalFormChoice, AutoSolvesInTheFormItChoseAndSaysWhy) {
   const stc::SolveResult asked = stc::solveIncremental(problem, interface, {.operators = &again});
   EXPECT_EQ(asked.summary.message.find("incremental form (auto)"), std::string::npos) << asked.summary.message;
   EXPECT_EQ(asked.summary.message.find("whole-body form: "), std::string::npos) << asked.summary.message;
+  EXPECT_EQ(asked.summary.incremental_form, "interface");
   // The forms agree to the noise of solves at a relative residual of 1e-12 (test_whole_body.cpp).
   const double scale = asked.interface.lambda.cwiseAbs().maxCoeff();
   EXPECT_LE((chosen.interface.lambda - asked.interface.lambda).cwiseAbs().maxCoeff(), 1e-7 * scale);
@@ -106,4 +108,5 @@ TEST(IncrementalFormChoice, AutoOnCholmodIsTheInterfaceFormBitForBit) {
   const stc::SolveResult asked = stc::solveIncremental(problem, interface);
   EXPECT_EQ(chosen.interface.lambda, asked.interface.lambda);
   EXPECT_EQ(chosen.summary.message, asked.summary.message);
+  EXPECT_EQ(chosen.summary.incremental_form, "interface");
 }

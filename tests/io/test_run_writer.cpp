@@ -124,6 +124,7 @@ TEST(RunWriter, HistoryAndSummaryCarryTheSparseSolvesSpent) {
   EXPECT_NE(json.find("\"relaxations\": 0,\n  \"sparse_solves\": " + std::to_string(spent) + ","), std::string::npos)
       << json;
   EXPECT_NE(json.find("\"sub_grid\": null,"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"incremental_form\": \"interface\","), std::string::npos) << json;  // CHOLMOD: no choice
 }
 
 // A solve nested in time says what its sub-grid solve spent, beside the whole solve's counts that
@@ -140,6 +141,7 @@ TEST(RunWriter, SummaryCarriesTheSubGridSolve) {
   sub_grid.wall_s = 0.25;
   summary.stages = {sub_grid, zone};
   const std::string json = stc::summaryJson(problem, summary, {"{}", "test", {}, {}, {}}, {});
+  EXPECT_NE(json.find("\"incremental_form\": null,"), std::string::npos) << json;  // not the incremental solver
   EXPECT_NE(json.find("\"sub_grid\": {\n    \"relaxations\": 19,\n    \"sparse_solves\": 185,\n    \"wall_s\": 0.25\n  },"),
             std::string::npos)
       << json;
