@@ -5,14 +5,16 @@ on P MPI ranks with CG + GAMG, for a body of n dofs with n_C contact nodes and m
 
     one sparse solve on q ranks      t_s(n, q) = t_1(n) / (min(q, n / n_min) e) + k(n) c α log2 q
     incremental (sequential in time) T_inc(P) = N_N · t_s'(n, P)           (one solve per Newton step)
-    space-time  (R relaxations)      T_st(P)  = Σ_relax ⌈r / g⌉ t_s(n, P / g)  (r new directions,
+    space-time  (R relaxations)      T_st(P)  = Σ_relax ⌈r / g⌉ t_s"(n, P / g)  (r new directions,
                                                solved concurrently by g groups of P / g ranks)
                                                + R (w d z m / P + c_r α log2 P)   (z: zone nodes)
 
 t_1(n) and k(n) (one rank's time and Krylov iterations per right-hand side) are power laws fitted
 to the measured table of docs/linear_solvers.md ("The crossover", "A million degrees of freedom");
-e is the measured efficiency of two ranks on one machine; R, r, S and the Newton iterations N_N
-come from measured solves (docs/scale.md); α, c, c_r and n_min (the fewest dofs per rank with which
+e is the measured efficiency of two ranks on one machine; R, r = S / R and a direction's Krylov
+iterations (t_s") are power laws fitted to fas-apriori's measured solves of the fretting history on
+CG + GAMG (FRETTING_CG below), N_N and a Newton step's Krylov iterations (t_s') the incremental
+solver's whole-body form measured on the same history (docs/scale.md); α, c, c_r and n_min (the fewest dofs per rank with which
 a sparse solve still gains from another rank) are assumptions about a cluster and an AMG, given as
 options. Prints Markdown tables: the model against the measured one- and
 two-rank points, then T(P) and the saturation rank counts at 10^6 and 10^7 dofs.
@@ -32,6 +34,12 @@ ONE_RANK = [(6936, 0.0145, 18.8), (22500, 0.105, 22.0), (52272, 0.38, 24.6), (10
 TWO_RANKS = [(6936, 0.00842), (22500, 0.047), (52272, 0.248), (100860, 0.498), (334890, 2.03),
              (1045572, 7.86)]
 
+# fas-apriori on the fretting history (2001 instants), CG + GAMG on two ranks, τ = 1e-6, no reference:
+# (dofs, relaxations, sparse solves, Krylov iterations) of summary.json, divisions 8, 12, 16, 20:
+#   mpirun -np 2 stcontact solve examples/scenes/hemisphere_fretting.toml --set mesh.divisions=D \
+#     --set 'solver.linear="cg-gamg"' --tol 1e-6 --no-reference --set output.frames=false --threads 1
+FRETTING_CG = [(7803, 16, 80, 1740), (24375, 20, 172, 3525), (55539, 28, 322, 6197), (105903, 35, 659, 11370)]
+
 
 def power_fit(points):
     """(a, b) of y = a x^b by least squares on log-log axes."""
@@ -47,6 +55,9 @@ class Model:
     def __init__(self, args):
         self.t1 = power_fit([(n, t) for n, t, _ in ONE_RANK])
         self.k = power_fit([(n, k) for n, _, k in ONE_RANK])
+        self.solves = power_fit([(n, solves) for n, _, solves, _ in FRETTING_CG])
+        self.relaxations = power_fit([(n, r) for n, r, _, _ in FRETTING_CG])
+        self.direction_krylov = power_fit([(n, its / solves) for n, _, solves, its in FRETTING_CG])
         speedups = [t / t2 for (n, t, _), (_, t2) in zip(ONE_RANK, TWO_RANKS)]
         self.efficiency = sum(speedups) / len(speedups) / 2.0  # of two ranks sharing one machine
         self.alpha, self.messages, self.reductions = args.latency, args.messages, args.reductions
@@ -68,6 +79,13 @@ class Model:
         working = max(1.0, min(q, n / self.min_dofs))  # ranks beyond n / n_min add messages, not speed
         return krylov_share * (self.t_1(n) / (working * eff) + self.krylov(n) * self.messages * self.latency(q))
 
+    def fitted(self, fit, n):
+        return fit[0] * n ** fit[1]
+
+    def direction_share(self, n):
+        """A direction's Krylov iterations over a cold solve's (t_s"/t_s), at most 1."""
+        return min(1.0, self.fitted(self.direction_krylov, n) / self.krylov(n))
+
     def incremental(self, n, P, newton):
         """Newton steps in sequence, each one warm-started solve of the whole body on P ranks."""
         return newton * self.solve(n, P, self.newton_krylov)
@@ -78,7 +96,8 @@ class Model:
         best = math.inf
         g = 1
         while g <= P:
-            solves_time = relaxations * math.ceil(per_relaxation / g) * self.solve(n, max(1, P // g))
+            solves_time = (relaxations * math.ceil(per_relaxation / g)
+                           * self.solve(n, max(1, P // g), self.direction_share(n)))
             best = min(best, solves_time)
             g *= 2
         local = relaxations * (self.local_work * 3 * n_c * m / P + self.reductions * self.latency(P))
@@ -146,16 +165,17 @@ def main():
     parser.add_argument("--min-dofs-per-rank", type=float, default=1e4,
                         help="n_min: the fewest dofs per rank with which a CG + GAMG solve still gains from "
                              "another rank (assumed)")
-    parser.add_argument("--newton-krylov", type=float, default=0.5,
-                        help="a warm-started Newton step's Krylov iterations over a cold solve's (assumed)")
-    parser.add_argument("--newton-per-instant", type=float, default=3.3,
-                        help="Newton iterations per instant of the incremental solver (measured: 6643 over 2001 "
-                             "instants, docs/scale.md)")
-    parser.add_argument("--solves", type=float, default=870.0,
-                        help="S, the space-time solver's sparse solves at 10^6 dofs (the measured trend S ~ n^0.58, "
-                             "51 to 229 from 7.8k to 106k dofs)")
-    parser.add_argument("--relaxations", type=float, default=60.0,
-                        help="R at 10^6 dofs (the measured trend R ~ n^0.27, 16 to 33 from 7.8k to 106k dofs)")
+    parser.add_argument("--newton-krylov", type=float, default=0.89,
+                        help="a Newton step's Krylov iterations over a cold solve's (measured: the whole-body "
+                             "form on the fretting history at divisions 8, 19.5 against 22.0, docs/scale.md)")
+    parser.add_argument("--newton-per-instant", type=float, default=1.31,
+                        help="Newton steps (warm sparse solves) per instant of the incremental solver (measured: "
+                             "the whole-body form, 2628 over 2001 instants at divisions 8, docs/scale.md)")
+    parser.add_argument("--solves", type=float, default=None,
+                        help="S, the space-time solver's sparse solves at 10^6 dofs, grown at the fitted "
+                             "exponent past it (default: the fit to FRETTING_CG)")
+    parser.add_argument("--relaxations", type=float, default=None,
+                        help="R at 10^6 dofs, grown at the fitted exponent (default: the fit to FRETTING_CG)")
     parser.add_argument("--instants", type=int, default=2001)
     parser.add_argument("--check", metavar="DIR",
                         help="the folder of the one- and two-rank solves to check the model against (docs/scale.md)")
@@ -172,6 +192,9 @@ def main():
     print("Fits: t_1(n) = %.3g n^%.3f s, k(n) = %.3g n^%.3f; two ranks on this machine: efficiency %.2f; "
           "w = %.3g s per zone row-instant\n" % (model.t1[0], model.t1[1], model.k[0], model.k[1],
                                                       model.efficiency, args.local_work))
+    print("fas-apriori on CG + GAMG (FRETTING_CG): S(n) = %.3g n^%.3f solves, R(n) = %.3g n^%.3f relaxations, "
+          "%.3g n^%.3f Krylov iterations per direction (%.2f of a cold solve's at 10^6 dofs)\n"
+          % (*model.solves, *model.relaxations, *model.direction_krylov, model.direction_share(1e6)))
     print("Sparse solves on one and two ranks, measured and modelled (seconds per right-hand side):\n")
     print("| free dofs | one rank measured s | model | two ranks measured s | model |")
     print("|---:|---:|---:|---:|---:|")
@@ -185,8 +208,12 @@ def main():
     for n in (1e6, 1e7):
         zone_n = args.zone_fraction * 23057 * (n / 1.045e6) ** (2.0 / 3.0)  # contact nodes grow as n^(2/3)
         newton = args.newton_per_instant * args.instants
-        grow = (n / 1e6) ** 0.58, (n / 1e6) ** 0.27  # the measured trends of S and R
-        solves, relaxations = args.solves * grow[0], args.relaxations * grow[1]
+        solves, relaxations = model.fitted(model.solves, n), model.fitted(model.relaxations, n)
+        if args.solves is not None:
+            solves = args.solves * (n / 1e6) ** model.solves[1]
+        if args.relaxations is not None:
+            relaxations = args.relaxations * (n / 1e6) ** model.relaxations[1]
+        solves = min(solves, 3 * zone_n)  # at most a direction per zone row (the responses' basis is full)
         inc = [model.incremental(n, P, newton) for P in ranks]
         st = [model.space_time(n, zone_n, args.instants, P, relaxations, solves) for P in ranks]
         print("\n%.0e dofs, a zone of %d contact nodes, %d instants: %d Newton steps in sequence against %d "
