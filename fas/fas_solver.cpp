@@ -162,7 +162,7 @@ SolveResult solveFas(const Problem& problem, latin::LinearStage& global, BasisPr
     summary.remarks.push_back(remark);
     summary.composeMessage();
   }
-  return {std::move(fine.s), std::move(summary), std::move(admissible), {}, {}, {}};
+  return {std::move(fine.s), std::move(summary), std::move(admissible), {}, {}, {}, {}};
 }
 
 }  // namespace stc::fas

@@ -80,7 +80,7 @@ SolveResult solveLatinWith(const Problem& problem, LinearStage& global, const La
                        0.5 * global.projectionError()))
       break;
   }
-  return {std::move(s), monitor.finish(), std::move(hat), {}, {}, {}};
+  return {std::move(s), monitor.finish(), std::move(hat), {}, {}, {}, {}};
 }
 
 }  // namespace stc::latin
