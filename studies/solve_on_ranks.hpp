@@ -12,7 +12,7 @@
 namespace stc {
 
 /// InputError when the scene's backend cannot run on `ranks`: cholmod runs in one process (auto takes
-/// mumps on several ranks).
+/// mumps on several ranks); solver.linear_groups must divide the ranks.
 void requireBackendForRanks(const Scene& scene, const Ranks& ranks);
 
 /// The outputs rank 0 writes after `result`: the scene's, without frames on several ranks when the

@@ -48,6 +48,11 @@ struct LinearSolverOptions {
   /// Krylov iterations per right-hand side at most; a solve that reaches it ends the run as a
   /// numerical issue naming the backend.
   int max_iterations = 1000;
+  /// cg-gamg on P ranks: a block of right-hand sides is split among this many groups of P / groups
+  /// ranks, each solving its columns with its own copy of the operator and of its AMG hierarchy
+  /// (docs/linear_solvers.md, "Groups of ranks"). 1: every rank solves every column together. Must
+  /// divide P (checked when the operator is prepared); without ranks, or on another backend, unused.
+  int groups = 1;
 
   static constexpr double kRtolPerTolerance = 1e-4;
   static constexpr double kRtolFloor = 1e-12;
@@ -61,6 +66,7 @@ struct LinearSolverOptions {
     visit("linear", o.backend, Keywords<LinearBackend>(kLinearBackends));
     visit("linear_rtol", o.rtol, offOrInOpenUnit());
     visit("linear_max_iterations", o.max_iterations, atLeast(1));
+    visit("linear_groups", o.groups, atLeast(1));
   }
   /// The fields, and mumps or cg-gamg only in a build with PETSc (InputError naming solver.linear).
   void validate() const;

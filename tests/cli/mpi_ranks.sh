@@ -8,7 +8,8 @@
 # each summary saying 2 ranks, its backend, each rank's peak memory (and cg-gamg's Krylov iterations); `auto` takes mumps on 2 ranks; `solver.linear =
 # "cholmod"` and another command than solve are refused there; fas-apriori's frames are written on 2
 # ranks as in one process, incremental's not (it holds no displacement); the incremental solver's
-# whole-body form on 2 ranks gives the interface form's forces. Exit 0 when every check held; each failure is printed.
+# whole-body form on 2 ranks gives the interface form's forces; cg-gamg's columns solved in two
+# groups of one rank give the ranks' answer together. Exit 0 when every check held; each failure is printed.
 set -uo pipefail
 program=$(realpath "$1") source=$(realpath "$2") work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -129,6 +130,35 @@ worst = np.abs(one - two).max() / np.abs(one).max()
 print(f"  whole-body form on 2 ranks: the forces agree with the interface form's to {worst:.2g} relative")
 sys.exit(0 if worst <= 1e-6 else 1)
 PY
+
+# cg-gamg's right-hand sides in two groups of one rank each (solver.linear_groups = 2): each rank
+# solves its half of a block of directions with its own copy of the operator, then both hold every
+# column. The same relaxations and directions as the two ranks solving each column together, the
+# forces to 1e-6 of the largest (both stop each column at 1e-10 of its right-hand side), Krylov
+# iterations counted over both groups; three groups on two ranks are refused by name.
+fas=(solve "$source/examples/scenes/hemisphere.toml" --set mesh.divisions=8 --set time.steps=21
+     --set 'solver.linear="cg-gamg"' --set output.frames=false --no-reference --quiet)
+for groups in 1 2; do
+  mpi 2 "$program" "${fas[@]}" --set "solver.linear_groups=$groups" --out "$work/groups_$groups" \
+    > "$work/groups_$groups.log" 2>&1 || fail "linear_groups = $groups on 2 ranks: exit $?"
+done
+"${STC_PYTHON:-python3}" - "$work/groups_1" "$work/groups_2" <<'PY' || fail "linear_groups = 2 on 2 ranks"
+import json, sys
+import h5py, numpy as np
+one, two = sys.argv[1:]
+s1, s2 = (json.load(open(d + "/summary.json")) for d in (one, two))
+f1, f2 = (h5py.File(d + "/solution.h5", "r")["interface/force"][()] for d in (one, two))
+worst = np.abs(f1 - f2).max() / np.abs(f1).max()
+print(f"  two groups: {s2['sparse_solves']} solves, {s2['krylov_iterations']} Krylov iterations "
+      f"(together: {s1['sparse_solves']}, {s1['krylov_iterations']}); forces agree to {worst:.2g}")
+ok = (s2["termination"] == "converged" and s2["relaxations"] == s1["relaxations"]
+      and s2["sparse_solves"] == s1["sparse_solves"] and worst <= 1e-6
+      and 0.8 * s1["krylov_iterations"] <= s2["krylov_iterations"] <= 1.2 * s1["krylov_iterations"])
+sys.exit(0 if ok else 1)
+PY
+err=$(mpi 2 "$program" "${fas[@]}" --set solver.linear_groups=3 --out "$work/groups_3" 2>&1); status=$?
+[ $status -eq 1 ] && grep -q 'linear_groups = 3: must divide the 2 ranks' <<<"$err" ||
+  fail "linear_groups = 3 on 2 ranks: exit $status ($err)"
 
 [ $failures -eq 0 ] && echo "every check held" || echo "$failures failures"
 [ $failures -eq 0 ]

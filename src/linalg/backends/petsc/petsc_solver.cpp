@@ -54,6 +54,54 @@ RowBlock rowBlockOf(PetscInt n, const Ranks& ranks) {
   return {ranks.rank * base + std::min<PetscInt>(ranks.rank, extra), base + (ranks.rank < extra ? 1 : 0)};
 }
 
+// The ranks split into `count` groups of consecutive ranks (LinearSolverOptions::groups), each with a
+// communicator of its own: group g holds world ranks [g P/count, (g + 1) P/count), its first one its
+// leader. Columns split in contiguous parts, the first cols mod count groups one column more.
+struct RankGroups {
+  int count = 1;
+  int index = 0;           ///< this rank's group
+  Ranks within;            ///< this rank's place in its group
+  MPI_Comm comm = MPI_COMM_NULL;
+
+  RankGroups(int groups, const Ranks& world) : count(groups) {
+    if (groups < 1 || world.size % groups != 0)
+      throw InputError("solver option linear_groups = " + std::to_string(groups) + ": must divide the " +
+                       std::to_string(world.size) + " ranks");
+    const int per_group = world.size / groups;
+    index = world.rank / per_group;
+    within = {world.rank % per_group, per_group};
+    check(MPI_Comm_split(PETSC_COMM_WORLD, index, world.rank, &comm), "MPI_Comm_split");
+  }
+  ~RankGroups() {
+    if (comm != MPI_COMM_NULL) MPI_Comm_free(&comm);
+  }
+  RankGroups(const RankGroups&) = delete;
+  RankGroups& operator=(const RankGroups&) = delete;
+
+  RowBlock columnsOf(int group, Eigen::Index cols) const { return rowBlockOf(static_cast<PetscInt>(cols), {group, count}); }
+
+  // X (n × cols) with this group's columns solved, on every rank of it: every column on every rank,
+  // from each group's leader (MPI_Allgatherv over the world's ranks, column-major blocks).
+  void exchange(Eigen::MatrixXd& X) const {
+    int world_size = 1;
+    MPI_Comm_size(PETSC_COMM_WORLD, &world_size);
+    const int ranks_per_group = world_size / count;
+    std::vector<int> counts(static_cast<std::size_t>(world_size), 0), starts(counts.size(), 0);
+    for (int r = 0; r < world_size; ++r) {
+      if (r % ranks_per_group != 0) continue;
+      const RowBlock part = columnsOf(r / ranks_per_group, X.cols());
+      counts[static_cast<std::size_t>(r)] = static_cast<int>(part.count * X.rows());
+      starts[static_cast<std::size_t>(r)] = static_cast<int>(part.begin * X.rows());
+    }
+    const RowBlock mine = columnsOf(index, X.cols());
+    const int send = within.rank == 0 ? static_cast<int>(mine.count * X.rows()) : 0;
+    std::vector<double> block(X.data() + mine.begin * X.rows(), X.data() + (mine.begin + mine.count) * X.rows());
+    check(MPI_Allgatherv(block.data(), send, MPI_DOUBLE, X.data(), counts.data(), starts.data(), MPI_DOUBLE,
+                         PETSC_COMM_WORLD),
+          "MPI_Allgatherv");
+  }
+};
+
 // A (lower triangle used, as CHOLMOD's) as an AIJ matrix holding both triangles: sequential on one
 // rank, else this rank's block of rows of the distributed one.
 Mat toPetsc(const Eigen::SparseMatrix<double>& A, MPI_Comm comm, const RowBlock& rows) {
@@ -106,8 +154,23 @@ class PetscSolver final : public SpdSolver {
  public:
   PetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what, const LinearSolverOptions& options,
               const std::function<Eigen::MatrixXd()>& near_null_space, double max_factor_bytes)
-      : n_(static_cast<int>(A.rows())), backend_(options.backend), ranks_(currentRanks()),
-        comm_(ranks_.size > 1 ? PETSC_COMM_WORLD : PETSC_COMM_SELF),
+      : PetscSolver(A, what, options, near_null_space, max_factor_bytes, currentRanks(), PETSC_COMM_WORLD) {
+    // cg-gamg on several ranks in groups: each group's own copy of A and of its hierarchy, which
+    // solves its part of a block's columns (solveInGroups).
+    if (backend_ != LinearBackend::CgGamg || ranks_.size == 1 || options.groups == 1) return;
+    groups_ = std::make_unique<RankGroups>(options.groups, ranks_);
+    LinearSolverOptions within = options;
+    within.groups = 1;
+    group_ = std::unique_ptr<PetscSolver>(
+        new PetscSolver(A, what, within, near_null_space, max_factor_bytes, groups_->within, groups_->comm));
+  }
+
+  // On the ranks `ranks` of `comm` (PETSC_COMM_SELF for one).
+  PetscSolver(const Eigen::SparseMatrix<double>& A, const std::string& what, const LinearSolverOptions& options,
+              const std::function<Eigen::MatrixXd()>& near_null_space, double max_factor_bytes, const Ranks& ranks,
+              MPI_Comm comm)
+      : n_(static_cast<int>(A.rows())), backend_(options.backend), ranks_(ranks),
+        comm_(ranks_.size > 1 ? comm : PETSC_COMM_SELF),
         rows_(rowBlockOf(static_cast<PetscInt>(A.rows()), ranks_)) {
     ensurePetsc();
     try {
@@ -126,6 +189,7 @@ class PetscSolver final : public SpdSolver {
     if (B.rows() != n_) throw std::invalid_argument("SpdSolver::solve: right-hand side has the wrong number of rows");
     Eigen::MatrixXd X(n_, B.cols());
     if (B.cols() == 0) return X;
+    if (group_ && B.cols() > 1) return solveInGroups(B, Eigen::VectorXd::Ones(B.cols()));
     const std::lock_guard<std::mutex> lock(mutex_);
     if (backend_ == LinearBackend::Mumps) solveDirect(B, X);
     else for (Eigen::Index j = 0; j < B.cols(); ++j) solveColumn(B.col(j).data(), X.col(j).data());
@@ -142,6 +206,7 @@ class PetscSolver final : public SpdSolver {
     Eigen::VectorXd agreed = loosening;
     if (ranks_.size > 1)
       MPI_Allreduce(loosening.data(), agreed.data(), static_cast<int>(agreed.size()), MPI_DOUBLE, MPI_MIN, comm_);
+    if (group_ && B.cols() > 1) return solveInGroups(B, agreed);
     const double loosest = std::max(rtol_, LinearSolverOptions::kLoosestRtol);
     Eigen::MatrixXd X(n_, B.cols());
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -220,6 +285,8 @@ class PetscSolver final : public SpdSolver {
   double factor_entries_ = 0.0;
   mutable std::mutex mutex_;
   mutable KrylovCounts counts_;
+  std::unique_ptr<RankGroups> groups_;  ///< cg-gamg on ranks in groups (LinearSolverOptions::groups)
+  std::unique_ptr<PetscSolver> group_;  ///< this rank's group's solver (destroyed before groups_'s communicator)
 
   // MUMPS's Cholesky factor of A (SYM = 2: LDLᵀ, its negative pivots counted), PETSc's options
   // (prefix "stc_": -stc_mat_mumps_icntl_14 …) read at the analysis. Refused after the analysis
@@ -274,6 +341,53 @@ class PetscSolver final : public SpdSolver {
     check(VecSum(diagonal, &sum), "VecSum");
     check(VecDestroy(&diagonal), "VecDestroy");
     mean_diagonal_ = sum / n_;
+  }
+
+  // X = A⁻¹ B with each group solving its contiguous part of B's columns on its own ranks, column j
+  // to the relative residual min(rtol ℓ_j, kLoosestRtol) (`loosening`, agreed among the ranks), then
+  // every column on every rank. The Krylov counts are the groups' summed (their largest for the
+  // most one column took). A column that fails in one group fails the solve on every rank.
+  Eigen::MatrixXd solveInGroups(const Eigen::MatrixXd& B, const Eigen::VectorXd& loosening) const {
+    // MPI counts are ints: blocks of at most 2^30 entries per exchange.
+    const Eigen::Index widest = std::max<Eigen::Index>(groups_->count, (Eigen::Index{1} << 30) / std::max(n_, 1));
+    if (B.cols() > widest) {
+      Eigen::MatrixXd X(n_, B.cols());
+      for (Eigen::Index begin = 0; begin < B.cols(); begin += widest) {
+        const Eigen::Index count = std::min(widest, B.cols() - begin);
+        X.middleCols(begin, count) = solveInGroups(B.middleCols(begin, count), loosening.segment(begin, count));
+      }
+      return X;
+    }
+    const RowBlock mine = groups_->columnsOf(groups_->index, B.cols());
+    Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n_, B.cols());
+    const KrylovCounts before = group_->krylovCounts();
+    int failed = 0;
+    std::string reason;
+    try {
+      if (mine.count > 0)
+        X.middleCols(mine.begin, mine.count) =
+            group_->solveLoosened(B.middleCols(mine.begin, mine.count), loosening.segment(mine.begin, mine.count));
+    } catch (const std::exception& error) {
+      failed = 1;
+      reason = error.what();
+    }
+    const KrylovCounts after = group_->krylovCounts();
+    const bool leader = groups_->within.rank == 0;
+    long long spent[3] = {leader ? after.solves - before.solves : 0, leader ? after.iterations - before.iterations : 0,
+                          failed};
+    long long most = after.max_iterations;
+    check(MPI_Allreduce(MPI_IN_PLACE, spent, 3, MPI_LONG_LONG, MPI_SUM, comm_), "MPI_Allreduce");
+    check(MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_LONG_LONG, MPI_MAX, comm_), "MPI_Allreduce");
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      counts_.solves += spent[0];
+      counts_.iterations += spent[1];
+      counts_.max_iterations = std::max(counts_.max_iterations, static_cast<int>(most));
+    }
+    if (spent[2] > 0)
+      throw LinearSolveFailure(failed ? reason : "the cg-gamg linear solve did not converge on another group of ranks");
+    groups_->exchange(X);
+    return X;
   }
 
   // The relative residual alone (PETSC_DEFAULT keeps the others as they are).

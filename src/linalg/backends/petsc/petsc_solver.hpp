@@ -15,8 +15,11 @@
 // pass-through, with the prefix "stc_" for these solvers: PETSC_OPTIONS="-stc_ksp_monitor") and
 // finalised at exit. One process: PETSC_COMM_SELF. Several ranks (src/linalg/ranks.hpp): the
 // operator's rows split in contiguous blocks over PETSC_COMM_WORLD, every rank passing the whole
-// right-hand sides and receiving the whole solutions (MPI_Allgatherv). A solve holds the solver's
-// lock (PETSc objects are not thread-safe).
+// right-hand sides and receiving the whole solutions (MPI_Allgatherv). cg-gamg with
+// LinearSolverOptions::groups = g > 1: the ranks in g groups (MPI_Comm_split), each with its own copy
+// of A and of its hierarchy, a block of columns split among them (single columns on every rank
+// together), each group's columns then on every rank. A solve holds the solver's lock (PETSc objects
+// are not thread-safe).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <functional>
