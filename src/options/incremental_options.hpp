@@ -32,11 +32,7 @@ inline constexpr std::array<std::pair<std::string_view, IncrementalForm>, 3> kIn
 }};
 
 /// The form's name as solver.incremental_form spells it.
-constexpr std::string_view nameOf(IncrementalForm form) {
-  for (const auto& [name, f] : kIncrementalForms)
-    if (f == form) return name;
-  return "unknown";
-}
+constexpr std::string_view nameOf(IncrementalForm form) { return keywordOf<IncrementalForm>(kIncrementalForms, form); }
 
 struct IncrementalOptions {
   /// On ‖F‖∞ / S_k (src/incremental/incremental_solver.hpp): a few hundred ulps, so the reference is

@@ -33,11 +33,7 @@ inline constexpr std::array<std::pair<std::string_view, LinearBackend>, 4> kLine
 }};
 
 /// The backend's name as solver.linear spells it.
-constexpr std::string_view nameOf(LinearBackend backend) {
-  for (const auto& [name, b] : kLinearBackends)
-    if (b == backend) return name;
-  return "unknown";
-}
+constexpr std::string_view nameOf(LinearBackend backend) { return keywordOf<LinearBackend>(kLinearBackends, backend); }
 
 struct LinearSolverOptions {
   LinearBackend backend = LinearBackend::Auto;

@@ -49,6 +49,14 @@ Range anyFlag();           ///< a boolean: no range
 template <class E>
 using Keywords = std::span<const std::pair<std::string_view, E>>;
 
+/// The name `names` gives `value` ("unknown" for a value it lists not).
+template <class E>
+constexpr std::string_view keywordOf(Keywords<E> names, E value) {
+  for (const auto& [name, e] : names)
+    if (e == value) return name;
+  return "unknown";
+}
+
 /// The check of validate(): each field against its range.
 class FieldCheck {
  public:
