@@ -8,10 +8,7 @@ void requireBackendForRanks(const Scene& scene, const Ranks& ranks) {
   if (ranks.size > 1 && scene.solver.linear.backend == LinearBackend::Cholmod)
     throw InputError("solver.linear = \"cholmod\" runs in one process; on " + std::to_string(ranks.size) +
                      " ranks choose \"mumps\" or \"cg-gamg\" (--set solver.linear='\"mumps\"')");
-  const int groups = scene.solver.linear.groups;
-  if (groups > 1 && ranks.size > 1 && ranks.size % groups != 0)
-    throw InputError("solver option linear_groups = " + std::to_string(groups) + ": must divide the " +
-                     std::to_string(ranks.size) + " ranks (one rank solves alone: 1)");
+  scene.solver.linear.requireGroupsDivide(ranks.size);
 }
 
 OutputSpec outputsOnRanks(const Scene& scene, const Ranks& ranks, const SolveResult& result, std::string& note) {

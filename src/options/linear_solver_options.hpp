@@ -66,6 +66,8 @@ struct LinearSolverOptions {
   }
   /// The fields, and mumps or cg-gamg only in a build with PETSc (InputError naming solver.linear).
   void validate() const;
+  /// InputError naming solver.linear_groups when its groups do not divide `ranks` (several ranks).
+  void requireGroupsDivide(int ranks) const;
   /// The relative residual an iterative solve stops at under a strategy of tolerance τ.
   double residualTolerance(double tolerance) const;
 };

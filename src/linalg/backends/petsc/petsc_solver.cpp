@@ -63,11 +63,9 @@ struct RankGroups {
   Ranks within;            ///< this rank's place in its group
   MPI_Comm comm = MPI_COMM_NULL;
 
-  RankGroups(int groups, const Ranks& world) : count(groups) {
-    if (groups < 1 || world.size % groups != 0)
-      throw InputError("solver option linear_groups = " + std::to_string(groups) + ": must divide the " +
-                       std::to_string(world.size) + " ranks");
-    const int per_group = world.size / groups;
+  RankGroups(const LinearSolverOptions& options, const Ranks& world) : count(options.groups) {
+    options.requireGroupsDivide(world.size);
+    const int per_group = world.size / count;
     index = world.rank / per_group;
     within = {world.rank % per_group, per_group};
     check(MPI_Comm_split(PETSC_COMM_WORLD, index, world.rank, &comm), "MPI_Comm_split");
@@ -81,22 +79,18 @@ struct RankGroups {
   RowBlock columnsOf(int group, Eigen::Index cols) const { return rowBlockOf(static_cast<PetscInt>(cols), {group, count}); }
 
   // X (n × cols) with this group's columns solved, on every rank of it: every column on every rank,
-  // from each group's leader (MPI_Allgatherv over the world's ranks, column-major blocks).
+  // from each group's leader (MPI_Allgatherv in place over the world's ranks, column-major blocks;
+  // the other ranks of a group send nothing).
   void exchange(Eigen::MatrixXd& X) const {
-    int world_size = 1;
-    MPI_Comm_size(PETSC_COMM_WORLD, &world_size);
-    const int ranks_per_group = world_size / count;
+    const int world_size = count * within.size;
     std::vector<int> counts(static_cast<std::size_t>(world_size), 0), starts(counts.size(), 0);
-    for (int r = 0; r < world_size; ++r) {
-      if (r % ranks_per_group != 0) continue;
-      const RowBlock part = columnsOf(r / ranks_per_group, X.cols());
-      counts[static_cast<std::size_t>(r)] = static_cast<int>(part.count * X.rows());
-      starts[static_cast<std::size_t>(r)] = static_cast<int>(part.begin * X.rows());
+    for (int group = 0; group < count; ++group) {
+      const RowBlock part = columnsOf(group, X.cols());
+      const auto leader = static_cast<std::size_t>(group * within.size);
+      counts[leader] = static_cast<int>(part.count * X.rows());
+      starts[leader] = static_cast<int>(part.begin * X.rows());
     }
-    const RowBlock mine = columnsOf(index, X.cols());
-    const int send = within.rank == 0 ? static_cast<int>(mine.count * X.rows()) : 0;
-    std::vector<double> block(X.data() + mine.begin * X.rows(), X.data() + (mine.begin + mine.count) * X.rows());
-    check(MPI_Allgatherv(block.data(), send, MPI_DOUBLE, X.data(), counts.data(), starts.data(), MPI_DOUBLE,
+    check(MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, X.data(), counts.data(), starts.data(), MPI_DOUBLE,
                          PETSC_COMM_WORLD),
           "MPI_Allgatherv");
   }
@@ -158,7 +152,7 @@ class PetscSolver final : public SpdSolver {
     // cg-gamg on several ranks in groups: each group's own copy of A and of its hierarchy, which
     // solves its part of a block's columns (solveInGroups).
     if (backend_ != LinearBackend::CgGamg || ranks_.size == 1 || options.groups == 1) return;
-    groups_ = std::make_unique<RankGroups>(options.groups, ranks_);
+    groups_ = std::make_unique<RankGroups>(options, ranks_);
     LinearSolverOptions within = options;
     within.groups = 1;
     group_ = std::unique_ptr<PetscSolver>(
@@ -359,7 +353,7 @@ class PetscSolver final : public SpdSolver {
       return X;
     }
     const RowBlock mine = groups_->columnsOf(groups_->index, B.cols());
-    Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n_, B.cols());
+    Eigen::MatrixXd X(n_, B.cols());  // every column written: this group's here, the others' by exchange
     const KrylovCounts before = group_->krylovCounts();
     int failed = 0;
     std::string reason;
