@@ -65,10 +65,10 @@ class Model:
         self.min_dofs = args.min_dofs_per_rank
 
     def t_1(self, n):
-        return self.t1[0] * n ** self.t1[1]
+        return self.fitted(self.t1, n)
 
     def krylov(self, n):
-        return self.k[0] * n ** self.k[1]
+        return self.fitted(self.k, n)
 
     def latency(self, q):
         return self.alpha * math.log2(q) if q > 1 else 0.0
@@ -79,7 +79,9 @@ class Model:
         working = max(1.0, min(q, n / self.min_dofs))  # ranks beyond n / n_min add messages, not speed
         return krylov_share * (self.t_1(n) / (working * eff) + self.krylov(n) * self.messages * self.latency(q))
 
-    def fitted(self, fit, n):
+    @staticmethod
+    def fitted(fit, n):
+        """a n^b of a power_fit's (a, b)."""
         return fit[0] * n ** fit[1]
 
     def direction_share(self, n):

@@ -5,6 +5,7 @@ STC_SOURCE_DIR to the repository, so that the module's answers are compared with
 """
 
 import csv
+import importlib.util
 import json
 import os
 import subprocess
@@ -19,6 +20,14 @@ SEED_SCENE = SOURCE_DIR / "examples" / "scenes" / "hemicylinder.toml"
 BAD_DIR = SOURCE_DIR / "tests" / "cli" / "bad"
 # A small version of the seed scene for the tests that do not compare with the seed itself.
 SMALL = ["mesh.arc_nodes=31", "time.steps=41", "output.frames=false"]
+
+
+def load_script(file_name):
+    """scripts/<file_name> as a module (the study scripts the docs quote, tested by their functions)."""
+    spec = importlib.util.spec_from_file_location(Path(file_name).stem, SOURCE_DIR / "scripts" / file_name)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 @pytest.fixture(scope="session")

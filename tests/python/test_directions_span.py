@@ -2,23 +2,14 @@
 the mirror-symmetric zone vectors on a case counted by hand, and on the shallow press at divisions 8 a
 stage without a trailing block whose directions stay in that space and fill it."""
 
-import importlib.util
-
 import numpy as np
 import pytest
 import stcontact
-from conftest import SOURCE_DIR
-
-
-def load_script():
-    spec = importlib.util.spec_from_file_location("directions_span", SOURCE_DIR / "scripts" / "directions_span.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+from conftest import load_script
 
 
 def test_the_symmetric_dimension_counts_the_pairs_and_the_nodes_on_the_plane():
-    script = load_script()
+    script = load_script("directions_span.py")
     # Nodes 0 and 1 mirror each other in y, node 2 lies on the plane y = 0; frames the identity.
     points = np.array([[0.5, 1.0, 0.0], [0.5, -1.0, 0.0], [0.0, 0.0, 0.0]])
     F = np.repeat(np.eye(3)[None], 3, axis=0)
@@ -37,7 +28,7 @@ def test_the_symmetric_dimension_counts_the_pairs_and_the_nodes_on_the_plane():
 
 
 def test_without_a_trailing_block_the_directions_fill_the_symmetric_zone_space():
-    script = load_script()
+    script = load_script("directions_span.py")
     try:
         row = script.measure("hemisphere_shallow", 8, "mumps")
     except stcontact.InputError as error:  # a build without PETSc
