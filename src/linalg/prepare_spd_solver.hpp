@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "stcontact/core/input_error.hpp"
 #include "stcontact/linalg/spd_solver.hpp"
 #include "stcontact/options/linear_solver_options.hpp"
 
@@ -30,20 +31,28 @@ struct SpdSolverHints {
 /// the direct factor wherever it fits in kFactorMemoryShare of the memory available to the rank
 /// (its analysis says, before any numerical work), else CG + GAMG (with PETSc): CHOLMOD in one
 /// process, MUMPS on several ranks (CHOLMOD runs in one process only; MUMPS there is 2.7 times CG +
-/// GAMG's speed on 2 ranks at 52k dofs). Without PETSc: CHOLMOD, unbounded.
+/// GAMG's speed on 2 ranks at 52k dofs). Without PETSc: CHOLMOD, bounded by all the memory available
+/// (there is nothing to give way to: beyond, the run is refused, as for a factor asked for by name).
 struct AutoBackend {
   LinearBackend backend;    ///< the backend to prepare with
-  double max_factor_bytes;  ///< the direct factor's bound (per rank), beyond which CG + GAMG prepares instead
+  double max_factor_bytes;  ///< the direct factor's bound (per rank)
+  bool gives_way;           ///< beyond the bound, CG + GAMG prepares instead (else: refused)
 };
 inline constexpr double kFactorMemoryShare = 0.5;
 /// `available_bytes`: what this rank may use (the machine's available memory shared by its ranks).
 AutoBackend autoBackend(int ranks, bool petsc, double available_bytes);
 
+/// The error for a direct factor asked for by name (or `auto`'s without PETSc) whose analysis said
+/// it would not fit (`refused`, FactorTooLarge): an InputError naming solver.linear and the backend
+/// that needs no factor.
+InputError factorRefused(LinearBackend backend, const FactorTooLarge& refused, double available_bytes);
+
 /// A prepared by options.backend (`auto`: autoBackend), which must be built
 /// (LinearSolverOptions::validate). An iterative backend stops at options.rtol (set:
 /// residualTolerance). Throws InputError naming `what`
 /// when A is not positive definite (a direct backend sees it; an iterative one when its solves
-/// fail).
+/// fail), and factorRefused's when a direct factor asked for by name would exceed the memory
+/// available to the rank.
 std::unique_ptr<SpdSolver> prepareSpdSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,
                                             const LinearSolverOptions& options, const SpdSolverHints& hints);
 

@@ -44,8 +44,8 @@ SizeEstimate estimateSize(const ModelSpec& scene) {
   e.contact_rows = d * contactNodes(m, e.nodes);
   if (m.mirror_gap) e.nodes *= 2.0;  // the body and its image (mesh/mirror_image.hpp)
   const double rows = d * e.nodes;
-  const double entries_per_row = d == 3 ? 45.0 : 14.0, fill = d == 3 ? 20.0 : 5.0;
-  e.bytes = 12.0 * rows * entries_per_row * (3.0 + fill) + 8.0 * 10.0 * e.contact_rows * scene.time.steps;
+  const double entries_per_row = d == 3 ? 45.0 : 14.0;
+  e.bytes = 12.0 * rows * entries_per_row * kMatrixCopies + 8.0 * 10.0 * e.contact_rows * scene.time.steps;
   return e;
 }
 

@@ -15,11 +15,19 @@ struct SizeEstimate {
 
 /// Counts in floating point, so that no size overflows: the generators' node counts as they would
 /// build them (halfDiscNodeCount, halfBallNodeCount), the potential contact nodes on
-/// their arc or curved surface, and the memory of a solve, 12 bytes per stored entry of the
-/// matrices (K, K_ff, K + BᵀkB and the factor's fill, about 14 entries per row in 2D and 45 in 3D,
-/// the factor 5 and 20 times those) and 10 interface histories of d n_C × m doubles (iterates, local
-/// stages, differences, directions).
+/// their arc or curved surface, and the memory of a solve whatever its backend, 12 bytes per stored
+/// entry of kMatrixCopies matrices of about 14 entries per row in 2D and 45 in 3D, and 10 interface
+/// histories of d n_C × m doubles (iterates, local stages, differences, directions).
 SizeEstimate estimateSize(const ModelSpec& scene);
+
+/// The matrices every solve holds, in copies of K's entries: K, K_ff and K + BᵀkB, and an iterative
+/// backend's own copy and AMG hierarchy, 4.7 copies measured (CG + GAMG at 1.05M dofs, one rank:
+/// 2.72 GB, docs/linear_solvers.md, "A million degrees of freedom"). A direct factor's fill is left
+/// to its own analysis, which knows it before any numerical work (prepareSpdSolver: `auto` gives way
+/// to CG + GAMG beyond its bound, a factor asked for by name is refused beyond the memory available):
+/// the 3D fill, 20 times K's entries and more as the body grows, would refuse here runs that CG +
+/// GAMG makes (the fretting history at 10⁶ dofs).
+inline constexpr double kMatrixCopies = 8.0;
 
 /// Throws InputError naming the size keys when estimateSize(scene).bytes exceeds the memory the
 /// process may still allocate (src/core/memory.hpp), or the address-space limit is below any run's.

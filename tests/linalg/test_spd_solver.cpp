@@ -4,6 +4,7 @@
 // for an iterative one), agrees with CHOLMOD, refuses a matrix with rigid motions (a direct one when
 // it is prepared, an iterative one when a solve cannot reach its tolerance), and says what it has
 // (no condensed operator but CHOLMOD's trailing block).
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/QR>
@@ -19,6 +20,7 @@
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/build_config.hpp"
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/memory.hpp"
 #include "stcontact/linalg/backends/cholmod_factor.hpp"
 #include "stcontact/linalg/low_rank_solve.hpp"
 #include "stcontact/linalg/prepare_spd_solver.hpp"
@@ -317,9 +319,11 @@ TEST(AutoBackend, TakesTheDirectFactorWhereItFitsAndTheIterativeOneElsewhere) {
   const stc::AutoBackend ranks = stc::autoBackend(2, true, 17 * gb);  // MUMPS, bounded as CHOLMOD
   EXPECT_EQ(ranks.backend, LinearBackend::Mumps);
   EXPECT_EQ(ranks.max_factor_bytes, one.max_factor_bytes);
+  EXPECT_TRUE(one.gives_way && ranks.gives_way);
   const stc::AutoBackend without_petsc = stc::autoBackend(1, false, 17 * gb);
   EXPECT_EQ(without_petsc.backend, LinearBackend::Cholmod);
-  EXPECT_LE(9 * gb, without_petsc.max_factor_bytes);  // unbounded: there is nothing to give way to
+  EXPECT_EQ(without_petsc.max_factor_bytes, 17 * gb);  // all of it: there is nothing to give way to,
+  EXPECT_FALSE(without_petsc.gives_way);                // a factor beyond is refused (factorRefused)
   // In one process, the seed's K_ff fits: CHOLMOD, the same factor as asked by name.
   stc::LinearSolverOptions o;
   const auto chosen = stc::prepareSpdSolver(seed().stiffness_free, "K_ff", o, {});
@@ -332,6 +336,22 @@ TEST(CholmodFactorBound, RefusesAFactorAboveItsMemoryBoundBeforeAnyNumericalWork
   const double bytes = stc::CholmodFactor::bytesOf(stc::CholmodFactor(A, "K_ff").factorNonZeros());
   EXPECT_THROW(stc::CholmodFactor(A, "K_ff", {}, 1e8, 0.5 * bytes), stc::FactorTooLarge);
   EXPECT_NO_THROW(stc::CholmodFactor(A, "K_ff", {}, 1e8, 2.0 * bytes));
+}
+
+// A factor asked for by name that its analysis says would not fit is bad input: the error names
+// solver.linear, the factor's size, the rank's memory and the backend that needs no factor.
+TEST(CholmodFactorBound, AFactorAskedForByNameThatDoesNotFitIsRefusedNamingTheKey) {
+  const auto& A = seed().stiffness_free;
+  const double bytes = stc::CholmodFactor::bytesOf(stc::CholmodFactor(A, "K_ff").factorNonZeros());
+  try {
+    stc::CholmodFactor(A, "K_ff", {}, 1e8, 0.5 * bytes);
+    FAIL() << "a factor above its bound was prepared";
+  } catch (const stc::FactorTooLarge& refused) {
+    const std::string message = stc::factorRefused(stc::LinearBackend::Cholmod, refused, 0.5 * bytes).what();
+    EXPECT_THAT(message, ::testing::HasSubstr("solver.linear = \"cholmod\": the CHOLMOD factor of K_ff would take about"));
+    EXPECT_THAT(message, ::testing::HasSubstr("this rank may use " + stc::bytesText(0.5 * bytes)));
+    EXPECT_THAT(message, ::testing::HasSubstr("\"cg-gamg\" needs no factor"));
+  }
 }
 
 // MUMPS's analysis estimates its factorisation's memory (INFOG(16)): beyond the bound, the factor is

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/memory.hpp"
 #include "stcontact/core/threads.hpp"
 #include "stcontact/core/worker_pool.hpp"
 #include "stcontact/linalg/blas_kernels.hpp"
@@ -141,8 +142,8 @@ void CholmodFactor::factorise(const Eigen::SparseMatrix<double>& A, const std::s
   cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
   f.L = cholmod_analyze(&view, &f.common);
   if (f.L && bytesOf(f.common.lnz) > max_bytes)
-    throw FactorTooLarge("the CHOLMOD factor of " + what + " would take about " + std::to_string(bytesOf(f.common.lnz) / 1e9) +
-                   " GB");
+    throw FactorTooLarge("the CHOLMOD factor of " + what + " would take about " + bytesText(bytesOf(f.common.lnz)) +
+                         ", more than the " + bytesText(max_bytes) + " allowed");
   const double count = static_cast<double>(trailing.size());
   const bool ordered_last = f.L && count > 0 && count * f.common.lnz >= min_work &&
                             count * count * count / 3.0 <= kTrailingFlopShare * f.common.fl &&

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/memory.hpp"
 
 namespace stc {
 namespace {
@@ -302,8 +303,8 @@ class PetscSolver final : public SpdSolver {
     const double entries = infog(20) >= 0 ? static_cast<double>(infog(20)) : -1e6 * static_cast<double>(infog(20));
     const double estimate = std::max(1e6 * static_cast<double>(infog(16)), 8.0 * entries / ranks_.size);
     if (estimate > max_bytes)
-      throw FactorTooLarge("the MUMPS factor of " + what + " would take about " + std::to_string(estimate / 1e9) +
-                           " GB on a rank, more than the " + std::to_string(max_bytes / 1e9) + " GB allowed");
+      throw FactorTooLarge("the MUMPS factor of " + what + " would take about " + bytesText(estimate) +
+                           " on a rank, more than the " + bytesText(max_bytes) + " allowed");
     check(MatCholeskyFactorNumeric(factor_, matrix_, &info), "MatCholeskyFactorNumeric (MUMPS)");
     checkFactor(what);
   }
