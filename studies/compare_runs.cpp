@@ -200,6 +200,7 @@ std::vector<SolveAtTolerance> measureAtTolerance(const std::vector<Strategy>& st
       a.relaxations = s.relaxations;
       a.sparse_solves = s.sparseSolves();
       a.krylov_iterations = s.krylov_iterations;
+      a.incremental_form = s.incremental_form;
       a.error_estimate = s.error_estimate;
       a.error = context.reference.reference->relativeError(run.result.interface.lambda);
     }

@@ -23,6 +23,7 @@ struct SolveAtTolerance {
   int relaxations = 0;
   int sparse_solves = 0;
   long long krylov_iterations = 0;  ///< of its linear solves (0 on a direct backend)
+  std::string incremental_form;  ///< the incremental solver's form, "interface" or "whole-body" (empty for the others)
   double error_estimate = 0.0;   ///< the estimate it stopped on
   std::optional<double> error;   ///< true error of its last iterate against the reference
   std::vector<double> times_s;   ///< one per repeat

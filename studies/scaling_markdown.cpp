@@ -102,19 +102,21 @@ void atToleranceTable(std::ostream& out, const ScalingStudy& s, const std::vecto
   }
 }
 
-// "21 / 106 / 0 / 812 MB": relaxations, sparse solves, Krylov iterations, peak memory of the solve at tolerance.
+// "21 / 106 / 0 / 812 MB": relaxations, sparse solves, Krylov iterations, peak memory of the solve at
+// tolerance; the incremental solver's form after it, "0 / 96 / 0 / 711 MB (interface)".
 std::string atToleranceWorkCell(const ScalingPoint& p, const std::string& solver) {
   const StrategyMeasurement* m = p.strategy(solver);
   if (!m || !m->at_tolerance) return "—";
   const SolveAtTolerance& a = *m->at_tolerance;
   return std::to_string(a.relaxations) + " / " + std::to_string(a.sparse_solves) + " / " +
-         std::to_string(a.krylov_iterations) + " / " + shortNumber(a.memory.peak_mb, 4) + " MB";
+         std::to_string(a.krylov_iterations) + " / " + shortNumber(a.memory.peak_mb, 4) + " MB" +
+         (a.incremental_form.empty() ? "" : " (" + a.incremental_form + ")");
 }
 
 void atToleranceWorkTable(std::ostream& out, const ScalingStudy& s, Series series,
                           const std::vector<const ScalingPoint*>& points) {
   out << "\nRelaxations / sparse solves / Krylov iterations / peak resident memory of the first solve at "
-         "tolerance (the largest peak over the repeats):\n\n| "
+         "tolerance (the largest peak over the repeats), the incremental solver's form in brackets:\n\n| "
       << sizeName(series) << " |" << solverColumns(s) << "\n" << separator(1 + s.solvers.size());
   for (const ScalingPoint* p : points) {
     out << "| " << p->size(series) << " |";

@@ -1,11 +1,27 @@
 #include "stcontact/studies/scaling_plots.hpp"
 
+#include <algorithm>
+
 #include "stcontact/studies/gnuplot_runner.hpp"
 #include "stcontact/studies/number_format.hpp"
 
 namespace stc {
 
 namespace {
+
+/// The incremental solver's forms over the study's solves at tolerance, in the order met, e.g.
+/// "interface, whole-body" (`auto` chooses per size): the legend of its line.
+std::string incrementalForms(const ScalingStudy& study) {
+  std::vector<std::string> forms;
+  for (const ScalingPoint& p : study.points)
+    if (const StrategyMeasurement* m = p.strategy("incremental"); m && m->at_tolerance) {
+      const std::string& form = m->at_tolerance->incremental_form;
+      if (!form.empty() && std::find(forms.begin(), forms.end(), form) == forms.end()) forms.push_back(form);
+    }
+  std::string text;
+  for (const std::string& form : forms) text += (text.empty() ? "" : ", ") + form;
+  return text;
+}
 
 /// The series that have sizes, as the script names them.
 std::string seriesWithSizes(const ScalingStudy& study) {
@@ -33,7 +49,8 @@ bool drawScalingPlots(const std::filesystem::path& dir, const ScalingStudy& stud
   const std::string variables = "solvers=" + gnuplotString(solvers) + "; target=" +
                                 gnuplotString(targetLabel(study.target_error)) + "; scene=" +
                                 gnuplotString(study.scene_name) + "; series=" + gnuplotString(seriesWithSizes(study)) +
-                                (study.first_reach ? "" : "; timecol='time_at_tolerance_s'");
+                                (study.first_reach ? "" : "; timecol='time_at_tolerance_s'") +
+                                "; incremental_forms=" + gnuplotString(incrementalForms(study));
   return drawPlots(dir, reportPlotJob("scaling.gp", variables, scalingPlotNames(study)), warning);
 }
 

@@ -13,15 +13,16 @@ namespace {
 std::string ratioCell(double ratio) { return std::isfinite(ratio) ? shortNumber(ratio, 4) : ""; }
 
 // The solve at the target as tolerance: time, termination, relaxations, sparse solves, estimate, true
-// error, time ÷ incremental's (empty cells when it was not run).
+// error, time ÷ incremental's, Krylov iterations, peak memory, the incremental solver's form (empty
+// cells when it was not run).
 std::string atToleranceCells(const ScalingPoint& p, const StrategyMeasurement& m) {
-  if (!m.at_tolerance) return ",,,,,,,,";
+  if (!m.at_tolerance) return ",,,,,,,,,";
   const SolveAtTolerance& a = *m.at_tolerance;
   std::ostringstream cells;
   cells << shortNumber(a.median_s, 6) << ',' << toString(a.termination) << ',' << a.relaxations << ','
         << a.sparse_solves << ',' << shortNumber(a.error_estimate, 4) << ',' << shortNumber(a.error, 4) << ','
         << ratioCell(p.timeRatioAtTolerance(m)) << ',' << a.krylov_iterations << ','
-        << shortNumber(a.memory.peak_mb, 5);
+        << shortNumber(a.memory.peak_mb, 5) << ',' << a.incremental_form;
   return cells.str();
 }
 
@@ -32,7 +33,7 @@ void csvHeader(std::ostream& out, const ScalingStudy& study) {
          "factor_mb,interface_history_mb,displacement_history_mb,delassus_mb,condensation_mb,"
          "time_at_tolerance_s,termination_at_tolerance,relaxations_at_tolerance,sparse_solves_at_tolerance,"
          "error_estimate_at_tolerance,error_at_tolerance,time_ratio_at_tolerance,krylov_iterations_at_tolerance,"
-         "peak_rss_mb_at_tolerance\n";
+         "peak_rss_mb_at_tolerance,incremental_form_at_tolerance\n";
 }
 
 void csvRow(std::ostream& out, const ScalingStudy& study, Series series, const ScalingPoint& p,

@@ -10,6 +10,8 @@
 #   suffix     appended to each PNG name (the command draws into NAME.png.tmp, then renames)
 #   timecol    the time drawn: 'time_to_target_s' (default: first reach) or 'time_at_tolerance_s'
 #              (the solves at tolerance; --only-at-tolerance)
+#   incremental_forms  the incremental solver's forms at tolerance, e.g. 'interface, whole-body'
+#              (its legend reads 'incremental (interface, whole-body)'; empty: 'incremental')
 # Example, in results/hemicylinder/scaling:
 #   gnuplot -e "solvers='latin fas-apriori incremental'; target='1e-4'; scene='hemicylinder'; series='time mesh'" \
 #           ../../../scripts/plots/scaling.gp
@@ -19,6 +21,7 @@ if (!exists('scene')) scene = ''
 if (!exists('series')) series = 'time mesh'
 if (!exists('suffix')) suffix = ''
 if (!exists('timecol')) timecol = 'time_to_target_s'
+if (!exists('incremental_forms')) incremental_forms = ''
 at_tolerance = timecol eq 'time_at_tolerance_s'
 memcol = at_tolerance ? 'peak_rss_mb_at_tolerance' : 'peak_rss_mb'
 
@@ -37,6 +40,8 @@ set format y '%g'
 # One colour per strategy in every report (the same line in work_precision.gp, scaling.gp and
 # studies/programs/compare_bases.cpp's script): latin blue, latin-pgd orange, fas-aposteriori green,
 # fas-apriori red, incremental black, any other purple.
+# The legend of strategy s: the incremental solver's with the forms that solved.
+legend(s) = s eq 'incremental' && strlen(incremental_forms) > 0 ? s.' ('.incremental_forms.')' : s
 colour(s) = s eq 'latin' ? '#1f77b4' : s eq 'latin-pgd' ? '#ff7f0e' : s eq 'fas-aposteriori' ? '#2ca02c' : s eq 'fas-apriori' ? '#d62728' : s eq 'incremental' ? '#202020' : '#9467bd'
 
 do for [k=1:words(series)] {
@@ -51,12 +56,12 @@ do for [k=1:words(series)] {
   set ylabel at_tolerance ? 'wall time at tolerance '.target.' (s, set-up included)' \
                           : 'time to reach '.target.' (s, set-up included)'
   plot for [i=1:words(solvers)] csv using (pick(s, i, xcol)):(pick(s, i, timecol)) \
-       with linespoints pt 7 ps 0.8 lw 2 lc rgb colour(word(solvers, i)) title word(solvers, i)
+       with linespoints pt 7 ps 0.8 lw 2 lc rgb colour(word(solvers, i)) title legend(word(solvers, i))
   set output 'memory_vs_'.name.'.png'.suffix
   set title at_tolerance ? scene.': peak resident memory of a solve at tolerance '.target.' against '.name \
                          : scene.': peak resident memory to reach '.target.' against '.name
   set ylabel 'peak resident memory (MB)'
   plot for [i=1:words(solvers)] csv using (pick(s, i, xcol)):(pick(s, i, memcol)) \
-       with linespoints pt 7 ps 0.8 lw 2 lc rgb colour(word(solvers, i)) title word(solvers, i)
+       with linespoints pt 7 ps 0.8 lw 2 lc rgb colour(word(solvers, i)) title legend(word(solvers, i))
 }
 unset output

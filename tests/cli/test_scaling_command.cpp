@@ -198,6 +198,7 @@ TEST_F(ScalingAtToleranceOnly, RunsNoFirstReachAndWritesNoComparisonPerSize) {
   EXPECT_FALSE(fs::exists(report_.out / "report" / "sizes"));
   EXPECT_EQ(report_.summary.find("Time to first reach"), std::string::npos);
   EXPECT_NE(report_.summary.find("--only-at-tolerance"), std::string::npos);
+  EXPECT_NE(report_.summary.find(" MB (interface) |"), std::string::npos);  // the incremental solver's form
   EXPECT_EQ(report_.rows.rows.size(), 4 * stc::strategyNames().size());
   for (const auto& row : report_.rows.rows) {
     EXPECT_EQ(row.at("status"), "not measured") << row.at("solver");
@@ -205,6 +206,9 @@ TEST_F(ScalingAtToleranceOnly, RunsNoFirstReachAndWritesNoComparisonPerSize) {
     EXPECT_GT(number(row.at("time_at_tolerance_s")).value_or(0.0), 0.0) << row.at("solver");
     EXPECT_GT(number(row.at("peak_rss_mb_at_tolerance")).value_or(0.0), 0.0) << row.at("solver");
     EXPECT_TRUE(number(row.at("krylov_iterations_at_tolerance")).has_value()) << row.at("solver");
+    // The incremental solver's form (on CHOLMOD `auto` takes the interface's); none for the others.
+    EXPECT_EQ(row.at("incremental_form_at_tolerance"), row.at("solver") == "incremental" ? "interface" : "")
+        << row.at("solver");
     // The incremental solver is exact (its true error is 0 by construction); the others are measured.
     EXPECT_TRUE(number(row.at("error_at_tolerance")).has_value()) << row.at("solver");
   }
