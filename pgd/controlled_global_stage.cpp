@@ -63,7 +63,18 @@ void ControlledGlobalStage::retime(const Problem& grid) {
 
 int ControlledGlobalStage::seed(const Eigen::MatrixXd& directions) {
   requireFits(directions, problem_);
-  return basis_.append(directions);
+  const int kept = basis_.appendDirections(directions);
+  solvePendingNoted(Eigen::VectorXd(), "seeded");
+  return kept;
+}
+
+void ControlledGlobalStage::solvePendingNoted(const Eigen::VectorXd& loosening, const std::string& which) {
+  if (!note_) return basis_.solvePending(loosening);
+  NotedPhase phase(note_, "global stage: ", note_interval_);
+  basis_.solvePending(loosening, [&](Eigen::Index solved, Eigen::Index pending) {
+    phase.during(std::to_string(solved) + " of " + std::to_string(pending) + " " + which + " directions solved (" +
+                 std::to_string(basis_.size()) + " in all)");
+  });
 }
 
 Eigen::VectorXd ControlledGlobalStage::loosenings(const Eigen::MatrixXd& c_new, double w_norm) const {
@@ -95,7 +106,8 @@ double ControlledGlobalStage::enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scal
     const Eigen::VectorXd added_loosening = loosenings(c_new, w_norm);
     loosening.insert(loosening.end(), added_loosening.begin(), added_loosening.end());
   }
-  basis_.solvePending(Eigen::Map<const Eigen::VectorXd>(loosening.data(), static_cast<Eigen::Index>(loosening.size())));
+  solvePendingNoted(Eigen::Map<const Eigen::VectorXd>(loosening.data(), static_cast<Eigen::Index>(loosening.size())),
+                    "new");
   return error;
 }
 

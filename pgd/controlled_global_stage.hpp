@@ -39,6 +39,7 @@
 #include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/options/separated_stage_options.hpp"
 #include "stcontact/pgd/response_basis.hpp"
+#include "stcontact/solver/noted_phase.hpp"
 
 namespace stc::pgd {
 
@@ -72,6 +73,13 @@ class ControlledGlobalStage : public latin::LinearStage {
   /// iteration in time uses to solve on a sub-grid and then on the whole grid with one basis.
   void retime(const Problem& grid);
   const ResponseBasis& basis() const { return basis_; }
+  /// Tells `note` where a long enrichment is, at most once per `interval` seconds of its solves:
+  /// "global stage: 48 of 310 new directions solved (1 204 in all), 63.0 s" (src/solver/noted_phase.hpp;
+  /// at 10⁶ dofs a first relaxation's directions take more than ten minutes on two ranks). None: silent.
+  void notePhases(PhaseNote note, double interval = NotedPhase::kDuringInterval) {
+    note_ = std::move(note);
+    note_interval_ = interval;
+  }
   /// The basis keeps its responses' traces on `B_rows` too (ResponseBasis::keepTracesOn): before
   /// the first direction, seed() included.
   void keepTracesOn(const Eigen::SparseMatrix<double>& B_rows) { basis_.keepTracesOn(B_rows); }
@@ -120,11 +128,15 @@ class ControlledGlobalStage : public latin::LinearStage {
   double enrich(Eigen::MatrixXd& c, Eigen::MatrixXd& r_scaled, double error, double target, double w_norm);
   /// ℓ_j of each new direction from its coordinates c_new (header, "Inexact directions").
   Eigen::VectorXd loosenings(const Eigen::MatrixXd& c_new, double w_norm) const;
+  /// basis_.solvePending, told to notePhases' note as "<solved> of <pending> <which> directions solved".
+  void solvePendingNoted(const Eigen::VectorXd& loosening, const std::string& which);
   /// Completes the directions to every row once they reach the share of the options (header).
   void completeWhenDue();
 
   const Problem& problem_;
   ControlledStageOptions options_;
+  PhaseNote note_;                ///< notePhases'
+  double note_interval_ = NotedPhase::kDuringInterval;
   std::shared_ptr<const SearchOperator> operator_;
   ResponseBasis basis_;
   mutable Eigen::MatrixXd c_;

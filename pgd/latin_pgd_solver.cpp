@@ -13,6 +13,7 @@ SolveResult solveLatinPgd(const Problem& problem, const LatinPgdOptions& options
   counted.origin = inputs.origin.clocked();  // the stage's set-up on the solve's clock
   std::unique_ptr<PreparedOperators> own;
   ControlledGlobalStage stage(problem, options.stage, operatorsOr(inputs.operators, own));
+  stage.notePhases(inputs.phase_note);  // where a long enrichment is
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
   // The loads' responses and a warm start's directions, solved before the iteration.
   counted.origin.sparse_solves += stage.sparseSolves();

@@ -1,5 +1,6 @@
 #include "stcontact/pgd/response_basis.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -115,7 +116,27 @@ int ResponseBasis::appendDirections(const Eigen::MatrixXd& candidates, double dr
   return static_cast<int>(added);
 }
 
-void ResponseBasis::solvePending(const Eigen::VectorXd& loosening) {
+Eigen::MatrixXd ResponseBasis::solveNewResponses(const Eigen::MatrixXd& rhs, const Eigen::VectorXd& loosening,
+                                                 const SolveProgress& progress) const {
+  // A direct factor's columns in solveColumns' parts whatever is asked (its numbers bit for bit).
+  const auto solve = [&](Eigen::Index first, Eigen::Index count) -> Eigen::MatrixXd {
+    if (loosening.size() == 0 || factor_.isDirect()) return solveColumns(rhs.middleCols(first, count));
+    return factor_.solveLoosened(rhs.middleCols(first, count), loosening.segment(first, count));
+  };
+  // A direct factor solves the block at once (a block's columns cost it less each; a multiple of its
+  // parts would keep CHOLMOD's numbers, not MUMPS's block solves'); an iterative backend solves each
+  // column alone, so that parts of it give the same numbers.
+  if (!progress || factor_.isDirect()) return solve(0, rhs.cols());
+  Eigen::MatrixXd X(rhs.rows(), rhs.cols());
+  for (Eigen::Index first = 0; first < rhs.cols(); first += kProgressColumns) {
+    const Eigen::Index count = std::min(kProgressColumns, rhs.cols() - first);
+    X.middleCols(first, count) = solve(first, count);
+    progress(first + count, rhs.cols());
+  }
+  return X;
+}
+
+void ResponseBasis::solvePending(const Eigen::VectorXd& loosening, const SolveProgress& progress) {
   if (loosening.size() != 0 && loosening.size() != pending_)
     throw std::invalid_argument("ResponseBasis::solvePending: one loosening per pending direction");
   if (pending_ == 0) return;
@@ -124,9 +145,7 @@ void ResponseBasis::solvePending(const Eigen::VectorXd& loosening) {
     T_.append(condensed_ * Z_.view().rightCols(added));  // T = B A⁻¹ Bᵀ Z = D Z
   } else {
     const Eigen::MatrixXd rhs = problem_.contact.B.transpose() * Z_.view().rightCols(added);
-    // A direct factor's columns in solveColumns' parts whatever is asked (its numbers bit for bit).
-    Eigen::MatrixXd X =
-        loosening.size() > 0 && !factor_.isDirect() ? factor_.solveLoosened(rhs, loosening) : solveColumns(rhs);
+    Eigen::MatrixXd X = solveNewResponses(rhs, loosening, progress);
     sparse_solves_ += added;
     T_.append(problem_.contact.B * X);
     if (kept_rows_.rows() > 0) kept_traces_.append(Eigen::MatrixXd(kept_rows_ * X));

@@ -34,6 +34,7 @@ struct FirstRelaxation {
 FirstRelaxation firstRelaxation(const Problem& problem, const FasAprioriOptions& options, const SolveInputs& inputs,
                                 Clock::time_point start) {
   pgd::ControlledGlobalStage stage(problem, options.stage, *inputs.operators);
+  stage.notePhases(inputs.phase_note);  // where a long enrichment is
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
   FirstRelaxation first;
   stage.solve(startingHistory(problem, inputs), first.s);

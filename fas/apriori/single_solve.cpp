@@ -17,6 +17,7 @@ SolveResult solveAprioriOn(const Problem& problem, const FasAprioriOptions& opti
   std::unique_ptr<PreparedOperators> own;
   pgd::ControlledGlobalStage stage(problem, options.stage, operatorsOr(inputs.operators, own));
   if (B_far.rows() > 0) stage.keepTracesOn(B_far);  // the far nodes' lift with no solve (below)
+  stage.notePhases(inputs.phase_note);  // where a long enrichment is
   if (inputs.basis_seed) stage.seed(*inputs.basis_seed);
   // The loads' responses and a warm start's directions, solved before the iteration.
   counted.origin.sparse_solves += stage.sparseSolves();

@@ -7,17 +7,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "fixtures/seed_scene.hpp"
+#include "stcontact/build_config.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
 #include "stcontact/latin/global_stage.hpp"
 #include "stcontact/latin/indicator.hpp"
 #include "stcontact/latin/local_stage.hpp"
 #include "stcontact/linalg/backends/cholmod_factor.hpp"
+#include "stcontact/linalg/prepare_spd_solver.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/pgd/controlled_global_stage.hpp"
 #include "stcontact/pgd/separated_history.hpp"
@@ -107,6 +112,66 @@ TEST(ResponseBasis, DirectionsSolvedInOneBlockAreThoseSolvedPassByPass) {
   EXPECT_LE((in_block.responses().gathered() - X).norm(), 1e-12 * X.norm());
   EXPECT_EQ(in_block.energyFactor().size(), by_pass.energyFactor().size());
   EXPECT_EQ(in_block.energyFactor().rank(), by_pass.energyFactor().rank());
+}
+
+// Told where it is, a block of pending directions is solved on an iterative backend in parts of
+// kProgressColumns, each part told as it ends, with the same responses and traces bit for bit (each
+// column is its own solve); a direct factor solves the block at once, untold.
+TEST(ResponseBasis, ABlockSolvedInToldPartsGivesTheSameResponses) {
+  const auto& f = fixture();
+  const Eigen::SparseMatrix<double> A = stc::searchDirectionOperator(f.problem);
+  std::vector<std::unique_ptr<stc::SpdSolver>> factors;
+  factors.push_back(std::make_unique<stc::CholmodFactor>(A, "K + B^T k B"));
+#if STC_HAVE_PETSC
+  stc::LinearSolverOptions cg;
+  cg.backend = stc::LinearBackend::CgGamg;
+  cg.rtol = 1e-10;
+  factors.push_back(stc::prepareSpdSolver(A, "K + B^T k B", cg, {}));
+#endif
+  for (const auto& factor : factors) {
+    stc::pgd::ResponseBasis silent(f.problem, *factor), told(f.problem, *factor);
+    std::srand(11);
+    const Eigen::MatrixXd candidates = Eigen::MatrixXd::Random(f.problem.contact.rows(), 37);
+    ASSERT_EQ(silent.appendDirections(candidates), 37);
+    ASSERT_EQ(told.appendDirections(candidates), 37);
+    silent.solvePending();
+    std::vector<std::pair<Eigen::Index, Eigen::Index>> lines;
+    told.solvePending(Eigen::VectorXd(), [&](Eigen::Index solved, Eigen::Index pending) { lines.emplace_back(solved, pending); });
+    using Parts = std::vector<std::pair<Eigen::Index, Eigen::Index>>;
+    const Parts parts = factor->isDirect() ? Parts{} : Parts{{16, 37}, {32, 37}, {37, 37}};
+    EXPECT_EQ(lines, parts) << factor->backend();
+    EXPECT_TRUE(told.responses().gathered() == silent.responses().gathered()) << factor->backend();
+    EXPECT_TRUE(Eigen::MatrixXd(told.traces()) == Eigen::MatrixXd(silent.traces())) << factor->backend();
+    EXPECT_EQ(told.sparseSolves(), silent.sparseSolves());
+  }
+}
+
+// A stage told to note its phases says where a long enrichment is (here every part: interval 0),
+// and solves as a silent one does, bit for bit. On CG + GAMG, where each direction is a solve (a
+// factor that condenses the interface gives the traces with none, and has nothing to tell).
+TEST(ControlledGlobalStage, NotesWhereItsEnrichmentIsAndSolvesAsASilentOne) {
+#if !STC_HAVE_PETSC
+  GTEST_SKIP() << "without PETSc the factor condenses the interface: no solve per direction to tell";
+#else
+  const auto& f = fixture();
+  stc::LinearSolverOptions linear;
+  linear.backend = stc::LinearBackend::CgGamg;
+  linear.rtol = 1e-10;
+  stc::PreparedOperators operators(linear);
+  stc::pgd::ControlledGlobalStage silent(f.problem, {}, operators), noted(f.problem, {}, operators);
+  ASSERT_FALSE(noted.basis().condensesInterface());
+  std::vector<std::string> lines;
+  noted.notePhases([&](const std::string& line) { lines.push_back(line); }, 0.0);
+  stc::InterfaceHistory a, b;
+  silent.solve(f.hat(), a);
+  noted.solve(f.hat(), b);
+  EXPECT_TRUE(a.v == b.v && a.lambda == b.lambda);
+  ASSERT_FALSE(lines.empty());
+  const std::string last = "global stage: " + std::to_string(noted.basis().size()) + " of " +
+                           std::to_string(noted.basis().size()) + " new directions solved (" +
+                           std::to_string(noted.basis().size()) + " in all), ";
+  EXPECT_EQ(lines.back().rfind(last, 0), 0u) << lines.back();
+#endif
 }
 
 // With the interface's dofs ordered last, the factor's trailing block gives D = B A⁻¹ Bᵀ and the
