@@ -17,9 +17,9 @@ AutoBackend autoBackend(int ranks, bool petsc, double available_bytes) {
   return {ranks > 1 ? LinearBackend::Mumps : LinearBackend::Cholmod, kFactorMemoryShare * available_bytes, true};
 }
 
-InputError factorRefused(LinearBackend backend, const FactorTooLarge& refused, double available_bytes) {
-  return InputError("solver.linear = \"" + std::string(nameOf(backend)) + "\": " + refused.what() + ", and this rank may use " +
-                    bytesText(available_bytes) + ": \"cg-gamg\" needs no factor (a build with PETSc)");
+InputError factorRefused(LinearBackend backend, const FactorTooLarge& refused) {
+  return InputError("solver.linear = \"" + std::string(nameOf(backend)) + "\": " + refused.what() +
+                    " (what this rank may use): \"cg-gamg\" needs no factor (a build with PETSc)");
 }
 
 std::unique_ptr<SpdSolver> prepareSpdSolver(const Eigen::SparseMatrix<double>& A, const std::string& what,
@@ -33,14 +33,14 @@ std::unique_ptr<SpdSolver> prepareSpdSolver(const Eigen::SparseMatrix<double>& A
   if (options.backend == LinearBackend::Cholmod) try {
       return std::make_unique<CholmodFactor>(A, what, hints.trailing, hints.min_work, choice.max_factor_bytes);
     } catch (const FactorTooLarge& refused) {
-      if (!choice.gives_way) throw factorRefused(options.backend, refused, available);
+      if (!choice.gives_way) throw factorRefused(options.backend, refused);
       options.backend = LinearBackend::CgGamg;
     }
 #if STC_HAVE_PETSC
   if (options.backend == LinearBackend::Mumps) try {
       return preparePetscSolver(A, what, options, hints.near_null_space, choice.max_factor_bytes);
     } catch (const FactorTooLarge& refused) {
-      if (!choice.gives_way) throw factorRefused(options.backend, refused, available);
+      if (!choice.gives_way) throw factorRefused(options.backend, refused);
       options.backend = LinearBackend::CgGamg;
     }
   return preparePetscSolver(A, what, options, hints.near_null_space);

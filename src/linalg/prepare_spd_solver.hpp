@@ -43,9 +43,9 @@ inline constexpr double kFactorMemoryShare = 0.5;
 AutoBackend autoBackend(int ranks, bool petsc, double available_bytes);
 
 /// The error for a direct factor asked for by name (or `auto`'s without PETSc) whose analysis said
-/// it would not fit (`refused`, FactorTooLarge): an InputError naming solver.linear and the backend
-/// that needs no factor.
-InputError factorRefused(LinearBackend backend, const FactorTooLarge& refused, double available_bytes);
+/// it would exceed the memory the rank may use (`refused`, FactorTooLarge with that bound): an
+/// InputError naming solver.linear and the backend that needs no factor.
+InputError factorRefused(LinearBackend backend, const FactorTooLarge& refused);
 
 /// A prepared by options.backend (`auto`: autoBackend), which must be built
 /// (LinearSolverOptions::validate). An iterative backend stops at options.rtol (set:

@@ -20,9 +20,9 @@ struct SizeEstimate {
 /// histories of d n_C × m doubles (iterates, local stages, differences, directions).
 SizeEstimate estimateSize(const ModelSpec& scene);
 
-/// The matrices every solve holds, in copies of K's entries: K, K_ff and K + BᵀkB, and an iterative
-/// backend's own copy and AMG hierarchy, 4.7 copies measured (CG + GAMG at 1.05M dofs, one rank:
-/// 2.72 GB, docs/linear_solvers.md, "A million degrees of freedom"). A direct factor's fill is left
+/// The matrices every solve holds, in copies of K's entries: K, K_ff and K + BᵀkB (3), and an
+/// iterative backend's own copy and AMG hierarchy (4.7 measured: CG + GAMG at 1.05M dofs, one rank,
+/// 2.72 GB, docs/linear_solvers.md, "A million degrees of freedom"), 8 in all. A direct factor's fill is left
 /// to its own analysis, which knows it before any numerical work (prepareSpdSolver: `auto` gives way
 /// to CG + GAMG beyond its bound, a factor asked for by name is refused beyond the memory available):
 /// the 3D fill, 20 times K's entries and more as the body grows, would refuse here runs that CG +
