@@ -55,6 +55,16 @@ InterfaceHistory atInstants(const InterfaceHistory& h, const std::vector<int>& k
 
 }  // namespace
 
+IterationCallback subgridProgress(NotedPhase& phase) {
+  return [&phase](const IterationRecord& r) {
+    char estimate[32];
+    std::snprintf(estimate, sizeof estimate, "%.2e", r.error_estimate);
+    phase.during("relaxation " + std::to_string(r.relaxations) + ", estimate " + estimate + ", " +
+                 std::to_string(r.sparse_solves) + " sparse solves");
+    return true;
+  };
+}
+
 int nestedStride(int m, int coarse_instants, int max_stride) {
   if (coarse_instants < 2) return 0;
   int q = (m - 1) / (coarse_instants - 1);
@@ -77,8 +87,12 @@ SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalSt
   subgrid_options.fas.stop.tolerance = std::max(options.fas.stop.tolerance, options.nested.tolerance);
   stage.retime(subgrid);
   const InterfaceHistory subgrid_start = atInstants(start, kept);
-  // Its own counts (no callback, no true error), on the whole solve's clock.
-  const SolveInputs own{.start = &subgrid_start, .origin = {.clock = origin.clock, .krylov = origin.krylov}};
+  // Its own counts (no true error), on the whole solve's clock; its progress told as a phase.
+  NotedPhase phase(inputs.phase_note, "on every " + ordinal(q) + " instant (" + std::to_string(subgrid.numSteps()) +
+                                          " instants): ");
+  const SolveInputs own{.callback = subgridProgress(phase),
+                        .start = &subgrid_start,
+                        .origin = {.clock = origin.clock, .krylov = origin.krylov}};
   const SolveResult coarse = solveOnGrid(subgrid, stage, subgrid_options, own, coarse_basis);
   stage.retime(problem);
   SubgridCost cost{subgrid.numSteps(), q, coarse.summary.relaxations,

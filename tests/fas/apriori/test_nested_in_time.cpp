@@ -114,6 +114,28 @@ TEST(NestedInTime, TheCallbackSeesTheRecordsOfTheResult) {
   }
 }
 
+// The sub-grid solve's relaxations, which the callback does not see, are told as a phase (here each
+// one: interval 0); the solve is the same with them told.
+TEST(NestedInTime, TheSubgridsRelaxationsAreToldAsAPhase) {
+  std::vector<std::string> lines;
+  stc::NotedPhase phase([&](const std::string& line) { lines.push_back(line); }, "on every 4th instant: ", 0.0);
+  const stc::IterationCallback progress = stc::fas::subgridProgress(phase);
+  stc::IterationRecord r;
+  r.relaxations = 12;
+  r.error_estimate = 3.1e-3;
+  r.sparse_solves = 412;
+  EXPECT_TRUE(progress(r));
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].rfind("on every 4th instant: relaxation 12, estimate 3.10e-03, 412 sparse solves, ", 0), 0u)
+      << lines[0];
+  stc::SolveInputs noted;
+  noted.phase_note = [&](const std::string& line) { lines.push_back(line); };
+  const stc::SolveResult told = solveApriori(101, noted), silent = solveApriori(101);
+  EXPECT_EQ(told.summary.relaxations, silent.summary.relaxations);
+  EXPECT_EQ(told.summary.sparseSolves(), silent.summary.sparseSolves());
+  EXPECT_TRUE(told.interface.lambda == silent.interface.lambda);
+}
+
 // On every node (no reduced interface, whose later rounds would not nest): 3 relaxations are not
 // enough for the sub-grid, and the whole grid starts from s = 0 again.
 TEST(NestedInTime, ASubgridSolveThatDoesNotConvergeIsSaid) {
