@@ -75,7 +75,9 @@ int nestedStride(int m, int coarse_instants, int max_stride) {
 SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalStage& stage,
                                  const FasAprioriOptions& options, const SolveInputs& inputs,
                                  const SeparatedCoarseBasis& coarse_basis) {
-  const int q = nestedStride(problem.numSteps(), options.nested.instants, options.nested.max_stride);
+  const int q = options.nested.nestsOn(stage.factor().isDirect())
+                    ? nestedStride(problem.numSteps(), options.nested.instants, options.nested.max_stride)
+                    : 0;
   if (q == 0) return solveOnGrid(problem, stage, options, inputs, coarse_basis);
   const InterfaceHistory start = startingHistory(problem, inputs);
   const RecordOrigin origin = inputs.origin.clocked();

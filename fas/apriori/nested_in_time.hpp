@@ -38,7 +38,8 @@ int nestedStride(int m, int coarse_instants, int max_stride = 0);
 IterationCallback subgridProgress(NotedPhase& phase);
 
 /// `fas-apriori`'s FAS cycle on `problem` with `stage` (built for it) from inputs.start: when
-/// q = nestedStride(m, options.nested.instants, options.nested.max_stride) ≥ 2, first on every q-th
+/// q = nestedStride(m, options.nested.instants, options.nested.max_stride) ≥ 2 and the stage's backend
+/// is direct (or options.nested.on_iterative: NestedInTimeOptions::nestsOn), first on every q-th
 /// instant (and the last) from the start at those instants, to the tolerance
 /// max(τ, options.nested.tolerance), then on the whole grid from that solution interpolated in time
 /// (the header's steps); when the sub-grid solve does not converge, the whole grid from the start,

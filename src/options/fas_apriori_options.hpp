@@ -97,12 +97,24 @@ struct NestedInTimeOptions {
   /// instants, every 10th instant: true error of the start 4.4e-4, 1.0e-4, 9.5e-5 at sub-grid
   /// tolerances 1e-3, 1e-4, 1e-5; docs/floor.md, "Long grids: nested iteration in time").
   double tolerance = 1e-4;
+  /// Nested iteration on an iterative backend (cg-gamg) too, where each direction the sub-grid adds
+  /// costs a Krylov solve and nothing is condensed. The sub-grid saves relaxations on the whole grid
+  /// but adds directions beyond the zone's: fretting history, two ranks, CG + GAMG, τ = 1e-6, medians
+  /// of 2 alternated, with / without: divisions 8 80 / 80 solves, 1.02 / 0.99 s; 12 172 / 172, 5.6 /
+  /// 5.9 s; 16 322 / 306, 33.2 / 34.7 s; 20 659 / 471, 126 / 110 s (docs/scale.md, "Nested iteration
+  /// in time on CG + GAMG"). A direct factor solves a direction at the price of two triangular solves,
+  /// or none from its trailing block: nesting stays on there.
+  bool on_iterative = false;
+
+  /// Whether the sub-grid is solved first on a backend that is direct (`direct`) or iterative.
+  bool nestsOn(bool direct) const { return instants > 0 && (direct || on_iterative); }
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
     visit("nested_instants", o.instants, offOrAtLeast(2));
     visit("nested_max_stride", o.max_stride, offOrAtLeast(2));
     visit("nested_tolerance", o.tolerance, positive());
+    visit("nested_on_iterative", o.on_iterative, anyFlag());
   }
   void validate() const { validateFields(*this, "nested iteration"); }
 };

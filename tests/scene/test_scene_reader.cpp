@@ -392,7 +392,8 @@ TEST(SceneReader, FasKeysAreRead) {
                                      "adapt_coarse_iterations = false\ncoarse_anderson = 0\nsafeguard_growth = 1\n"
                                      "pgd_anticipate = false\ncoarse_zone = false\nreduce_interface = false\n"
                                      "nested_instants = 0\nzone_margin = 0.25\nzone_reach_margin = 0.01\n"
-                                     "zone_rounds = 2\nzone_whole_share = 0.5\nnested_tolerance = 1e-5\n",
+                                     "zone_rounds = 2\nzone_whole_share = 0.5\nnested_tolerance = 1e-5\n"
+                                     "nested_on_iterative = true\n",
                              kSource);
   const stc::fas::FasAprioriOptions& apriori = s.solver.fas_apriori;
   const stc::fas::FasAposterioriOptions& aposteriori = s.solver.fas_aposteriori;
@@ -420,6 +421,7 @@ TEST(SceneReader, FasKeysAreRead) {
   EXPECT_EQ(apriori.zone.whole_share, 0.5);
   EXPECT_EQ(apriori.nested.instants, 0);
   EXPECT_EQ(apriori.nested.tolerance, 1e-5);
+  EXPECT_TRUE(apriori.nested.on_iterative);
 }
 
 TEST(SceneReader, OmittedFasKeysTakeTheOptionsDefaults) {
@@ -432,6 +434,7 @@ TEST(SceneReader, OmittedFasKeysTakeTheOptionsDefaults) {
   EXPECT_EQ(read.fas_apriori.basis.anticipate, defaults.basis.anticipate);
   EXPECT_EQ(read.fas_apriori.zone.enabled, defaults.zone.enabled);
   EXPECT_EQ(read.fas_apriori.nested.instants, defaults.nested.instants);
+  EXPECT_FALSE(read.fas_apriori.nested.on_iterative);
   EXPECT_EQ(parseScene(kSeed + "nested_instants = 51\n", kSource).solver.fas_apriori.nested.instants, 51);
 }
 
