@@ -34,11 +34,13 @@ ONE_RANK = [(6936, 0.0145, 18.8), (22500, 0.105, 22.0), (52272, 0.38, 24.6), (10
 TWO_RANKS = [(6936, 0.00842), (22500, 0.047), (52272, 0.248), (100860, 0.498), (334890, 2.03),
              (1045572, 7.86)]
 
-# fas-apriori on the fretting history (2001 instants), CG + GAMG on two ranks, τ = 1e-6, no reference:
-# (dofs, relaxations, sparse solves, Krylov iterations) of summary.json, divisions 8, 12, 16, 20:
+# fas-apriori on the fretting history (2001 instants), CG + GAMG on two ranks, τ = 1e-6, no reference,
+# without nested iteration in time (its default on an iterative backend): (dofs, relaxations, sparse
+# solves, Krylov iterations) of summary.json, divisions 8, 12, 16, 20, 30:
 #   mpirun -np 2 stcontact solve examples/scenes/hemisphere_fretting.toml --set mesh.divisions=D \
 #     --set 'solver.linear="cg-gamg"' --tol 1e-6 --no-reference --set output.frames=false --threads 1
-FRETTING_CG = [(7803, 16, 80, 1740), (24375, 20, 172, 3525), (55539, 28, 322, 6197), (105903, 35, 659, 11370)]
+FRETTING_CG = [(7803, 18, 80, 1603), (24375, 27, 172, 3419), (55539, 35, 306, 6039), (105903, 43, 471, 9514),
+               (346053, 61, 1497, 26260)]
 
 
 def power_fit(points):
