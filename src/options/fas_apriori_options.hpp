@@ -101,13 +101,15 @@ struct NestedInTimeOptions {
   /// costs a Krylov solve and nothing is condensed. The sub-grid saves relaxations on the whole grid
   /// but adds directions beyond the zone's: fretting history, two ranks, CG + GAMG, τ = 1e-6, medians
   /// of 2 alternated, with / without: divisions 8 80 / 80 solves, 1.02 / 0.99 s; 12 172 / 172, 5.6 /
-  /// 5.9 s; 16 322 / 306, 33.2 / 34.7 s; 20 659 / 471, 126 / 110 s (docs/scale.md, "Nested iteration
-  /// in time on CG + GAMG"). A direct factor solves a direction at the price of two triangular solves,
-  /// or none from its trailing block: nesting stays on there.
+  /// 5.9 s; 16 322 / 306, 33.2 / 34.7 s; 20 659 / 471, 126 / 110 s; 30 (one run each) 1748 / 1497,
+  /// 1150 / 1019 s (docs/scale.md, "Nested iteration in time on CG + GAMG"). A direct factor solves a
+  /// direction at the price of two triangular solves, or none from its trailing block: nesting stays
+  /// on there.
   bool on_iterative = false;
 
-  /// Whether the sub-grid is solved first on a backend that is direct (`direct`) or iterative.
-  bool nestsOn(bool direct) const { return instants > 0 && (direct || on_iterative); }
+  /// Whether a backend that is direct (`direct`) or iterative nests at all; whether a grid does is
+  /// nestedStride's (fas/apriori/nested_in_time.hpp: none when `instants` is 0).
+  bool nestsOn(bool direct) const { return direct || on_iterative; }
 
   template <class Self, class Visit>
   static void fields(Self& o, Visit&& visit) {
