@@ -16,6 +16,7 @@
 #include "stcontact/cli/compare_command.hpp"
 #include "stcontact/cli/scaling_command.hpp"
 #include "stcontact/cli/sweep_command.hpp"
+#include "stcontact/cli/true_error_command.hpp"
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/core/interruption.hpp"
 #include "stcontact/core/memory.hpp"
@@ -72,6 +73,7 @@ int main(int argc, char** argv) {
   stc::cli::CompareArgs compare;
   stc::cli::SweepArgs sweep;
   stc::cli::ScalingArgs scaling;
+  stc::cli::TrueErrorArgs true_error;
   const std::vector<std::pair<CLI::App*, std::function<int()>>> commands = {
       {stc::cli::addCheckCommand(app, check), [&] { return stc::cli::runCheck(check); }},
       {stc::cli::addSolveCommand(app, solve), [&] { return stc::cli::runSolve(solve); }},
@@ -79,6 +81,7 @@ int main(int argc, char** argv) {
       {stc::cli::addCompareCommand(app, compare), [&] { return stc::cli::runCompare(compare); }},
       {stc::cli::addSweepCommand(app, sweep), [&] { return stc::cli::runSweep(sweep); }},
       {stc::cli::addScalingCommand(app, scaling), [&] { return stc::cli::runScaling(scaling); }},
+      {stc::cli::addTrueErrorCommand(app, true_error), [&] { return stc::cli::runTrueError(true_error); }},
   };
 
   // CLI11 says only "A subcommand is required" for a word it does not know: name it and the commands.

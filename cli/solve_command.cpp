@@ -153,7 +153,8 @@ int runSolve(const SolveArgs& args) {
   if (output.frames) progress.note("writing " + out.string() + "/ with its frames");
   const auto writing = std::chrono::steady_clock::now();
   writeRunOutputs(folder->path(), problem, result,
-                  {scene.parameters_json, STC_VERSION, std::move(peaks), started, reference_s}, output, operators);
+                  {scene.parameters_json, STC_VERSION, std::move(peaks), started, reference_s, scene.model_json},
+                  output, operators);
   const std::string report =
       finalReport(solver, result.summary, out, secondsSince(started), reference_s, secondsSince(writing));
   progress.record(report);

@@ -244,8 +244,9 @@ py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart
     std::string note;
     const OutputSpec output = outputsOnRanks(scene, ranks, result, note);
     if (!note.empty() && PyErr_WarnEx(PyExc_RuntimeWarning, note.c_str(), 1) != 0) throw py::error_already_set();
-    writeRunOutputs(folder->path(), *problem, result, {scene.parameters_json, STC_VERSION, peaks, started, reference_s},
-                    output, operators);
+    writeRunOutputs(folder->path(), *problem, result,
+                    {scene.parameters_json, STC_VERSION, peaks, started, reference_s, scene.model_json}, output,
+                    operators);
     folder->commit();
   }
   return resultDict(run, std::move(result), operators, std::move(peaks));

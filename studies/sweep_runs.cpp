@@ -57,7 +57,8 @@ std::string pointLine(const SweepPoint& p, const std::string& key) {
 void writeSolution(const std::filesystem::path& dir, const Problem& problem, const Scene& scene,
                    const SolveResult& result, PreparedOperators& operators) {
   ensureWritableDirectory(dir);
-  writeRunOutputs(dir, problem, result, {scene.parameters_json, STC_VERSION, {}, {}, {}}, scene.output, operators);
+  writeRunOutputs(dir, problem, result, {scene.parameters_json, STC_VERSION, {}, {}, {}, scene.model_json},
+                  scene.output, operators);
 }
 
 }  // namespace

@@ -195,7 +195,7 @@ long writeSolutionFile(const std::filesystem::path& dir, const Problem& problem,
   // HDF5 writes to a path, not a stream: a temporary beside the file, renamed over it once closed.
   const std::filesystem::path file = dir / "solution.h5", temporary = dir / ".solution.h5.tmp";
   try {
-    writeSolutionH5(temporary, problem, result, tables, {info.version, info.parameters_json}, plan);
+    writeSolutionH5(temporary, problem, result, tables, {info.version, info.parameters_json, info.model_json}, plan);
     std::filesystem::rename(temporary, file);
   } catch (...) {
     std::error_code ignored;

@@ -27,6 +27,7 @@ struct RunInfo {
   std::optional<std::chrono::steady_clock::time_point> started;
   /// The seconds the true error's reference took (summary.json's reference_s), none without one.
   std::optional<double> reference_s;
+  std::string model_json = "{}";  ///< the model alone (Scene::model_json), solution.h5's "model"
 };
 
 /// The frames come from the displacement the strategy holds (SolveResult::displacement) or, for a

@@ -163,6 +163,7 @@ void writeAttributes(const h5::Group& root, const Problem& problem, const SolveS
   root.attribute("n_contact_nodes", problem.contact.size());
   root.attribute("n_steps", problem.numSteps());
   root.attribute("parameters", info.parameters_json);
+  root.attribute("model", info.model_json);
 }
 
 // A frame's datasets, named and encoded.

@@ -29,6 +29,7 @@ struct FramePlan {
 struct SolutionFileInfo {
   std::string version;
   std::string parameters_json = "{}";
+  std::string model_json = "{}";  ///< the scene without [solver] and [output] (Scene::model_json)
 };
 
 /// The tables the run's files share, computed once (io/contact_tables.hpp).

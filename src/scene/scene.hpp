@@ -13,6 +13,10 @@ struct Scene : ModelSpec {
   SolverSpec solver;             ///< [solver]: the strategy and every strategy's options (src/options/)
   OutputSpec output;
   std::string parameters_json;  ///< the scene as read (overrides applied), as a JSON object
+  /// The same without [solver] and [output]: what fixes the exact solution (mesh, material,
+  /// contact, obstacle, time, loads), recorded in solution.h5 so that a later check of its true
+  /// error (`stcontact true-error`) knows the scene given is the one solved.
+  std::string model_json;
 };
 
 /// Every key of the scene's [solver] table, in the order the reader walks them: the search

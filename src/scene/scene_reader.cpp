@@ -623,6 +623,10 @@ Scene readTable(const toml::table& table, const std::filesystem::path& source,
   readSolver(root, scene);
   scene.output = readOutput(root);
   scene.parameters_json = toJson(table);
+  toml::table model = table;
+  model.erase("solver");
+  model.erase("output");
+  scene.model_json = toJson(model);
   return scene;
 }
 

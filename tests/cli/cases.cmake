@@ -5,7 +5,7 @@ list(JOIN small " " small_text)  # the same, inside a bash -c command
 
 stc_cli_test(help 0 "Usage" --help)
 # Every command's --help works and states the defaults a user would otherwise guess.
-foreach(command check solve compare svd sweep scaling)
+foreach(command check solve compare svd sweep scaling true-error)
   stc_cli_test(help_${command} 0 "Usage" ${command} --help)
 endforeach()
 stc_cli_test(help_solve_defaults 0 "--tol FLOAT +tolerance on the error estimate \\(default: the scene's solver.tolerance, else 1e-06\\)" solve --help)
@@ -358,3 +358,19 @@ if(STC_HAVE_PETSC AND STC_MPIRUN)
                    ${CMAKE_CURRENT_BINARY_DIR}/mpi_ranks)
   set_tests_properties(cli.mpi_ranks PROPERTIES LABELS "cli;mpi" TIMEOUT 600 ENVIRONMENT "STC_PYTHON=${Python3_EXECUTABLE}")
 endif()
+
+# stcontact true-error: the true error of a written solution, read back (tests/cli/true_error_checks.sh:
+# it agrees with the run's own), and refused on a file of another scene or no solution at all.
+add_test(NAME cli.true_error_agrees_with_the_run
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/true_error_checks.sh ${cli} ${PROJECT_SOURCE_DIR}
+                 ${CMAKE_CURRENT_BINARY_DIR}/true_error)
+set_tests_properties(cli.true_error_agrees_with_the_run PROPERTIES LABELS cli)
+set(true_error_run ${CMAKE_CURRENT_BINARY_DIR}/true_error/fas/solution.h5)
+stc_cli_test(true_error_other_sizes 1 "was not solved on this scene: it holds 2D, .* 21 contact nodes, 21 instants"
+             true-error ${seed} --set mesh.arc_nodes=31 --set time.steps=21 --solution ${true_error_run})
+stc_cli_test(true_error_other_model 1 "was not solved on this scene: the model differs"
+             true-error ${seed} ${small} --set contact.friction=0.3 --solution ${true_error_run})
+stc_cli_test(true_error_not_hdf5 1 "cannot read '.*hemicylinder.toml': not an HDF5 file"
+             true-error ${seed} ${small} --solution ${seed})
+stc_cli_test(true_error_missing 1 "cannot read '.*none.h5': no such file" true-error ${seed} ${small} --solution none.h5)
+set_tests_properties(cli.true_error_other_sizes cli.true_error_other_model PROPERTIES DEPENDS cli.true_error_agrees_with_the_run)
