@@ -1,14 +1,18 @@
-// stcontact._core.svd and stcontact._core.compare: the verification SVD of `stcontact svd` and the
-// work-precision comparison of `stcontact compare`, through the command line's own code where it
+// stcontact._core.svd, stcontact._core.compare and stcontact._core.true_error: the verification SVD of
+// `stcontact svd`, the work-precision comparison of `stcontact compare` and the check of a written
+// solution of `stcontact true-error`, through the command line's own code where it
 // is shared (studies/compare_runs.hpp, studies/), with the interpreter's lock released.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <optional>
 
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/io/atomic_file.hpp"
+#include "stcontact/io/stored_solution.hpp"
 #include "stcontact/io/run_folder.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 #include "stcontact/python/bindings.hpp"
@@ -19,6 +23,7 @@
 #include "stcontact/studies/compare_runs.hpp"
 #include "stcontact/studies/comparison_writer.hpp"
 #include "stcontact/studies/number_format.hpp"
+#include "stcontact/studies/reference.hpp"
 #include "stcontact/studies/solution_svd.hpp"
 
 namespace stc::python {
@@ -213,9 +218,46 @@ py::dict compare(const SceneHandle& handle, const CompareOptions& o) {
   return comparisonDict(comparison);
 }
 
+// A NaN of solution.h5 (no estimate, no true error measured) as None.
+py::object numberOrNone(double x) { return std::isfinite(x) ? py::object(py::float_(x)) : py::none(); }
+
+/// `stcontact true-error`: the true error of a run's solution.h5 (src/io/stored_solution.hpp) against
+/// the incremental reference of `handle`'s scene, with the run's estimate and own true error. Lock
+/// released for the reference and the measure; a Ctrl-C stops the reference.
+py::dict trueError(const SceneHandle& handle, const std::filesystem::path& solution, const std::vector<std::string>& sets,
+                   std::optional<int> threads) {
+  requireOneProcess("true_error");
+  const ThreadsForCall thread_count(threads);
+  const SceneHandle run = handle.withOverrides(sets);
+  const std::shared_ptr<const Problem> problem = run.problem();
+  const StoredSolution stored = readStoredSolution(solution);
+  requireSolvedOn(stored, *problem, run.scene().model_json);
+  CallbackBridge bridge;
+  std::string warning;
+  double error = 0.0, seconds = 0.0;
+  {
+    py::gil_scoped_release unlocked;
+    const auto start = std::chrono::steady_clock::now();
+    PreparedOperators operators(run.scene().solver.linearAtTolerance());
+    const std::unique_ptr<ErrorReference> reference = solveReference(*problem, bridge.signalsOnly(), warning, operators);
+    if (reference) error = reference->relativeError(stored.lambda);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  bridge.rethrowPending();
+  if (!warning.empty()) throw std::runtime_error(warning);
+  py::dict out;
+  out["error"] = error;
+  out["error_estimate"] = numberOrNone(stored.error_estimate);
+  out["run_error"] = numberOrNone(stored.error);
+  out["solver"] = stored.solver;
+  out["seconds"] = seconds;
+  return out;
+}
+
 }  // namespace
 
 void bindStudies(py::module_& module) {
+  module.def("true_error", &trueError, py::arg("scene"), py::arg("solution"), py::arg("sets"), py::arg("threads"));
   module.def("svd", &svd, py::arg("scene"), py::arg("modes"), py::arg("sets"), py::arg("threads"));
   module.def(
       "compare",

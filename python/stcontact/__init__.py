@@ -43,7 +43,7 @@ _PathLike = Union[str, "os.PathLike[str]"]
 _SceneLike = Union["Scene", _PathLike, "Mapping[str, Any]"]
 _Sets = Union[str, Sequence[str], "Mapping[str, Any]", None]
 
-__all__ = ["Scene", "load_scene", "check", "solve", "svd", "compare", "available_solvers", "ranks", "load_run", "Run",
+__all__ = ["Scene", "load_scene", "check", "solve", "svd", "compare", "true_error", "available_solvers", "ranks", "load_run", "Run",
            "InputError", "IterationRecord", "SolveResult", "SvdResult", "CompareResult", "Strategy", "__version__",
            "blas_kernels"]
 
@@ -211,6 +211,15 @@ def svd(scene: _SceneLike, modes: int = 10, *, sets: _Sets = None, threads: int 
     """The energy SVD of the incremental solution (`stcontact svd`): an SvdResult with `modes` time
     functions and spatial modes (at least 50 singular values, or m - 1)."""
     return SvdResult(_core.svd(load_scene(scene)._handle, modes, _overrides(sets), threads))
+
+
+def true_error(scene: _SceneLike, solution: _PathLike, *, sets: _Sets = None, threads: int | None = None) -> dict[str, Any]:
+    """The true error of a run's solution.h5 (`stcontact true-error`), measured here against the
+    incremental reference of `scene` with `sets` (the run's; [solver] ones set the reference's solve):
+    {"error", "error_estimate" (the run's, None without one), "run_error" (the run's own true error,
+    None when it measured none), "solver", "seconds"}. Raises InputError when the file was solved on
+    another model; Ctrl-C stops the reference and raises KeyboardInterrupt."""
+    return _core.true_error(load_scene(scene)._handle, os.fspath(solution), _overrides(sets), threads)
 
 
 def compare(scene: _SceneLike, solvers: str | Sequence[str] | None = None, *, repeats: int = 3, tol: float | None = None,

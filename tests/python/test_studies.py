@@ -1,4 +1,4 @@
-"""svd and compare: the program's numbers from the module, in the documented shapes."""
+"""svd, true_error and compare: the program's numbers from the module, in the documented shapes."""
 
 import numpy as np
 import pytest
@@ -33,6 +33,29 @@ def test_svd_refuses_what_the_program_refuses(cli, small_scene, tmp_path):
     with pytest.raises(ValueError) as raised:
         stcontact.svd(small_scene, modes=41)
     assert str(raised.value) == expected and expected.startswith("--modes = 41 must be in [1, 40]")
+
+
+def test_true_error_is_the_runs_own_and_the_programs(cli, small_scene, tmp_path):
+    """A solve that measured its true error wrote it into solution.h5: measured again from the file, by
+    the module and by the program, it is the same (the same reference, the forces read back bit for bit)."""
+    result = stcontact.solve(small_scene, "fas-apriori", out=tmp_path / "run", spatial_modes=False)
+    own = result.summary["error"]
+    check = stcontact.true_error(small_scene, tmp_path / "run" / "solution.h5")
+    assert 0 < own <= 1e-6 and abs(check["error"] - own) <= 1e-9 * own and check["run_error"] == own
+    assert check["solver"] == "fas-apriori" and check["error_estimate"] == result.summary["error_estimate"]
+    stdout, _ = run_cli(cli, "true-error", SEED_SCENE, *SMALL_ARGS, "--solution", tmp_path / "run" / "solution.h5",
+                        "--quiet")
+    assert stdout.startswith("true error %.6e " % check["error"])
+
+
+def test_true_error_refuses_another_model(cli, small_scene, tmp_path):
+    stcontact.solve(small_scene, "incremental", out=tmp_path / "run")
+    other = small_scene.with_sets({"contact.friction": 0.3})
+    expected = cli_error(cli, "true-error", SEED_SCENE, *SMALL_ARGS, "--set", "contact.friction=0.3", "--solution",
+                         tmp_path / "run" / "solution.h5")
+    with pytest.raises(stcontact.InputError) as raised:
+        stcontact.true_error(other, tmp_path / "run" / "solution.h5")
+    assert str(raised.value) == expected and "the model differs" in expected
 
 
 @pytest.fixture(scope="module")
