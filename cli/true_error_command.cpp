@@ -34,7 +34,7 @@ std::string scientific(double x) {
 std::string report(const StoredSolution& stored, double error, double measure_s) {
   std::string text = "true error " + scientific(error) + " (" + stored.solver + "'s solution in " + stored.file +
                      ", against the incremental reference; measured in " + shortNumber(measure_s, 3) + " s)\n";
-  if (std::isfinite(stored.error_estimate)) {
+  if (std::isfinite(stored.error_estimate) && stored.error_estimate > 0.0) {  // the incremental solver's: 0
     text += "  the run's estimate " + scientific(stored.error_estimate);
     if (error > 0.0) text += ": " + shortNumber(stored.error_estimate / error, 3) + " times the true error";
     text += "\n";

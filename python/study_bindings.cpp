@@ -247,7 +247,7 @@ py::dict trueError(const SceneHandle& handle, const std::filesystem::path& solut
   if (!warning.empty()) throw std::runtime_error(warning);
   py::dict out;
   out["error"] = error;
-  out["error_estimate"] = numberOrNone(stored.error_estimate);
+  out["error_estimate"] = numberOrNone(stored.error_estimate > 0.0 ? stored.error_estimate : NAN);  // incremental: 0
   out["run_error"] = numberOrNone(stored.error);
   out["solver"] = stored.solver;
   out["seconds"] = seconds;

@@ -3,7 +3,8 @@
 # run's true error") measures, from a run's solution.h5 alone, the true error the run measured itself
 # against its own reference: on the seed scene at small settings, for a converged fas-apriori solve
 # (error near 1e-7) and for LATIN stopped after 3 iterations (error near 1e-1), to 1e-6 relative
-# (the same reference solve and measure, the forces read back bit for bit). Exit 0 when both agree;
+# (the same reference solve and measure, the forces read back bit for bit), and the incremental
+# solver's own solution at round-off. Exit 0 when every check holds;
 # each failure is printed.
 set -uo pipefail
 program=$(realpath "$1") source=$(realpath "$2") work=$3
@@ -38,5 +39,16 @@ agree fas
   --quiet
 [ $? -eq 2 ] || fail "latin stopped after 3 iterations: exit 2 expected"
 agree latin3
+# The incremental solver's solution is the reference's own (the same solve): a true error at round-off,
+# and no estimate line (the solver has none; solution.h5 holds 0).
+"$program" solve "$seed" "${small[@]}" --solver incremental --set output.frames=false --out "$work/incremental" --quiet ||
+  fail "incremental solve: exit $?"
+printed=$("$program" true-error "$seed" "${small[@]}" --solution "$work/incremental/solution.h5" --quiet)
+echo "$printed"
+python3 - "$printed" <<'PY' || fail "incremental: a true error at round-off and no estimate expected"
+import re, sys
+text = sys.argv[1]
+sys.exit(0 if float(re.search(r"^true error (\S+) ", text, re.M).group(1)) <= 1e-12 and "estimate" not in text else 1)
+PY
 [ $failures -eq 0 ] && echo "ok: the command measures the runs' own true errors"
 exit $((failures > 0))
