@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "stcontact/core/interruption.hpp"
 #include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/linalg/dense_product.hpp"
 #include "stcontact/linalg/ranks.hpp"
@@ -69,9 +70,12 @@ int ControlledGlobalStage::seed(const Eigen::MatrixXd& directions) {
 }
 
 void ControlledGlobalStage::solvePendingNoted(const Eigen::VectorXd& loosening, const std::string& which) {
-  if (!note_) return basis_.solvePending(loosening);
+  // In parts on an iterative backend (the same numbers), told when there is a note, and a caller's
+  // stop between them (src/core/interruption.hpp): at 10⁶ dofs a first relaxation's directions take
+  // more than ten minutes and make no record.
   NotedPhase phase(note_, "global stage: ", note_interval_);
   basis_.solvePending(loosening, [&](Eigen::Index solved, Eigen::Index pending) {
+    stopPoint();
     phase.during(std::to_string(solved) + " of " + std::to_string(pending) + " " + which + " directions solved (" +
                  std::to_string(basis_.size()) + " in all)");
   });

@@ -13,20 +13,24 @@ CallbackBridge::CallbackBridge(py::object callback) : callback_(std::move(callba
 }
 
 IterationCallback CallbackBridge::withUserCallback() {
-  return [this](const IterationRecord& record) { return keepGoing(record, true); };
+  return [this](const IterationRecord& record) { return keepGoing(&record); };
 }
 
 IterationCallback CallbackBridge::signalsOnly() {
-  return [this](const IterationRecord& record) { return keepGoing(record, false); };
+  return [this](const IterationRecord&) { return keepGoing(nullptr); };
 }
 
-bool CallbackBridge::keepGoing(const IterationRecord& record, bool call_user) {
+std::function<bool()> CallbackBridge::stopProbe() {
+  return [this] { return keepGoing(nullptr); };
+}
+
+bool CallbackBridge::keepGoing(const IterationRecord* record) {
   py::gil_scoped_acquire lock;
   if (pending_) return false;
   try {
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    if (!call_user || callback_.is_none()) return true;
-    const py::object answer = callback_(record);
+    if (!record || callback_.is_none()) return true;
+    const py::object answer = callback_(*record);
     if (answer.is_none()) return true;
     // NaN is true to Python: a callback whose test went NaN would go on silently.
     if (PyFloat_Check(answer.ptr()) && !std::isfinite(PyFloat_AsDouble(answer.ptr()))) {

@@ -7,6 +7,7 @@
 // rethrowPending() raises the exception (KeyboardInterrupt, or whatever the callback raised).
 #include <pybind11/pybind11.h>
 
+#include <functional>
 #include <optional>
 
 #include "stcontact/solver/solve_summary.hpp"
@@ -25,6 +26,10 @@ class CallbackBridge {
   IterationCallback withUserCallback();
   /// Signals only: for the solves the call makes on the way (the incremental reference).
   IterationCallback signalsOnly();
+  /// Signals only, with no record: the StopProbe (src/core/interruption.hpp) a call holds while it
+  /// solves, asked between the parts of what makes no record (a first relaxation's directions, a
+  /// sub-grid of instants, the Delassus columns), which then throw stc::Interrupted.
+  std::function<bool()> stopProbe();
 
   /// True once an exception is pending (later solves of the same call should not start).
   bool interrupted() const { return pending_.has_value(); }
@@ -32,7 +37,7 @@ class CallbackBridge {
   void rethrowPending();
 
  private:
-  bool keepGoing(const IterationRecord& record, bool call_user);
+  bool keepGoing(const IterationRecord* record);  // record null: signals only
 
   py::object callback_;
   std::optional<py::error_already_set> pending_;

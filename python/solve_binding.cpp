@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "stcontact/core/interruption.hpp"
 #include "stcontact/core/memory.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/contact_tables.hpp"
@@ -194,10 +195,9 @@ py::dict resultDict(const SceneHandle& run, SolveResult&& result, const Prepared
   return out;
 }
 
-/// The reference (unless not wanted, see solve_command.cpp), then the strategy; the lock released.
-SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_reference, SolveInputs inputs,
-                     CallbackBridge& bridge, std::string& warning, std::optional<double>& reference_s) {
-  py::gil_scoped_release unlocked;
+/// The reference (unless not wanted, see solve_command.cpp), then the strategy.
+SolveResult solveWithReference(const Problem& problem, const Scene& scene, bool with_reference, SolveInputs inputs,
+                               CallbackBridge& bridge, std::string& warning, std::optional<double>& reference_s) {
   std::unique_ptr<ErrorReference> reference;
   if (computesReference(problem, scene.solver.strategy,
                         with_reference ? ReferenceWish::UpToMaxNodes : ReferenceWish::Never)) {
@@ -210,6 +210,21 @@ SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_refer
   inputs.converged_lambda = reference ? &reference->referenceForces() : nullptr;
   inputs.callback = bridge.withUserCallback();
   return solve(problem, scene.solver, inputs);
+}
+
+/// solveWithReference with the lock released and Ctrl-C heard where the solve makes no record too
+/// (src/core/interruption.hpp, StopProbe): stopped there, it returns nothing, its KeyboardInterrupt
+/// pending in `bridge`.
+SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_reference, SolveInputs inputs,
+                     CallbackBridge& bridge, std::string& warning, std::optional<double>& reference_s) {
+  py::gil_scoped_release unlocked;
+  const StopProbe probe(bridge.stopProbe());
+  try {
+    return solveWithReference(problem, scene, with_reference, std::move(inputs), bridge, warning, reference_s);
+  } catch (const Interrupted&) {
+    if (!bridge.interrupted()) throw;
+    return {};
+  }
 }
 
 py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart warm, py::object callback) {

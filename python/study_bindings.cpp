@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/interruption.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/stored_solution.hpp"
 #include "stcontact/io/run_folder.hpp"
@@ -33,7 +34,14 @@ namespace {
 /// (studies/solution_svd.hpp). Lock released; a Ctrl-C stops the incremental solve.
 pgd::SpaceTimeSvd energySvdOfSolution(const Problem& problem, int modes, CallbackBridge& bridge) {
   py::gil_scoped_release unlocked;
-  const SolutionHistory history = incrementalHistory(problem, bridge.signalsOnly());
+  const StopProbe probe(bridge.stopProbe());  // Ctrl-C in the Delassus columns too (src/core/interruption.hpp)
+  SolutionHistory history;
+  try {
+    history = incrementalHistory(problem, bridge.signalsOnly());
+  } catch (const Interrupted&) {
+    if (!bridge.interrupted()) throw;
+    return {};
+  }
   if (bridge.interrupted()) return {};
   if (!history.solved.summary.converged())
     throw std::runtime_error("the incremental solver did not converge (" + history.solved.summary.message +
@@ -105,10 +113,24 @@ std::string callText(const SceneHandle& handle, const std::vector<Strategy>& sol
   return text + ")";
 }
 
-/// The runs of `stcontact compare` (cli/compare_command.cpp): the reference, then each strategy.
+void measureEach(Comparison& comparison, const Problem& problem, const SolverSpec& spec,
+                 const std::vector<Strategy>& solvers, int repeats, CallbackBridge& bridge);
+
+/// The runs of `stcontact compare` (cli/compare_command.cpp): the reference, then each strategy, the
+/// lock released; stopped by Ctrl-C, its KeyboardInterrupt pending in `bridge`.
 void measureAll(Comparison& comparison, const Problem& problem, const SolverSpec& spec,
                 const std::vector<Strategy>& solvers, int repeats, CallbackBridge& bridge) {
   py::gil_scoped_release unlocked;
+  const StopProbe probe(bridge.stopProbe());  // Ctrl-C where no record is made (src/core/interruption.hpp)
+  try {
+    measureEach(comparison, problem, spec, solvers, repeats, bridge);
+  } catch (const Interrupted&) {
+    if (!bridge.interrupted()) throw;
+  }
+}
+
+void measureEach(Comparison& comparison, const Problem& problem, const SolverSpec& spec,
+                 const std::vector<Strategy>& solvers, int repeats, CallbackBridge& bridge) {
   const ReferenceSolution reference = computeReference(problem, nullptr);
   comparison.reference_s = reference.total_s;
   const CompareContext context{problem, spec, reference, repeats, nullptr, {}, bridge.signalsOnly()};
@@ -237,10 +259,16 @@ py::dict trueError(const SceneHandle& handle, const std::filesystem::path& solut
   double error = 0.0, seconds = 0.0;
   {
     py::gil_scoped_release unlocked;
+    const StopProbe probe(bridge.stopProbe());  // Ctrl-C where no record is made (src/core/interruption.hpp)
     const auto start = std::chrono::steady_clock::now();
     PreparedOperators operators(run.scene().solver.linearAtTolerance());
-    const std::unique_ptr<ErrorReference> reference = solveReference(*problem, bridge.signalsOnly(), warning, operators);
-    if (reference) error = reference->relativeError(stored.lambda);
+    try {
+      const std::unique_ptr<ErrorReference> reference =
+          solveReference(*problem, bridge.signalsOnly(), warning, operators);
+      if (reference) error = reference->relativeError(stored.lambda);
+    } catch (const Interrupted&) {
+      if (!bridge.interrupted()) throw;
+    }
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   bridge.rethrowPending();

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "stcontact/core/interruption.hpp"
 #include "stcontact/fas/apriori/apriori_basis.hpp"
 #include "stcontact/fas/fas_solver.hpp"
 #include "stcontact/problem/time_subgrid.hpp"
@@ -61,7 +62,7 @@ IterationCallback subgridProgress(NotedPhase& phase) {
     std::snprintf(estimate, sizeof estimate, "%.2e", r.error_estimate);
     phase.during("relaxation " + std::to_string(r.relaxations) + ", estimate " + estimate + ", " +
                  std::to_string(r.sparse_solves) + " sparse solves");
-    return true;
+    return keepGoing();  // a caller's stop (src/core/interruption.hpp): the caller's callback sees no record here
   };
 }
 
@@ -96,6 +97,8 @@ SolveResult solveFasNestedInTime(const Problem& problem, pgd::ControlledGlobalSt
                         .start = &subgrid_start,
                         .origin = {.clock = origin.clock, .krylov = origin.krylov}};
   const SolveResult coarse = solveOnGrid(subgrid, stage, subgrid_options, own, coarse_basis);
+  // Only keepGoing() stops it (subgridProgress): the caller asked to stop.
+  if (coarse.summary.termination == Termination::StoppedByCallback) throw Interrupted();
   stage.retime(problem);
   SubgridCost cost{subgrid.numSteps(), q, coarse.summary.relaxations,
                    static_cast<int>(stage.sparseSolves() - solves_before), 0.0, coarse.summary.converged()};

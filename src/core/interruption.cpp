@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <utility>
 #include <cstdio>
 #include <map>
 #include <mutex>
@@ -63,6 +64,22 @@ int interruptionSignal() noexcept { return requested.load() > 0 ? requested.load
 
 void throwIfInterrupted() {
   if (interruptionRequested()) throw Interrupted();
+}
+
+namespace {
+thread_local std::function<bool()> stop_probe;  // the thread's StopProbe's, or none
+}  // namespace
+
+StopProbe::StopProbe(std::function<bool()> keep_going) : previous_(std::move(stop_probe)) {
+  stop_probe = std::move(keep_going);
+}
+
+StopProbe::~StopProbe() { stop_probe = std::move(previous_); }
+
+bool keepGoing() { return !interruptionRequested() && (!stop_probe || stop_probe()); }
+
+void stopPoint() {
+  if (!keepGoing()) throw Interrupted();
 }
 
 void stopOnSignals() {

@@ -9,6 +9,7 @@
 // and ends the process with the same status and message. So a run stops at any moment, and leaves
 // its output folder as it was.
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,6 +34,30 @@ void clearInterruption() noexcept;
 bool interruptionRequested() noexcept;
 /// The signal of the request (0: a caller's, or none).
 int interruptionSignal() noexcept;
+
+/// A caller's own stop for the phases of a solve that make no iteration record and so never ask its
+/// callback (a first relaxation's new directions, solved for minutes at 10⁶ dofs; the sub-grid of
+/// nested iteration in time; the incremental solver's Delassus columns): while a StopProbe lives,
+/// keepGoing() on the thread that made it asks `keep_going` too. The Python module's probe answers
+/// false once Ctrl-C was pressed (python/callback_bridge.hpp). Scopes nest: the previous probe comes
+/// back when one ends.
+class StopProbe {
+ public:
+  explicit StopProbe(std::function<bool()> keep_going);
+  ~StopProbe();
+  StopProbe(const StopProbe&) = delete;
+  StopProbe& operator=(const StopProbe&) = delete;
+
+ private:
+  std::function<bool()> previous_;
+};
+
+/// Whether the run may go on: no stop requested, and the calling thread's StopProbe, if any, agrees.
+bool keepGoing();
+/// Throws Interrupted unless keepGoing(): where a phase that makes no iteration record may stop,
+/// between its parts. The caller catches it (the program: exit 128 + the signal, nothing written;
+/// the Python module: KeyboardInterrupt).
+void stopPoint();
 
 /// Seconds a run has, after a signal, to stop on its own before the process ends it.
 inline constexpr double kStopGrace = 1.0;

@@ -13,6 +13,7 @@
 #include "stcontact/contact/contact_state.hpp"
 #include "stcontact/core/clock.hpp"
 #include "stcontact/core/input_error.hpp"
+#include "stcontact/core/interruption.hpp"
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/cone_newton.hpp"
 #include "stcontact/incremental/form_choice.hpp"
@@ -329,6 +330,7 @@ void learnZoneColumns(LazyDelassus& delassus, const std::vector<int>& zone, int 
   phase.begin("the Delassus columns of the " + std::to_string(zone.size()) + " nodes within reach, " +
               std::to_string(d * static_cast<int>(zone.size())) + " sparse solves");
   delassus.ensure(zone, [&](int done, int missing) {
+    stopPoint();  // a caller's stop between chunks (src/core/interruption.hpp): no record before the march
     if (done < missing)  // the last chunk's line is the end's
       phase.during(std::to_string(done) + " of " + std::to_string(missing) + " nodes, " +
                    std::to_string(delassus.sparseSolves() - before) + " sparse solves");

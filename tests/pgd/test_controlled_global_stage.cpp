@@ -16,6 +16,7 @@
 
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/build_config.hpp"
+#include "stcontact/core/interruption.hpp"
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
 #include "stcontact/latin/global_stage.hpp"
@@ -171,6 +172,31 @@ TEST(ControlledGlobalStage, NotesWhereItsEnrichmentIsAndSolvesAsASilentOne) {
                            std::to_string(noted.basis().size()) + " new directions solved (" +
                            std::to_string(noted.basis().size()) + " in all), ";
   EXPECT_EQ(lines.back().rfind(last, 0), 0u) << lines.back();
+#endif
+}
+
+// A caller's stop (src/core/interruption.hpp, StopProbe) is heard between the parts of a long solve
+// of directions, which makes no record: on CG + GAMG, where each direction is a solve, seeding 40
+// directions throws stc::Interrupted after the first part of ResponseBasis::kProgressColumns, the
+// other directions left unsolved.
+TEST(ControlledGlobalStage, HearsACallersStopBetweenThePartsOfItsDirections) {
+#if !STC_HAVE_PETSC
+  GTEST_SKIP() << "without PETSc the factor condenses the interface: no solve per direction to stop between";
+#else
+  const auto& f = fixture();
+  stc::LinearSolverOptions linear;
+  linear.backend = stc::LinearBackend::CgGamg;
+  linear.rtol = 1e-10;
+  stc::PreparedOperators operators(linear);
+  stc::pgd::ControlledGlobalStage stage(f.problem, {}, operators);
+  int asked = 0;
+  const stc::StopProbe probe([&] { return ++asked < 1; });
+  const Eigen::MatrixXd seeds = Eigen::MatrixXd::Random(f.problem.contact.rows(), 40);
+  EXPECT_THROW(stage.seed(seeds), stc::Interrupted);
+  EXPECT_EQ(asked, 1);
+  long long solved = 0;
+  for (const stc::Preparation& p : operators.preparations()) solved += p.krylov.solves;
+  EXPECT_EQ(solved, stage.basis().loadResponses().cols() + stc::pgd::ResponseBasis::kProgressColumns);
 #endif
 }
 

@@ -36,6 +36,25 @@ def test_sigint_during_a_solve_raises_keyboard_interrupt(long_scene):
     assert time.monotonic() - start < 5.0  # stopped at the next iteration, not at the end
 
 
+def test_sigint_during_a_phase_without_records_raises_keyboard_interrupt():
+    """fas-apriori's sub-grid of instants (nested iteration in time) makes no record of the solve, so
+    the callback is not called there: here, held at an unreachable tolerance, it runs about 18 s (2000
+    relaxations on 2001 instants) before the whole grid's first record. Ctrl-C is heard between its
+    relaxations all the same (the module's StopProbe, src/core/interruption.hpp)."""
+    records = []
+    timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            stcontact.solve(SEED_SCENE, "fas-apriori", tol=1e-30, max_iterations=1_000_000, reference=False,
+                            sets=["time.steps=20001", "output.frames=false", "solver.nested_tolerance=1e-30"],
+                            callback=records.append, spatial_modes=False)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - start < 5.0 and records == []  # stopped within the sub-grid
+
+
 def test_other_threads_run_while_the_solver_computes(long_scene):
     """A second thread ticks every millisecond. Had the solve held the lock, it could tick only while
     the main thread runs Python code, i.e. inside the callbacks (and a moment after them); it ticks

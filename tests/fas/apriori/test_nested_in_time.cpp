@@ -9,6 +9,7 @@
 
 #include "fixtures/seed_scene.hpp"
 #include "stcontact/build_config.hpp"
+#include "stcontact/core/interruption.hpp"
 #include "stcontact/fas/apriori/nested_in_time.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
 #include "strategies/strategy_fixture.hpp"
@@ -162,6 +163,23 @@ TEST(NestedInTime, TheSubgridsRelaxationsAreToldAsAPhase) {
   EXPECT_EQ(told.summary.relaxations, silent.summary.relaxations);
   EXPECT_EQ(told.summary.sparseSolves(), silent.summary.sparseSolves());
   EXPECT_TRUE(told.interface.lambda == silent.interface.lambda);
+}
+
+// A caller's stop (src/core/interruption.hpp, StopProbe) is heard between the sub-grid's relaxations,
+// which make no record of the solve: the solve ends there with stc::Interrupted, before the whole
+// grid's first record (the callback is never called). The probe is asked once per sub-grid
+// relaxation; it says stop at its third question.
+TEST(NestedInTime, ACallersStopIsHeardInTheSubgrid) {
+  int asked = 0, records = 0;
+  const stc::StopProbe probe([&] { return ++asked < 3; });
+  stc::SolveInputs inputs;
+  inputs.callback = [&](const stc::IterationRecord&) {
+    ++records;
+    return true;
+  };
+  EXPECT_THROW(solveApriori(101, inputs), stc::Interrupted);
+  EXPECT_EQ(asked, 3);
+  EXPECT_EQ(records, 0);
 }
 
 // On every node (no reduced interface, whose later rounds would not nest): 3 relaxations are not
