@@ -27,6 +27,9 @@
 // solves), or where F reaches the noise of the solves (kNoiseMargin below): the forces are read off
 // an equilibrium solved to a relative residual, so they are as exact as the solves and no more.
 //
+// Globalised as the interface form's Newton (newton_instant.hpp): backtracking on ‖F‖₂ along the
+// step in u, the forces read off the equilibrium at each trial point (no solve).
+//
 // Cost: one solve per iteration, each warm (about two per instant in contact on the presses); the
 // backend's preconditioner of K_ff reused for every held set (cg-gamg), so no set-up after the
 // first. Each instant starts from the linear extrapolation of the two before (u and λ, hence the
@@ -90,6 +93,10 @@ class WholeBodyLaw {
                    std::vector<Eigen::Triplet<double>>& rows, std::vector<int>& dofs, Eigen::VectorXd& b) const;
 
   void predict(int k, const Eigen::VectorXd& lambda_previous, InstantOutcome& out);
+  /// The step from u_from (where ‖F‖₂ was phi0) to u_ shortened until ‖F‖₂ decreases (the .cpp):
+  /// u_, out's λ and v, and e at the point taken.
+  void backtrack(const Eigen::VectorXd& u_from, double phi0, const Eigen::VectorXd& f,
+                 const Eigen::VectorXd& v_previous, InstantOutcome& out, Evaluation& e);
 
   const Problem& problem_;
   const ContactInterface& contact_;
