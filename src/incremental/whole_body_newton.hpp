@@ -93,8 +93,10 @@ class WholeBodyLaw {
                    std::vector<Eigen::Triplet<double>>& rows, std::vector<int>& dofs, Eigen::VectorXd& b) const;
 
   void predict(int k, const Eigen::VectorXd& lambda_previous, InstantOutcome& out);
-  /// The step from u_from (where ‖F‖₂ was phi0) to u_ shortened until ‖F‖₂ decreases (the .cpp):
-  /// u_, out's λ and v, and e at the point taken.
+  /// Whether the instant stops at out's iterate (its residual set), and the step from u_from (where
+  /// ‖F‖₂ was phi0) to u_ shortened until ‖F‖₂ decreases (the .cpp): u_, out's λ and v, and e at the
+  /// point taken.
+  bool stops(InstantOutcome& out, const Evaluation& e, const Eigen::VectorXd& v_previous, double tolerance) const;
   void backtrack(const Eigen::VectorXd& u_from, double phi0, const Eigen::VectorXd& f,
                  const Eigen::VectorXd& v_previous, InstantOutcome& out, Evaluation& e);
 
