@@ -52,6 +52,14 @@ double distance(const stc::Problem& p, const stc::InterfaceHistory& a, const stc
   return std::sqrt(stc::latin::searchNormSquared(p.contact.search_direction, a.v - b.v, a.lambda - b.lambda));
 }
 
+// CG + GAMG to a relative residual of 1e-10: each direction its own solve, none condensed.
+[[maybe_unused]] stc::LinearSolverOptions cgGamg() {
+  stc::LinearSolverOptions linear;
+  linear.backend = stc::LinearBackend::CgGamg;
+  linear.rtol = 1e-10;
+  return linear;
+}
+
 }  // namespace
 
 TEST(ResponseBasis, DirectionsAreOrthonormalInTheInverseSearchProductAndResponsesExact) {
@@ -155,10 +163,7 @@ TEST(ControlledGlobalStage, NotesWhereItsEnrichmentIsAndSolvesAsASilentOne) {
   GTEST_SKIP() << "without PETSc the factor condenses the interface: no solve per direction to tell";
 #else
   const auto& f = fixture();
-  stc::LinearSolverOptions linear;
-  linear.backend = stc::LinearBackend::CgGamg;
-  linear.rtol = 1e-10;
-  stc::PreparedOperators operators(linear);
+  stc::PreparedOperators operators(cgGamg());
   stc::pgd::ControlledGlobalStage silent(f.problem, {}, operators), noted(f.problem, {}, operators);
   ASSERT_FALSE(noted.basis().condensesInterface());
   std::vector<std::string> lines;
@@ -184,10 +189,7 @@ TEST(ControlledGlobalStage, HearsACallersStopBetweenThePartsOfItsDirections) {
   GTEST_SKIP() << "without PETSc the factor condenses the interface: no solve per direction to stop between";
 #else
   const auto& f = fixture();
-  stc::LinearSolverOptions linear;
-  linear.backend = stc::LinearBackend::CgGamg;
-  linear.rtol = 1e-10;
-  stc::PreparedOperators operators(linear);
+  stc::PreparedOperators operators(cgGamg());
   stc::pgd::ControlledGlobalStage stage(f.problem, {}, operators);
   int asked = 0;
   const stc::StopProbe probe([&] { return ++asked < 1; });
