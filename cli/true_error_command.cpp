@@ -6,16 +6,15 @@
 #include "stcontact/cli/true_error_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
+#include <string>
 
 #include "stcontact/cli/terminal_progress.hpp"
 #include "stcontact/cli/threads_option.hpp"
-#include "stcontact/core/clock.hpp"
 #include "stcontact/core/interruption.hpp"
-#include "stcontact/io/stored_solution.hpp"
 #include "stcontact/scene/scene_reader.hpp"
 #include "stcontact/studies/number_format.hpp"
 #include "stcontact/studies/reference.hpp"
@@ -31,10 +30,12 @@ std::string scientific(double x) {
 
 // The report: the true error, then what the run said of itself (its estimate, and its own true error
 // when it measured one).
-std::string report(const StoredSolution& stored, double error, double measure_s) {
+std::string report(const StoredSolutionError& measured) {
+  const StoredSolution& stored = measured.stored;
+  const double error = measured.error;
   std::string text = "true error " + scientific(error) + " (" + stored.solver + "'s solution in " + stored.file +
-                     ", against the incremental reference; measured in " + shortNumber(measure_s, 3) + " s)\n";
-  if (std::isfinite(stored.error_estimate) && stored.error_estimate > 0.0) {  // the incremental solver's: 0
+                     ", against the incremental reference; measured in " + shortNumber(measured.seconds, 3) + " s)\n";
+  if (std::isfinite(stored.error_estimate)) {
     text += "  the run's estimate " + scientific(stored.error_estimate);
     if (error > 0.0) text += ": " + shortNumber(stored.error_estimate / error, 3) + " times the true error";
     text += "\n";
@@ -62,21 +63,21 @@ CLI::App* addTrueErrorCommand(CLI::App& app, TrueErrorArgs& args) {
 int runTrueError(const TrueErrorArgs& args) {
   const Scene scene = readScene(args.scene, args.overrides);
   const Problem problem = buildProblem(scene);
-  const StoredSolution stored = readStoredSolution(args.solution);
-  requireSolvedOn(stored, problem, scene.model_json);  // before the reference's cost
+  PreparedOperators operators(scene.solver.linearAtTolerance());
   TerminalProgress progress(args.quiet);
-  const auto start = std::chrono::steady_clock::now();
-  ReferenceSolution reference;
-  try {
-    reference = computeReference(problem, &progress);
-  } catch (const std::runtime_error& e) {
-    throwIfInterrupted();
-    std::cerr << e.what() << std::endl;
-    return 2;
+  std::string warning;
+  std::optional<StoredSolutionError> measured;
+  {
+    const RunProgress run(&progress, "reference (incremental)");
+    measured = measureStoredSolution(problem, scene.model_json, args.solution, operators, run.callback(), warning,
+                                     run.phaseNote());
   }
   throwIfInterrupted();
-  const double error = reference.reference->relativeError(stored.lambda);
-  std::cout << report(stored, error, secondsSince(start));
+  if (!measured) {
+    std::cerr << warning << std::endl;
+    return 2;
+  }
+  std::cout << report(*measured);
   return 0;
 }
 

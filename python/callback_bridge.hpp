@@ -10,6 +10,7 @@
 #include <functional>
 #include <optional>
 
+#include "stcontact/core/interruption.hpp"
 #include "stcontact/solver/solve_summary.hpp"
 
 namespace stc::python {
@@ -30,6 +31,21 @@ class CallbackBridge {
   /// solves, asked between the parts of what makes no record (a first relaxation's directions, a
   /// sub-grid of instants, the Delassus columns), which then throw stc::Interrupted.
   std::function<bool()> stopProbe();
+
+  /// Runs `work` (the lock released by the caller) with stopProbe() held: false when Ctrl-C stopped it
+  /// between the parts of a phase without records (stc::Interrupted), its KeyboardInterrupt pending
+  /// for rethrowPending(); an Interrupted the bridge did not ask for goes on up.
+  template <class Work>
+  bool runStoppable(Work&& work) {
+    const StopProbe probe(stopProbe());
+    try {
+      work();
+      return true;
+    } catch (const Interrupted&) {
+      if (!interrupted()) throw;
+      return false;
+    }
+  }
 
   /// True once an exception is pending (later solves of the same call should not start).
   bool interrupted() const { return pending_.has_value(); }

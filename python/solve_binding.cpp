@@ -14,7 +14,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "stcontact/core/interruption.hpp"
 #include "stcontact/core/memory.hpp"
 #include "stcontact/io/atomic_file.hpp"
 #include "stcontact/io/contact_tables.hpp"
@@ -218,13 +217,10 @@ SolveResult solveWithReference(const Problem& problem, const Scene& scene, bool 
 SolveResult runSolve(const Problem& problem, const Scene& scene, bool with_reference, SolveInputs inputs,
                      CallbackBridge& bridge, std::string& warning, std::optional<double>& reference_s) {
   py::gil_scoped_release unlocked;
-  const StopProbe probe(bridge.stopProbe());
-  try {
-    return solveWithReference(problem, scene, with_reference, std::move(inputs), bridge, warning, reference_s);
-  } catch (const Interrupted&) {
-    if (!bridge.interrupted()) throw;
-    return {};
-  }
+  SolveResult result;
+  bridge.runStoppable(
+      [&] { result = solveWithReference(problem, scene, with_reference, std::move(inputs), bridge, warning, reference_s); });
+  return result;
 }
 
 py::dict solve(const SceneHandle& handle, const SolveOptions& options, WarmStart warm, py::object callback) {

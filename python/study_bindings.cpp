@@ -6,14 +6,11 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <optional>
 
 #include "stcontact/core/input_error.hpp"
-#include "stcontact/core/interruption.hpp"
 #include "stcontact/io/atomic_file.hpp"
-#include "stcontact/io/stored_solution.hpp"
 #include "stcontact/io/run_folder.hpp"
 #include "stcontact/pgd/space_time_svd.hpp"
 #include "stcontact/python/bindings.hpp"
@@ -34,14 +31,8 @@ namespace {
 /// (studies/solution_svd.hpp). Lock released; a Ctrl-C stops the incremental solve.
 pgd::SpaceTimeSvd energySvdOfSolution(const Problem& problem, int modes, CallbackBridge& bridge) {
   py::gil_scoped_release unlocked;
-  const StopProbe probe(bridge.stopProbe());  // Ctrl-C in the Delassus columns too (src/core/interruption.hpp)
-  SolutionHistory history;
-  try {
-    history = incrementalHistory(problem, bridge.signalsOnly());
-  } catch (const Interrupted&) {
-    if (!bridge.interrupted()) throw;
-    return {};
-  }
+  SolutionHistory history;  // Ctrl-C in the Delassus columns too (CallbackBridge::runStoppable)
+  if (!bridge.runStoppable([&] { history = incrementalHistory(problem, bridge.signalsOnly()); })) return {};
   if (bridge.interrupted()) return {};
   if (!history.solved.summary.converged())
     throw std::runtime_error("the incremental solver did not converge (" + history.solved.summary.message +
@@ -113,22 +104,7 @@ std::string callText(const SceneHandle& handle, const std::vector<Strategy>& sol
   return text + ")";
 }
 
-void measureEach(Comparison& comparison, const Problem& problem, const SolverSpec& spec,
-                 const std::vector<Strategy>& solvers, int repeats, CallbackBridge& bridge);
-
-/// The runs of `stcontact compare` (cli/compare_command.cpp): the reference, then each strategy, the
-/// lock released; stopped by Ctrl-C, its KeyboardInterrupt pending in `bridge`.
-void measureAll(Comparison& comparison, const Problem& problem, const SolverSpec& spec,
-                const std::vector<Strategy>& solvers, int repeats, CallbackBridge& bridge) {
-  py::gil_scoped_release unlocked;
-  const StopProbe probe(bridge.stopProbe());  // Ctrl-C where no record is made (src/core/interruption.hpp)
-  try {
-    measureEach(comparison, problem, spec, solvers, repeats, bridge);
-  } catch (const Interrupted&) {
-    if (!bridge.interrupted()) throw;
-  }
-}
-
+/// The runs of `stcontact compare` (cli/compare_command.cpp): the reference, then each strategy.
 void measureEach(Comparison& comparison, const Problem& problem, const SolverSpec& spec,
                  const std::vector<Strategy>& solvers, int repeats, CallbackBridge& bridge) {
   const ReferenceSolution reference = computeReference(problem, nullptr);
@@ -141,6 +117,13 @@ void measureEach(Comparison& comparison, const Problem& problem, const SolverSpe
   if (bridge.interrupted()) return;
   comparison.memory_method = describeMemoryMethod(comparison.strategies.front().memory.since_reset);
   comparison.load_after = loadAverage();
+}
+
+/// measureEach with the lock released; stopped by Ctrl-C, its KeyboardInterrupt pending in `bridge`.
+void measureAll(Comparison& comparison, const Problem& problem, const SolverSpec& spec,
+                const std::vector<Strategy>& solvers, int repeats, CallbackBridge& bridge) {
+  py::gil_scoped_release unlocked;
+  bridge.runStoppable([&] { measureEach(comparison, problem, spec, solvers, repeats, bridge); });
 }
 
 /// The points of one run as arrays (work_precision.csv's columns).
@@ -243,8 +226,7 @@ py::dict compare(const SceneHandle& handle, const CompareOptions& o) {
 // A NaN of solution.h5 (no estimate, no true error measured) as None.
 py::object numberOrNone(double x) { return std::isfinite(x) ? py::object(py::float_(x)) : py::none(); }
 
-/// `stcontact true-error`: the true error of a run's solution.h5 (src/io/stored_solution.hpp) against
-/// the incremental reference of `handle`'s scene, with the run's estimate and own true error. Lock
+/// `stcontact true-error` (studies/reference.hpp, measureStoredSolution) on `handle`'s scene. Lock
 /// released for the reference and the measure; a Ctrl-C stops the reference.
 py::dict trueError(const SceneHandle& handle, const std::filesystem::path& solution, const std::vector<std::string>& sets,
                    std::optional<int> threads) {
@@ -252,33 +234,25 @@ py::dict trueError(const SceneHandle& handle, const std::filesystem::path& solut
   const ThreadsForCall thread_count(threads);
   const SceneHandle run = handle.withOverrides(sets);
   const std::shared_ptr<const Problem> problem = run.problem();
-  const StoredSolution stored = readStoredSolution(solution);
-  requireSolvedOn(stored, *problem, run.scene().model_json);
   CallbackBridge bridge;
   std::string warning;
-  double error = 0.0, seconds = 0.0;
+  std::optional<StoredSolutionError> measured;
   {
     py::gil_scoped_release unlocked;
-    const StopProbe probe(bridge.stopProbe());  // Ctrl-C where no record is made (src/core/interruption.hpp)
-    const auto start = std::chrono::steady_clock::now();
     PreparedOperators operators(run.scene().solver.linearAtTolerance());
-    try {
-      const std::unique_ptr<ErrorReference> reference =
-          solveReference(*problem, bridge.signalsOnly(), warning, operators);
-      if (reference) error = reference->relativeError(stored.lambda);
-    } catch (const Interrupted&) {
-      if (!bridge.interrupted()) throw;
-    }
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    bridge.runStoppable([&] {
+      measured = measureStoredSolution(*problem, run.scene().model_json, solution, operators, bridge.signalsOnly(),
+                                       warning);
+    });
   }
   bridge.rethrowPending();
-  if (!warning.empty()) throw std::runtime_error(warning);
+  if (!measured) throw std::runtime_error(warning);
   py::dict out;
-  out["error"] = error;
-  out["error_estimate"] = numberOrNone(stored.error_estimate > 0.0 ? stored.error_estimate : NAN);  // incremental: 0
-  out["run_error"] = numberOrNone(stored.error);
-  out["solver"] = stored.solver;
-  out["seconds"] = seconds;
+  out["error"] = measured->error;
+  out["error_estimate"] = numberOrNone(measured->stored.error_estimate);
+  out["run_error"] = numberOrNone(measured->stored.error);
+  out["solver"] = measured->stored.solver;
+  out["seconds"] = measured->seconds;
   return out;
 }
 

@@ -59,4 +59,19 @@ std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const Ite
   }
 }
 
+std::optional<StoredSolutionError> measureStoredSolution(const Problem& problem, const std::string& model_json,
+                                                         const std::filesystem::path& file,
+                                                         PreparedOperators& operators,
+                                                         const IterationCallback& callback, std::string& warning,
+                                                         const PhaseNote& note) {
+  StoredSolutionError out{readStoredSolution(file)};
+  requireSolvedOn(out.stored, problem, model_json);
+  const auto start = Clock::now();
+  const std::unique_ptr<ErrorReference> reference = solveReference(problem, callback, warning, operators, note);
+  if (!reference) return std::nullopt;
+  out.error = reference->relativeError(out.stored.lambda);
+  out.seconds = secondsSince(start);
+  return out;
+}
+
 }  // namespace stc

@@ -1,10 +1,13 @@
 #pragma once
 // The incremental reference of a solve or a study: the exact solution on the same mesh and grid,
 // and the true-error measure on it (src/incremental/error_reference.hpp; docs/method.md §2).
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "stcontact/incremental/error_reference.hpp"
+#include "stcontact/io/stored_solution.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
 #include "stcontact/problem/problem.hpp"
 #include "stcontact/options/strategy.hpp"
@@ -45,5 +48,23 @@ ReferenceSolution computeReference(const Problem& problem, ProgressReporter* pro
 std::unique_ptr<ErrorReference> solveReference(const Problem& problem, const IterationCallback& callback,
                                                std::string& warning, PreparedOperators& operators,
                                                const PhaseNote& note = {});
+
+/// The true error of a run's written solution (src/io/stored_solution.hpp) against the incremental
+/// reference: what `stcontact true-error` and the Python module's true_error report.
+struct StoredSolutionError {
+  StoredSolution stored;
+  double error = 0.0;    ///< the relative energy error of its forces
+  double seconds = 0.0;  ///< the reference and the measure
+};
+
+/// Reads `file` and refuses it unless it was solved on `problem`, whose model is `model_json`
+/// (requireSolvedOn: before any cost), then solves the reference as solveReference does (with
+/// `operators`, `callback` and `note`) and measures the stored forces against it. None, with the
+/// reason in `warning`, when the reference stops early.
+std::optional<StoredSolutionError> measureStoredSolution(const Problem& problem, const std::string& model_json,
+                                                         const std::filesystem::path& file,
+                                                         PreparedOperators& operators,
+                                                         const IterationCallback& callback, std::string& warning,
+                                                         const PhaseNote& note = {});
 
 }  // namespace stc

@@ -166,12 +166,16 @@ InstantOutcome WholeBodyLaw::solve(int k, const Eigen::VectorXd& lambda_previous
     out.v = contact_.B * u_;
     ++out.iterations;
     e = evaluate(out.lambda, out.v, v_previous);
-    if (!stops(out, e, v_previous, tolerance)) backtrack(u_from, phi0, f, v_previous, out, e);
+    bool done = stops(out, e, v_previous, tolerance);
+    if (!done) {
+      backtrack(u_from, phi0, f, v_previous, out, e);
+      done = stops(out, e, v_previous, tolerance);
+    }
     if (!e.F.allFinite() || !std::isfinite(out.residual)) {
       out.failure = "non-finite residual";
       break;
     }
-    if (stops(out, e, v_previous, tolerance)) {
+    if (done) {
       out.converged = true;
       before_ = {u_previous, lambda_previous};
       return out;

@@ -63,11 +63,15 @@ DoubleArray Reader::doubles(const std::string& path) const {
 
 bool Reader::hasAttribute(const std::string& name) const { return H5Aexists(handle_.id(), name.c_str()) > 0; }
 
-double Reader::number(const std::string& name) const {
+Handle Reader::attribute(const std::string& name) const {
   const std::string where = this->where("/ attribute " + name);
   if (!hasAttribute(name)) fail(where, "no such attribute");
-  const Handle attribute =
-      opened(H5Aopen(handle_.id(), name.c_str(), H5P_DEFAULT), Handle::Kind::Attribute, where, "cannot open it");
+  return opened(H5Aopen(handle_.id(), name.c_str(), H5P_DEFAULT), Handle::Kind::Attribute, where, "cannot open it");
+}
+
+double Reader::number(const std::string& name) const {
+  const std::string where = this->where("/ attribute " + name);
+  const Handle attribute = this->attribute(name);
   const Handle type = opened(H5Aget_type(attribute.id()), Handle::Kind::Datatype, where, "no type");
   if (!isNumeric(type.id())) fail(where, "not a number");
   double value = 0.0;
@@ -77,9 +81,7 @@ double Reader::number(const std::string& name) const {
 
 std::string Reader::text(const std::string& name) const {
   const std::string where = this->where("/ attribute " + name);
-  if (!hasAttribute(name)) fail(where, "no such attribute");
-  const Handle attribute =
-      opened(H5Aopen(handle_.id(), name.c_str(), H5P_DEFAULT), Handle::Kind::Attribute, where, "cannot open it");
+  const Handle attribute = this->attribute(name);
   const Handle type = opened(H5Aget_type(attribute.id()), Handle::Kind::Datatype, where, "no type");
   if (H5Tget_class(type.id()) != H5T_STRING) fail(where, "not a string");
   if (H5Tis_variable_str(type.id()) > 0) {

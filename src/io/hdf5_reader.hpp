@@ -37,6 +37,8 @@ class Reader {
   std::string where(const std::string& path) const { return file_ + ":" + path; }
 
  private:
+  Handle attribute(const std::string& name) const;  ///< the root group's, opened; InputError when absent
+
   std::string file_;
   Handle handle_;
 };

@@ -1,5 +1,7 @@
 #include "stcontact/io/stored_solution.hpp"
 
+#include <limits>
+
 #include "stcontact/core/input_error.hpp"
 #include "stcontact/io/hdf5_reader.hpp"
 
@@ -43,7 +45,8 @@ StoredSolution readStoredSolution(const std::filesystem::path& path) {
   s.dofs = static_cast<long long>(file.number("n_dofs"));
   s.contact_nodes = static_cast<int>(file.number("n_contact_nodes"));
   s.steps = static_cast<int>(file.number("n_steps"));
-  s.error_estimate = file.number("error_estimate");
+  const double estimate = file.number("error_estimate");
+  s.error_estimate = estimate > 0.0 ? estimate : std::numeric_limits<double>::quiet_NaN();
   s.error = file.number("error");
   s.lambda = forcesOf(file, s);
   return s;

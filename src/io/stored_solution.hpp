@@ -17,8 +17,8 @@ struct StoredSolution {
   int dimension = 0, contact_nodes = 0, steps = 0;
   long long dofs = 0;
   Eigen::MatrixXd lambda;  ///< d n_C × m: column k the contact forces at instant k (SolveResult's layout)
-  double error_estimate;   ///< the estimate the run stopped on (NaN: none)
-  double error;            ///< the run's own true error (NaN: none measured)
+  double error_estimate = 0.0;  ///< the estimate the run stopped on (NaN: none, as the 0 the incremental solver writes)
+  double error = 0.0;           ///< the run's own true error (NaN: none measured)
 };
 
 /// Reads `file` (a solution.h5); InputError when it is not one (its "format" attribute) or lacks what
