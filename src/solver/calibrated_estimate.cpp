@@ -20,13 +20,20 @@ CalibratedIndicatorEstimator::CalibratedIndicatorEstimator(double safety, int co
 
 double CalibratedIndicatorEstimator::record(const InterfaceHistory& s, double indicator, double energy) {
   double bound = -1.0;
+  double calibrating = 0.0;  // the largest d_jn / η_j of the checkpoints that calibrate
+  double recent = 0.0;       // the largest d_kn / η_k of those too recent to calibrate
   for (const Checkpoint& c : checkpoints_) {
-    if (!(c.indicator >= 2.0 * safety_ * indicator)) continue;
     // ‖u_j − u_n‖²_K = Σ δv · δλ (energyProduct of the difference with itself), without temporaries.
     const double squared = (c.s.v - s.v).cwiseProduct(c.s.lambda - s.lambda).sum();
     const double distance = std::sqrt(std::max(0.0, squared));
+    if (!(c.indicator >= 2.0 * safety_ * indicator)) {
+      recent = std::max(recent, distance / c.indicator);
+      continue;
+    }
+    calibrating = std::max(calibrating, distance / c.indicator);
     bound = std::max(bound, safety_ * indicator * distance / (c.indicator - safety_ * indicator));
   }
+  if (bound > 0.0 && recent > calibrating) bound *= recent / calibrating;  // growth already seen (header)
   if (indicator < kCalibrationCeiling && (checkpoints_.empty() || indicator * spacing_ <= checkpoints_.back().indicator)) {
     checkpoints_.push_back({s, indicator});
     if (static_cast<int>(checkpoints_.size()) > count_) checkpoints_.pop_front();

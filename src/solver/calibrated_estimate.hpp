@@ -17,6 +17,15 @@
 // or a first iterate far from the fixed point: on the seed at 11 arc nodes, η = 0.53 with e/η = 0.74
 // against 2.4 two iterates later, which an estimate calibrated on it took for a converged 9.5e-5 at a
 // true error of 1.3e-4, tests/strategies/test_stopping_scan.cpp). +∞ while no checkpoint qualifies.
+// Growth already seen: the checkpoints too recent to calibrate (η_k < 2 s η_n) still show their
+// ratio d_kn/η_k; when the largest of these exceeds the largest d_jn/η_j of the calibrating ones,
+// the ratio of error to indicator has grown since j by about that excess, on top of which s allows
+// for the growth not yet seen, and the bound is multiplied by it. On the mirrored seed pair at
+// ν = 0.4999995 the ratio e/η grew from 7 to 21.6 within 7 relaxations (a slow, nearly
+// incompressible mode the indicator barely sees); the recent checkpoints showed 1.25 times the
+// calibrating ratio, and without the factor FAS stopped at a true error of 1.11e-6 for τ = 1e-6
+// (tests/strategies/test_range_scan.cpp). It narrows the gap without closing it: a mode the
+// indicator does not see at all fools any estimate made from it.
 #include <deque>
 
 #include "stcontact/spacetime/interface_history.hpp"

@@ -78,3 +78,36 @@ TEST(CalibratedIndicatorEstimator, IsInfiniteUntilAnEarlierIndicatorIsTwiceTheSa
   EXPECT_DOUBLE_EQ(scaled.record(q.at(0.01), 0.01, 4.0), absolute / 2.0);
   EXPECT_THROW(stc::CalibratedIndicatorEstimator(0.5), std::invalid_argument);
 }
+
+namespace {
+
+// An iterate at (a, b) along two K-orthogonal directions, each of ‖·‖²_K = 3: distances are √3 |Δ(a, b)|.
+stc::InterfaceHistory pointAt(double a, double b) {
+  stc::InterfaceHistory s{Eigen::MatrixXd::Zero(2, 3), Eigen::MatrixXd::Zero(2, 3)};
+  s.v(0, 0) = a;
+  s.lambda(0, 0) = 3.0 * a;
+  s.v(1, 1) = b;
+  s.lambda(1, 1) = 3.0 * b;
+  return s;
+}
+
+// Checkpoints A (η = 1e-2, calibrates the iterate at η_n = 1e-3 for s = 2.5) and B (η = 4e-3 < 2 s η_n:
+// too recent) at (0.1, 0) and (0, b), then the iterate at the origin; returns its estimate.
+double estimateWithRecentCheckpointAt(double b) {
+  stc::CalibratedIndicatorEstimator estimator(2.5);
+  estimator.record(pointAt(0.1, 0.0), 1e-2, 1.0);
+  estimator.record(pointAt(0.0, b), 4e-3, 1.0);
+  return estimator.record(pointAt(0.0, 0.0), 1e-3, 1.0);
+}
+
+}  // namespace
+
+TEST(CalibratedIndicatorEstimator, ScalesTheBoundByTheGrowthARecentCheckpointShows) {
+  const double root3 = std::sqrt(3.0);
+  const double calibrated = 2.5 * 1e-3 * 0.1 * root3 / (1e-2 - 2.5 * 1e-3);  // s η_n d_An / (η_A − s η_n)
+  const double ratio_a = 0.1 * root3 / 1e-2;
+  // B's ratio d_Bn/η_B = 0.05 √3 / 4e-3 is 1.25 times A's: the ratio has grown since A.
+  EXPECT_NEAR(estimateWithRecentCheckpointAt(0.05), calibrated * (0.05 * root3 / 4e-3) / ratio_a, 1e-15);
+  // B's ratio 0.02 √3 / 4e-3 is half A's: nothing seen, the calibrated bound alone.
+  EXPECT_NEAR(estimateWithRecentCheckpointAt(0.02), calibrated, 1e-15);
+}
