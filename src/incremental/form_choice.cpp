@@ -19,8 +19,16 @@ FormChoice chooseIncrementalForm(IncrementalForm requested, const Problem& probl
   const std::string weighed = std::to_string(m) + " instants (the whole-body form: at least a solve each) against " +
                               std::to_string(columns) + " column solves for the " + std::to_string(zone->size()) +
                               " nodes within reach (the interface form)";
-  if (m < columns) return {IncrementalForm::WholeBody, head + "whole-body; " + weighed};
+  if (m < columns) return {IncrementalForm::WholeBody, head + "whole-body; " + weighed, true};
   return {IncrementalForm::Interface, head + "interface; " + weighed};
+}
+
+bool interfaceIsCheaper(int k, int m, long columns, const MarchCost& so_far, std::optional<double> krylov_per_column) {
+  if (so_far.instants < kInstantsBeforeWeighing || so_far.solves <= 0) return false;
+  const double solves_left = static_cast<double>(m - k) * static_cast<double>(so_far.solves) / so_far.instants;
+  const double per_solve = static_cast<double>(so_far.krylov) / static_cast<double>(so_far.solves);
+  const double per_column = krylov_per_column.value_or(per_solve);
+  return solves_left * per_solve > static_cast<double>(columns) * per_column;
 }
 
 }  // namespace stc

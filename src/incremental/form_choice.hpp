@@ -14,6 +14,10 @@
 // choice per scene", scripts/incremental_forms.sh): at d |Z| / m = 0.073 (the fretting history) the
 // interface form 11× faster, at 0.55 (the shallow press, 24k dofs) 1.2× faster; at 1.5 (the shallow
 // press, 106k dofs) and 2.8 (the deep press, 24k dofs) the whole-body form 1.5× and 1.3× faster.
+// The assumed solve an instant is the presses'; a history that slides back and forth makes several
+// (the fretting history on 201 instants, d |Z| / m = 1.6: 2.4 to 3.8, the whole-body form 2.7×
+// slower), so the whole-body march "auto" chose weighs its measured rate as it goes and turns to the
+// interface form when the columns are the cheaper (interfaceIsCheaper, form_switch.hpp).
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,10 +30,32 @@ namespace stc {
 
 /// The form a run solves in, and why (the summary's remark when "auto" weighed the two forms: on a
 /// backend that holds dofs; elsewhere the interface form is the only one and the reason is empty).
+/// `may_switch`: "auto" chose the whole-body form on the rule's assumed solve per instant, and the
+/// march turns to the interface form when its measured cost says so (interfaceIsCheaper).
 struct FormChoice {
   IncrementalForm form = IncrementalForm::Interface;
   std::string reason;
+  bool may_switch = false;
 };
+
+/// The whole-body march's cost so far, for interfaceIsCheaper.
+struct MarchCost {
+  int instants = 0;       ///< instants solved
+  long solves = 0;        ///< their sparse solves
+  long long krylov = 0;   ///< the Krylov iterations of those solves
+};
+
+/// Instants a whole-body march solves before its cost per instant is weighed: the presses make 1.3
+/// to 1.7 solves per instant, and a rate over fewer instants is mostly the first instant's.
+inline constexpr int kInstantsBeforeWeighing = 8;
+
+/// Before instant k of m, whether the interface form's `columns` column solves would cost less than
+/// the whole-body form's measured cost per instant over the instants left:
+///   (m − k) · (solves / instants) · (Krylov / solve)  >  columns · (Krylov / column).
+/// Without `krylov_per_column` (no column solved yet) a column is weighed as a whole-body solve, and
+/// the answer says whether solving a few columns to weigh them is worth it. False before
+/// kInstantsBeforeWeighing instants.
+bool interfaceIsCheaper(int k, int m, long columns, const MarchCost& so_far, std::optional<double> krylov_per_column);
 
 /// `requested` when it is a form; for IncrementalForm::Auto the rule of the header on `stiffness`
 /// and the zone within reach (none: every node).

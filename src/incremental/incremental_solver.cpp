@@ -17,6 +17,7 @@
 #include "stcontact/incremental/condensed_interface.hpp"
 #include "stcontact/incremental/cone_newton.hpp"
 #include "stcontact/incremental/form_choice.hpp"
+#include "stcontact/incremental/form_switch.hpp"
 #include "stcontact/incremental/lazy_delassus.hpp"
 #include "stcontact/incremental/newton_instant.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
@@ -383,6 +384,24 @@ SolveResult solveCone(const Problem& problem, const IncrementalOptions& options,
   return liftedOrWhole(problem, factor, c, std::move(on_zone), start, on_every_node);
 }
 
+// "auto"'s whole-body march, turning to the interface form when its measured cost says so
+// (form_switch.hpp): the columns solved with learnZoneColumns's progress notes.
+SolveResult solveWholeBodyOrSwitch(const Problem& problem, const IncrementalOptions& options,
+                                   const IterationCallback& callback, const MarchClock& start,
+                                   const SpdSolver& stiffness, const std::vector<int>& zone, const PhaseNote& note) {
+  const int d = problem.contact.dimension;
+  FormSwitch form(problem, stiffness, zone,
+                  [&](LazyDelassus& delassus, const std::vector<int>& nodes) { learnZoneColumns(delassus, nodes, d, note); });
+  const auto solve_at = [&](int k, const Eigen::VectorXd& lambda, const Eigen::VectorXd& v_previous) {
+    return form.solve(k, lambda, v_previous, options);
+  };
+  SolveResult result = march(problem, callback, start, solve_at, [&] { return form.solves(); });
+  result.summary.remarks.push_back(form.remark());
+  result.summary.composeMessage();
+  result.summary.incremental_form = nameOf(form.finalForm());
+  return result;
+}
+
 // The whole-body form (whole_body_newton.hpp) on `stiffness`.
 SolveResult solveWholeBody(const Problem& problem, const IncrementalOptions& options,
                            const IterationCallback& callback, const MarchClock& start, const SpdSolver& stiffness) {
@@ -421,13 +440,15 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
       operators.stiffnessFree(problem, {zone_dofs, CholmodFactor::kTrailingWork});
   const FormChoice choice = chooseIncrementalForm(options.form, problem, *factor, zone);
   const auto solve = [&] {
+    if (choice.form == IncrementalForm::WholeBody && choice.may_switch)
+      return solveWholeBodyOrSwitch(problem, options, callback, start, *factor, *zone, inputs.phase_note);
     if (choice.form == IncrementalForm::WholeBody) return solveWholeBody(problem, options, callback, start, *factor);
     if (problem.contact.dimension == 3 || options.cone_law)
       return solveCone(problem, options, callback, start, *factor, zone, inputs.phase_note);
     return solvePlane(problem, options, callback, start, *factor, zone);
   };
   SolveResult result = remarked(solve(), choice.reason);
-  result.summary.incremental_form = nameOf(choice.form);
+  if (result.summary.incremental_form.empty()) result.summary.incremental_form = nameOf(choice.form);
   return result;
 }
 

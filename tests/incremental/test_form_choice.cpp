@@ -1,10 +1,12 @@
 // solver.incremental_form = "auto" (src/incremental/form_choice.hpp): the whole-body form on a
 // backend that holds dofs where the instants are fewer than the interface form's column solves
 // (m < d |Z|), the interface form elsewhere; the choice and its reason in the summary, and the run
-// solved in the form chosen.
+// solved in the form chosen; the whole-body march turning to the interface form when its measured
+// cost per instant says so (src/incremental/form_switch.hpp).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <numeric>
 
 #include "fixtures/hemisphere_scene.hpp"
@@ -12,6 +14,7 @@
 #include "stcontact/incremental/incremental_solver.hpp"
 #include "stcontact/incremental/reach_zone.hpp"
 #include "stcontact/operators/prepared_operators.hpp"
+#include "stcontact/scene/scene_reader.hpp"
 
 namespace {
 
@@ -109,4 +112,54 @@ TEST(IncrementalFormChoice, AutoOnCholmodIsTheInterfaceFormBitForBit) {
   EXPECT_EQ(chosen.interface.lambda, asked.interface.lambda);
   EXPECT_EQ(chosen.summary.message, asked.summary.message);
   EXPECT_EQ(chosen.summary.incremental_form, "interface");
+}
+
+TEST(IncrementalFormChoice, WeighsTheWholeBodyRateOverTheInstantsLeftAgainstTheColumns) {
+  // 8 instants in 24 solves of 40 Krylov iterations: 3 solves an instant.
+  const stc::MarchCost cost{stc::kInstantsBeforeWeighing, 24, 960};
+  // 100 instants left: 300 solves of 40 against 299 columns weighed as solves, then 301.
+  EXPECT_TRUE(stc::interfaceIsCheaper(100, 200, 299, cost, std::nullopt));
+  EXPECT_FALSE(stc::interfaceIsCheaper(100, 200, 301, cost, std::nullopt));
+  // Columns of 26 Krylov iterations: 300 · 40 = 12 000 against 461 · 26 = 11 986, then 462 · 26 = 12 012.
+  EXPECT_TRUE(stc::interfaceIsCheaper(100, 200, 461, cost, 26.0));
+  EXPECT_FALSE(stc::interfaceIsCheaper(100, 200, 462, cost, 26.0));
+  // Not before kInstantsBeforeWeighing instants, nor without a solve.
+  EXPECT_FALSE(stc::interfaceIsCheaper(7, 200, 1, {7, 21, 840}, std::nullopt));
+  EXPECT_FALSE(stc::interfaceIsCheaper(100, 200, 1, {10, 0, 0}, std::nullopt));
+}
+
+// The fretting history's ten cycles on 21 instants (divisions 4): "auto" chooses the whole-body form
+// on the assumed solve an instant (21 < d |Z| = 27), but the motion reversing every other instant
+// makes it pay 3 (24 solves in the first 8 instants); the march turns to the interface form and
+// solves what the interface form solves.
+TEST(IncrementalFormChoice, AutoTurnsToTheInterfaceFormWhereTheWholeBodyFormPaysMoreAnInstant) {
+  if (!stc::petscBackendsBuilt()) GTEST_SKIP() << "cg-gamg needs PETSc";
+  const stc::Scene scene = stc::readScene(std::filesystem::path(STC_SOURCE_DIR) / "examples/scenes/hemisphere_fretting.toml",
+                                          {"mesh.divisions=4", "time.steps=21"});
+  const stc::Problem problem = stc::buildProblem(scene);
+  const std::optional<std::vector<int>> zone = stc::reachZone(problem);
+  ASSERT_TRUE(zone.has_value());
+  ASSERT_GT(3 * static_cast<int>(zone->size()), problem.numSteps()) << "the rule must choose the whole-body form";
+  stc::PreparedOperators operators(on(stc::LinearBackend::CgGamg));
+  const stc::SolveResult chosen = stc::solveIncremental(problem, {}, {.operators = &operators});
+  ASSERT_EQ(chosen.summary.termination, stc::Termination::Converged) << chosen.summary.message;
+  EXPECT_THAT(chosen.summary.message, HasSubstr("incremental form (auto): whole-body"));
+  EXPECT_THAT(chosen.summary.message, HasSubstr("whole-body form for the first " +
+                                                std::to_string(stc::kInstantsBeforeWeighing) + " instants"));
+  EXPECT_THAT(chosen.summary.message, HasSubstr("then the interface form"));
+  EXPECT_EQ(chosen.summary.incremental_form, "interface");
+  // Fewer Krylov iterations than the whole-body form throughout; the interface form's forces to the
+  // solves' noise (test_whole_body.cpp).
+  stc::IncrementalOptions whole_body;
+  whole_body.form = stc::IncrementalForm::WholeBody;
+  stc::PreparedOperators throughout(on(stc::LinearBackend::CgGamg));
+  const stc::SolveResult whole = stc::solveIncremental(problem, whole_body, {.operators = &throughout});
+  EXPECT_LT(operators.krylovIterations(), throughout.krylovIterations());
+  EXPECT_LT(chosen.summary.sparseSolves(), whole.summary.sparseSolves());
+  stc::IncrementalOptions interface;
+  interface.form = stc::IncrementalForm::Interface;
+  stc::PreparedOperators again(on(stc::LinearBackend::CgGamg));
+  const stc::SolveResult asked = stc::solveIncremental(problem, interface, {.operators = &again});
+  const double scale = asked.interface.lambda.cwiseAbs().maxCoeff();
+  EXPECT_LE((chosen.interface.lambda - asked.interface.lambda).cwiseAbs().maxCoeff(), 1e-7 * scale);
 }
