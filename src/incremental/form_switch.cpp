@@ -39,10 +39,10 @@ bool FormSwitch::switchesBefore(int k) {
   if (!interfaceIsCheaper(k, m, columnsLeft(), at_switch_, per_column_)) return false;
   if (per_column_) return true;
   const int d = problem_.contact.dimension;
-  const std::size_t nodes = std::min(zone_.size(), static_cast<std::size_t>((kProbeColumns + d - 1) / d));
+  probe_nodes_ = std::min(zone_.size(), static_cast<std::size_t>((kProbeColumns + d - 1) / d));
   const long long before = krylov();
   const int solves_before = delassus_.sparseSolves();
-  learn_columns_(delassus_, std::vector<int>(zone_.begin(), zone_.begin() + static_cast<std::ptrdiff_t>(nodes)));
+  learn_columns_(delassus_, std::vector<int>(zone_.begin(), zone_.begin() + static_cast<std::ptrdiff_t>(probe_nodes_)));
   probe_krylov_ = krylov() - before;
   probe_columns_ = delassus_.sparseSolves() - solves_before;
   per_column_ = probe_columns_ > 0 ? static_cast<double>(probe_krylov_) / probe_columns_ : 0.0;
@@ -50,7 +50,7 @@ bool FormSwitch::switchesBefore(int k) {
 }
 
 void FormSwitch::switchToInterface(int k) {
-  learn_columns_(delassus_, zone_);
+  learn_columns_(delassus_, std::vector<int>(zone_.begin() + static_cast<std::ptrdiff_t>(probe_nodes_), zone_.end()));
   v0_ = freeInterfaceResponse(problem_, stiffness_);
   cone_.prepare(zone_);
   switched_at_ = k;

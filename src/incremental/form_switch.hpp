@@ -61,6 +61,7 @@ class FormSwitch {
   long long krylov_start_ = 0;         ///< the backend's count when the march began
   long long probe_krylov_ = 0;         ///< the probe's Krylov iterations
   int probe_columns_ = 0;
+  std::size_t probe_nodes_ = 0;        ///< the zone's first nodes, whose columns the probe solved
   std::optional<double> per_column_;   ///< Krylov iterations per column, once probed
   std::optional<int> switched_at_;
   MarchCost at_switch_;                ///< the whole-body march's cost as last weighed: at the switch, once switched

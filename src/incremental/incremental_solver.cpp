@@ -320,13 +320,15 @@ SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& opti
   return result;
 }
 
-// The Delassus columns of `zone`'s nodes before the march (ConeLaw::prepare then finds them), told
+// The Delassus columns of `zone`'s nodes before the march (ConeLaw::prepare then finds them; or
+// during it, `when` saying so, where "auto"'s whole-body march weighs or takes the interface form), told
 // through `note` with a line a minute while they are solved: d solves per node, at 10⁶ dofs on
 // CG + GAMG the longest part of the march with no record (more than 25 minutes on two ranks for the
 // shallow press, docs/linear_solvers.md).
-void learnZoneColumns(LazyDelassus& delassus, const std::vector<int>& zone, int d, const PhaseNote& note) {
+void learnZoneColumns(LazyDelassus& delassus, const std::vector<int>& zone, int d, const PhaseNote& note,
+                      const char* when = "before the march: ") {
   if (zone.empty()) return;
-  NotedPhase phase(note, "before the march: ");
+  NotedPhase phase(note, when);
   const int before = delassus.sparseSolves();
   phase.begin("the Delassus columns of the " + std::to_string(zone.size()) + " nodes within reach, " +
               std::to_string(d * static_cast<int>(zone.size())) + " sparse solves");
@@ -391,7 +393,9 @@ SolveResult solveWholeBodyOrSwitch(const Problem& problem, const IncrementalOpti
                                    const SpdSolver& stiffness, const std::vector<int>& zone, const PhaseNote& note) {
   const int d = problem.contact.dimension;
   FormSwitch form(problem, stiffness, zone,
-                  [&](LazyDelassus& delassus, const std::vector<int>& nodes) { learnZoneColumns(delassus, nodes, d, note); });
+                  [&](LazyDelassus& delassus, const std::vector<int>& nodes) {
+                    learnZoneColumns(delassus, nodes, d, note, "during the march, for the interface form: ");
+                  });
   const auto solve_at = [&](int k, const Eigen::VectorXd& lambda, const Eigen::VectorXd& v_previous) {
     return form.solve(k, lambda, v_previous, options);
   };
