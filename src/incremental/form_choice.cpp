@@ -19,7 +19,7 @@ FormChoice chooseIncrementalForm(IncrementalForm requested, const Problem& probl
   const std::string weighed = std::to_string(m) + " instants (the whole-body form: at least a solve each) against " +
                               std::to_string(columns) + " column solves for the " + std::to_string(zone->size()) +
                               " nodes within reach (the interface form)";
-  if (m < columns) return {IncrementalForm::WholeBody, head + "whole-body; " + weighed, true};
+  if (m < columns) return {IncrementalForm::WholeBody, head + "whole-body; " + weighed};
   return {IncrementalForm::Interface, head + "interface; " + weighed};
 }
 

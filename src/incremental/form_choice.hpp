@@ -30,12 +30,11 @@ namespace stc {
 
 /// The form a run solves in, and why (the summary's remark when "auto" weighed the two forms: on a
 /// backend that holds dofs; elsewhere the interface form is the only one and the reason is empty).
-/// `may_switch`: "auto" chose the whole-body form on the rule's assumed solve per instant, and the
-/// march turns to the interface form when its measured cost says so (interfaceIsCheaper).
+/// A whole-body form "auto" chose rests on the rule's assumed solve per instant: its march turns to
+/// the interface form when its measured cost says so (interfaceIsCheaper, form_switch.hpp).
 struct FormChoice {
   IncrementalForm form = IncrementalForm::Interface;
   std::string reason;
-  bool may_switch = false;
 };
 
 /// The whole-body march's cost so far, for interfaceIsCheaper.

@@ -444,7 +444,7 @@ SolveResult solveIncremental(const Problem& problem, const IncrementalOptions& o
       operators.stiffnessFree(problem, {zone_dofs, CholmodFactor::kTrailingWork});
   const FormChoice choice = chooseIncrementalForm(options.form, problem, *factor, zone);
   const auto solve = [&] {
-    if (choice.form == IncrementalForm::WholeBody && choice.may_switch)
+    if (choice.form == IncrementalForm::WholeBody && options.form == IncrementalForm::Auto)
       return solveWholeBodyOrSwitch(problem, options, callback, start, *factor, *zone, inputs.phase_note);
     if (choice.form == IncrementalForm::WholeBody) return solveWholeBody(problem, options, callback, start, *factor);
     if (problem.contact.dimension == 3 || options.cone_law)

@@ -27,6 +27,25 @@ stc::LinearSolverOptions on(stc::LinearBackend backend) {
   return linear;
 }
 
+// A solve of `problem` on CG + GAMG in `form`, with its operators' Krylov iterations.
+struct CgGamgSolve {
+  stc::SolveResult result;
+  long long krylov = 0;
+};
+CgGamgSolve onCgGamg(const stc::Problem& problem, stc::IncrementalForm form) {
+  stc::IncrementalOptions options;
+  options.form = form;
+  stc::PreparedOperators operators(on(stc::LinearBackend::CgGamg));
+  stc::SolveResult result = stc::solveIncremental(problem, options, {.operators = &operators});
+  return {std::move(result), operators.krylovIterations()};
+}
+
+// The forms agree to the noise of solves at a relative residual of 1e-12 (test_whole_body.cpp).
+void expectTheSameForces(const stc::SolveResult& a, const stc::SolveResult& b) {
+  const double scale = b.interface.lambda.cwiseAbs().maxCoeff();
+  EXPECT_LE((a.interface.lambda - b.interface.lambda).cwiseAbs().maxCoeff(), 1e-7 * scale);
+}
+
 std::vector<int> firstNodes(int count) {
   std::vector<int> zone(static_cast<std::size_t>(count));
   std::iota(zone.begin(), zone.end(), 0);
@@ -84,23 +103,17 @@ TEST(IncrementalFormChoice, AutoSolvesInTheFormItChoseAndSaysWhy) {
   const std::optional<std::vector<int>> zone = stc::reachZone(problem);
   ASSERT_TRUE(zone.has_value());
   ASSERT_GT(3 * static_cast<int>(zone->size()), problem.numSteps()) << "the scene must favour the whole-body form";
-  stc::PreparedOperators operators(on(stc::LinearBackend::CgGamg));
-  const stc::SolveResult chosen = stc::solveIncremental(problem, {}, {.operators = &operators});
+  const stc::SolveResult chosen = onCgGamg(problem, stc::IncrementalForm::Auto).result;
   ASSERT_EQ(chosen.summary.termination, stc::Termination::Converged) << chosen.summary.message;
   EXPECT_THAT(chosen.summary.message, HasSubstr("incremental form (auto): whole-body"));
   EXPECT_THAT(chosen.summary.message, HasSubstr("whole-body form: "));
   EXPECT_EQ(chosen.summary.incremental_form, "whole-body");
   // The same instants in the interface form, asked for, on the same backend: the same solution.
-  stc::IncrementalOptions interface;
-  interface.form = stc::IncrementalForm::Interface;
-  stc::PreparedOperators again(on(stc::LinearBackend::CgGamg));
-  const stc::SolveResult asked = stc::solveIncremental(problem, interface, {.operators = &again});
+  const stc::SolveResult asked = onCgGamg(problem, stc::IncrementalForm::Interface).result;
   EXPECT_EQ(asked.summary.message.find("incremental form (auto)"), std::string::npos) << asked.summary.message;
   EXPECT_EQ(asked.summary.message.find("whole-body form: "), std::string::npos) << asked.summary.message;
   EXPECT_EQ(asked.summary.incremental_form, "interface");
-  // The forms agree to the noise of solves at a relative residual of 1e-12 (test_whole_body.cpp).
-  const double scale = asked.interface.lambda.cwiseAbs().maxCoeff();
-  EXPECT_LE((chosen.interface.lambda - asked.interface.lambda).cwiseAbs().maxCoeff(), 1e-7 * scale);
+  expectTheSameForces(chosen, asked);
 }
 
 TEST(IncrementalFormChoice, AutoOnCholmodIsTheInterfaceFormBitForBit) {
@@ -140,26 +153,17 @@ TEST(IncrementalFormChoice, AutoTurnsToTheInterfaceFormWhereTheWholeBodyFormPays
   const std::optional<std::vector<int>> zone = stc::reachZone(problem);
   ASSERT_TRUE(zone.has_value());
   ASSERT_GT(3 * static_cast<int>(zone->size()), problem.numSteps()) << "the rule must choose the whole-body form";
-  stc::PreparedOperators operators(on(stc::LinearBackend::CgGamg));
-  const stc::SolveResult chosen = stc::solveIncremental(problem, {}, {.operators = &operators});
+  const CgGamgSolve auto_form = onCgGamg(problem, stc::IncrementalForm::Auto);
+  const stc::SolveResult& chosen = auto_form.result;
   ASSERT_EQ(chosen.summary.termination, stc::Termination::Converged) << chosen.summary.message;
   EXPECT_THAT(chosen.summary.message, HasSubstr("incremental form (auto): whole-body"));
   EXPECT_THAT(chosen.summary.message, HasSubstr("whole-body form for the first " +
                                                 std::to_string(stc::kInstantsBeforeWeighing) + " instants"));
   EXPECT_THAT(chosen.summary.message, HasSubstr("then the interface form"));
   EXPECT_EQ(chosen.summary.incremental_form, "interface");
-  // Fewer Krylov iterations than the whole-body form throughout; the interface form's forces to the
-  // solves' noise (test_whole_body.cpp).
-  stc::IncrementalOptions whole_body;
-  whole_body.form = stc::IncrementalForm::WholeBody;
-  stc::PreparedOperators throughout(on(stc::LinearBackend::CgGamg));
-  const stc::SolveResult whole = stc::solveIncremental(problem, whole_body, {.operators = &throughout});
-  EXPECT_LT(operators.krylovIterations(), throughout.krylovIterations());
-  EXPECT_LT(chosen.summary.sparseSolves(), whole.summary.sparseSolves());
-  stc::IncrementalOptions interface;
-  interface.form = stc::IncrementalForm::Interface;
-  stc::PreparedOperators again(on(stc::LinearBackend::CgGamg));
-  const stc::SolveResult asked = stc::solveIncremental(problem, interface, {.operators = &again});
-  const double scale = asked.interface.lambda.cwiseAbs().maxCoeff();
-  EXPECT_LE((chosen.interface.lambda - asked.interface.lambda).cwiseAbs().maxCoeff(), 1e-7 * scale);
+  // Fewer Krylov iterations and solves than the whole-body form throughout; the interface form's forces.
+  const CgGamgSolve whole = onCgGamg(problem, stc::IncrementalForm::WholeBody);
+  EXPECT_LT(auto_form.krylov, whole.krylov);
+  EXPECT_LT(chosen.summary.sparseSolves(), whole.result.summary.sparseSolves());
+  expectTheSameForces(chosen, onCgGamg(problem, stc::IncrementalForm::Interface).result);
 }
