@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <sstream>
 
 #include "stcontact/contact/contact_interface.hpp"
 #include "stcontact/incremental/cone_piece.hpp"
@@ -24,6 +25,20 @@ ConeLaw::ConeLaw(const Problem& problem, LazyDelassus& delassus)
 void ConeLaw::setInstant(const Eigen::VectorXd& v0, const Eigen::VectorXd& v_previous) {
   v0_ = v0;
   v_previous_ = v_previous;
+}
+
+InstantOutcome ConeLaw::solveInstant(const Eigen::VectorXd& v0, const Eigen::VectorXd& lambda_previous,
+                                     const Eigen::VectorXd& v_previous, const IncrementalOptions& options) {
+  setInstant(v0, v_previous);
+  return solveInstantByNewton(*this, lambda_previous, options.tolerance, options.max_newton_iterations);
+}
+
+std::string ConeLaw::systemsRemark() const {
+  const linalg::RowUpdatedLu::Counts& systems = newtonSystems();
+  std::ostringstream note;
+  note << "Newton systems: " << systems.factorisations << " LU factorisations, " << systems.updates
+       << " solved by updating one (" << systems.rejected << " updates rejected)";
+  return note.str();
 }
 
 // v = v_0 + W λ over the nodes that carry a force (their columns exist: a force only appears on a

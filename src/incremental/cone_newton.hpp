@@ -27,10 +27,13 @@
 // columns are; an open node with λ = 0 needs none (λ̂_n = −ρ_n g > 0 ⇔ g < 0, whatever ρ_n > 0):
 // its columns are computed the first time its gap is negative.
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
 #include "stcontact/incremental/lazy_delassus.hpp"
+#include "stcontact/incremental/newton_instant.hpp"
 #include "stcontact/linalg/row_updated_lu.hpp"
+#include "stcontact/options/incremental_options.hpp"
 #include "stcontact/problem/problem.hpp"
 
 namespace stc {
@@ -49,6 +52,11 @@ class ConeLaw {
   /// Sets the instant: v_0(:, k) and the previous instant's interface displacements (zero for k = 0).
   void setInstant(const Eigen::VectorXd& v0, const Eigen::VectorXd& v_previous);
 
+  /// Instant k by semismooth Newton (solveInstantByNewton) from the previous instant's forces and
+  /// interface displacements, v0 = v_0(:, k) the free response there.
+  InstantOutcome solveInstant(const Eigen::VectorXd& v0, const Eigen::VectorXd& lambda_previous,
+                              const Eigen::VectorXd& v_previous, const IncrementalOptions& options);
+
   /// Computes the Delassus columns and the scaling ρ of `nodes` now, in blocks on every thread,
   /// rather than a few at a time as they first close (evaluate does that for the others).
   void prepare(const std::vector<int>& nodes) { learnScaling(nodes); }
@@ -59,6 +67,8 @@ class ConeLaw {
   double forceScale(const Eigen::VectorXd& lambda) const;
   /// The Newton systems solved so far: LU factorisations, updates of one (row_updated_lu.hpp).
   const linalg::RowUpdatedLu::Counts& newtonSystems() const { return system_.counts(); }
+  /// The summary's remark on those systems.
+  std::string systemsRemark() const;
 
  private:
   Eigen::VectorXd displacement(const Eigen::VectorXd& lambda) const;

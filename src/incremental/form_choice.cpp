@@ -14,13 +14,17 @@ FormChoice chooseIncrementalForm(IncrementalForm requested, const Problem& probl
   if (!zone)
     return {IncrementalForm::Interface,
             head + "interface; no zone within reach says how many column solves it would make"};
-  const long columns = static_cast<long>(problem.contact.dimension) * static_cast<long>(zone->size());
+  const long columns = columnSolves(problem, zone->size());
   const int m = problem.numSteps();
   const std::string weighed = std::to_string(m) + " instants (the whole-body form: at least a solve each) against " +
                               std::to_string(columns) + " column solves for the " + std::to_string(zone->size()) +
                               " nodes within reach (the interface form)";
   if (m < columns) return {IncrementalForm::WholeBody, head + "whole-body; " + weighed};
   return {IncrementalForm::Interface, head + "interface; " + weighed};
+}
+
+long columnSolves(const Problem& problem, std::size_t zone_nodes) {
+  return static_cast<long>(problem.contact.dimension) * static_cast<long>(zone_nodes);
 }
 
 bool interfaceIsCheaper(int k, int m, long columns, const MarchCost& so_far, std::optional<double> krylov_per_column) {

@@ -37,6 +37,9 @@ struct FormChoice {
   std::string reason;
 };
 
+/// The interface form's column solves for `zone_nodes` nodes within reach: d |Z|.
+long columnSolves(const Problem& problem, std::size_t zone_nodes);
+
 /// The whole-body march's cost so far, for interfaceIsCheaper.
 struct MarchCost {
   int instants = 0;       ///< instants solved

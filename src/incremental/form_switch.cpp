@@ -25,17 +25,16 @@ InstantOutcome FormSwitch::solve(int k, const Eigen::VectorXd& lambda_previous, 
                                  const IncrementalOptions& options) {
   if (!switched_at_ && switchesBefore(k)) switchToInterface(k);
   if (!switched_at_) return whole_.solve(k, lambda_previous, v_previous, options.tolerance, options.max_newton_iterations);
-  cone_.setInstant(v0_.col(k), v_previous);
-  return solveInstantByNewton(cone_, lambda_previous, options.tolerance, options.max_newton_iterations);
+  return cone_.solveInstant(v0_.col(k), lambda_previous, v_previous, options);
+}
+
+long FormSwitch::columnsLeft() const {
+  return columnSolves(problem_, zone_.size()) - probe_columns_ + static_cast<long>(problem_.loads.size());
 }
 
 bool FormSwitch::switchesBefore(int k) {
   const int m = problem_.numSteps();
   at_switch_ = {k, whole_.solves(), krylov() - krylov_start_ - probe_krylov_};
-  const auto columnsLeft = [&] {
-    return static_cast<long>(problem_.contact.dimension) * static_cast<long>(zone_.size()) - probe_columns_ +
-           static_cast<long>(problem_.loads.size());
-  };
   if (!interfaceIsCheaper(k, m, columnsLeft(), at_switch_, per_column_)) return false;
   if (per_column_) return true;
   const int d = problem_.contact.dimension;
@@ -60,7 +59,7 @@ int FormSwitch::solves() const {
   return whole_.solves() + delassus_.sparseSolves() + (switched_at_ ? static_cast<int>(problem_.loads.size()) : 0);
 }
 
-std::string FormSwitch::remark() const {
+std::vector<std::string> FormSwitch::remarks() const {
   std::ostringstream out;
   const MarchCost& c = at_switch_;
   const double per_instant = c.instants > 0 ? static_cast<double>(c.solves) / c.instants : 0.0;
@@ -71,13 +70,13 @@ std::string FormSwitch::remark() const {
         << per_instant << " an instant, " << per_solve << " Krylov iterations each), then the interface form: "
         << "the instants left outweighed the columns of the " << zone_.size() << " nodes within reach ("
         << per_column_.value_or(0.0) << " Krylov iterations each)";
-    return out.str();
+    return {out.str(), cone_.systemsRemark(), delassus_.remark(problem_.contact.size())};
   }
   out << "whole-body form: " << whole_.solves() << " sparse solves with dofs held";
   if (per_column_)
     out << "; " << probe_columns_ << " columns solved to weigh the interface form (" << *per_column_
         << " Krylov iterations each) kept it";
-  return out.str();
+  return {out.str()};
 }
 
 }  // namespace stc

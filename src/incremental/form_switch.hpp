@@ -39,14 +39,17 @@ class FormSwitch {
                        const IncrementalOptions& options);
   /// Sparse solves so far, in both forms.
   int solves() const;
-  /// What the march did: the instant it switched at and what was weighed, or that it kept the form.
-  std::string remark() const;
+  /// What the march did: the instant it switched at and what was weighed, then the interface form's
+  /// Newton systems and Delassus columns; or that it kept the whole-body form.
+  std::vector<std::string> remarks() const;
   /// The form that solved the last instants.
   IncrementalForm finalForm() const { return switched_at_ ? IncrementalForm::Interface : IncrementalForm::WholeBody; }
 
  private:
   /// Whether to switch before instant k (weighs, and solves the probe's columns the first time).
   bool switchesBefore(int k);
+  /// The interface form's column solves not yet made: the zone's less the probe's, and the free response's.
+  long columnsLeft() const;
   void switchToInterface(int k);
   long long krylov() const { return stiffness_.krylovCounts().iterations; }
 

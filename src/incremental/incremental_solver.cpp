@@ -306,16 +306,11 @@ SolveResult solveConeWith(const Problem& problem, const IncrementalOptions& opti
   ConeLaw law(problem, delassus);
   law.prepare(prepared);
   const auto solve_at = [&](int k, const Eigen::VectorXd& lambda, const Eigen::VectorXd& v_previous) {
-    law.setInstant(v0.col(k), v_previous);
-    return solveInstantByNewton(law, lambda, options.tolerance, options.max_newton_iterations);
+    return law.solveInstant(v0.col(k), lambda, v_previous, options);
   };
   SolveResult result =
       march(problem, callback, start, solve_at, [&] { return load_solves + delassus.sparseSolves(); });
-  const linalg::RowUpdatedLu::Counts& systems = law.newtonSystems();
-  std::ostringstream note;
-  note << "Newton systems: " << systems.factorisations << " LU factorisations, " << systems.updates
-       << " solved by updating one (" << systems.rejected << " updates rejected)";
-  result.summary.remarks.push_back(note.str());
+  result.summary.remarks.push_back(law.systemsRemark());
   result.summary.composeMessage();
   return result;
 }
@@ -352,10 +347,7 @@ SolveResult solveConeOnEveryNode(const Problem& problem, const IncrementalOption
   if (zone) learnZoneColumns(delassus, *zone, problem.contact.dimension, phase_note);
   SolveResult result = solveConeWith(problem, options, callback, start, v0, delassus,
                                      static_cast<int>(problem.loads.size()), zone.value_or(std::vector<int>()));
-  std::ostringstream note;
-  note << "Delassus columns of " << delassus.nodesComputed() << " of " << problem.contact.size()
-       << " contact nodes (" << delassus.bytes() / 1e6 << " MB)";
-  result.summary.remarks.push_back(note.str());
+  result.summary.remarks.push_back(delassus.remark(problem.contact.size()));
   result.summary.composeMessage();
   return result;
 }
@@ -400,7 +392,7 @@ SolveResult solveWholeBodyOrSwitch(const Problem& problem, const IncrementalOpti
     return form.solve(k, lambda, v_previous, options);
   };
   SolveResult result = march(problem, callback, start, solve_at, [&] { return form.solves(); });
-  result.summary.remarks.push_back(form.remark());
+  for (std::string& remark : form.remarks()) result.summary.remarks.push_back(std::move(remark));
   result.summary.composeMessage();
   result.summary.incremental_form = nameOf(form.finalForm());
   return result;

@@ -1,6 +1,7 @@
 #include "stcontact/incremental/lazy_delassus.hpp"
 
 #include <algorithm>
+#include <sstream>
 #include <stdexcept>
 
 #include "stcontact/incremental/condensed_interface.hpp"
@@ -86,6 +87,13 @@ Eigen::MatrixXd freeInterfaceResponse(const Problem& problem, const SpdSolver& s
     v0.noalias() += w * Eigen::Map<const Eigen::RowVectorXd>(term.values.data(), problem.numSteps());
   }
   return v0;
+}
+
+std::string LazyDelassus::remark(int contact_nodes) const {
+  std::ostringstream note;
+  note << "Delassus columns of " << nodesComputed() << " of " << contact_nodes << " contact nodes (" << bytes() / 1e6
+       << " MB)";
+  return note.str();
 }
 
 }  // namespace stc

@@ -7,6 +7,7 @@
 // instead of the dense (d n_C)², and as many sparse solves as nodes ever closed (times d).
 #include <Eigen/Core>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "stcontact/linalg/spd_solver.hpp"
@@ -44,6 +45,8 @@ class LazyDelassus {
   int sparseSolves() const { return solves_; }  ///< none for columns given whole
   /// Bytes held by the columns.
   double bytes() const { return 8.0 * static_cast<double>(columns_.rows()) * d_ * count_; }
+  /// The summary's remark: "Delassus columns of N of n contact nodes (M MB)", n = `contact_nodes`.
+  std::string remark(int contact_nodes) const;
 
  private:
   void reserve(int nodes);

@@ -160,6 +160,10 @@ TEST(IncrementalFormChoice, AutoTurnsToTheInterfaceFormWhereTheWholeBodyFormPays
   EXPECT_THAT(chosen.summary.message, HasSubstr("whole-body form for the first " +
                                                 std::to_string(stc::kInstantsBeforeWeighing) + " instants"));
   EXPECT_THAT(chosen.summary.message, HasSubstr("then the interface form"));
+  // The interface form's remarks, as where it is chosen before the march.
+  EXPECT_THAT(chosen.summary.message, HasSubstr("Newton systems: "));
+  EXPECT_THAT(chosen.summary.message, HasSubstr("Delassus columns of " + std::to_string(zone->size()) + " of " +
+                                                std::to_string(problem.contact.size()) + " contact nodes"));
   EXPECT_EQ(chosen.summary.incremental_form, "interface");
   // Fewer Krylov iterations and solves than the whole-body form throughout; the interface form's forces.
   const CgGamgSolve whole = onCgGamg(problem, stc::IncrementalForm::WholeBody);
