@@ -7,6 +7,7 @@
 #include "stcontact/fas/coarse_zone.hpp"
 #include "stcontact/latin/local_stage.hpp"
 #include "stcontact/linalg/anderson.hpp"
+#include "stcontact/linalg/dense_product.hpp"
 
 namespace stc::fas {
 namespace {
@@ -66,7 +67,7 @@ struct ZoneLinearStage {
       xi = shift;
       return;
     }
-    xi.noalias() = map.transpose() * z;
+    linalg::multiplyTransposed(map, z, xi);
     if (shift.size() > 0) xi += shift;
   }
 };
@@ -88,7 +89,7 @@ Eigen::MatrixXd iterateOnZone(const ContactInterface& zone_contact, const ZoneLi
     z = w - W_s;
     stage.apply(z, xi);
     if (it + 1 >= iterations || w.rows() == 0) return xi;
-    dv.noalias() = stage.traces * xi;  // B Δu, seed eq. (7)
+    linalg::multiply(stage.traces, xi, dv);  // B Δu, seed eq. (7)
     // The trial v = Bũ + B Δu, λ = W(ŝ) − k v (seed eq. (5)), its local stage and the next state
     // W(ŝ) = λ̂ + k v̂, in one pass.
     latin::localStageOfTrial(zone_contact, v0, dv, w, nullptr, &image);
@@ -124,10 +125,11 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
   const Eigen::MatrixXd xi = iterateOnZone(zone_contact, stage, options, v0, W_s, w);
   // The last trial on every node (the far ones open: W_F = k_F v_F) and its fine local stage.
   const ThreadCountScope threads(threadsFor(s.v.rows(), s.v.cols()));
-  const Eigen::MatrixXd dv = BY * xi;
+  const Eigen::MatrixXd dv = linalg::freshProduct(BY, xi);
   Eigen::MatrixXd W(s.v.rows(), s.v.cols());
   W(zone.rows, Eigen::all) = w;
-  W(zone.far_rows, Eigen::all) = k(zone.far_rows).asDiagonal() * (s.v + dv)(zone.far_rows, Eigen::all);
+  W(zone.far_rows, Eigen::all) =
+      k(zone.far_rows).asDiagonal() * (s.v(zone.far_rows, Eigen::all) + dv(zone.far_rows, Eigen::all));
   latin::localStageOfTrial(contact, s.v, dv, W, &hat, nullptr);
 }
 

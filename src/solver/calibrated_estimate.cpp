@@ -5,11 +5,36 @@
 #include <limits>
 #include <stdexcept>
 
+#include "stcontact/core/threads.hpp"
 
 namespace stc {
 namespace {
 // Iterates with a larger indicator are kept out of the calibration (see the header).
 constexpr double kCalibrationCeiling = 0.1;
+
+// Entries per field (rows × m) from which the distances are taken on threadCount() threads: below,
+// waking the pool's worker costs more than the pass (the coarse step's threshold, coarse_step.cpp).
+constexpr Eigen::Index kThreadedEntries = 1 << 16;
+
+// ‖u_j − u_n‖²_K = Σ δv · δλ over the rows and instants (energyProduct of the difference with itself)
+// for every checkpoint j, in one pass over s_n: each instant's column of s_n is read once for all
+// checkpoints, the instants split over threads, and the columns' sums added in order (the same
+// arithmetic on any number of threads).
+template <class Checkpoints>
+Eigen::VectorXd squaredDistances(const Checkpoints& checkpoints, const InterfaceHistory& s) {
+  const auto count = static_cast<Eigen::Index>(checkpoints.size());
+  const auto m = static_cast<int>(s.v.cols());
+  Eigen::MatrixXd per_instant(count, m);
+  const int threads = s.v.size() >= kThreadedEntries ? threadCount() : 1;
+  parallelRanges(m, threads, [&](int begin, int end) {
+    for (int k = begin; k < end; ++k)
+      for (Eigen::Index j = 0; j < count; ++j) {
+        const InterfaceHistory& c = checkpoints[static_cast<std::size_t>(j)].s;
+        per_instant(j, k) = (c.v.col(k) - s.v.col(k)).dot(c.lambda.col(k) - s.lambda.col(k));
+      }
+  });
+  return per_instant.rowwise().sum();
+}
 }  // namespace
 
 CalibratedIndicatorEstimator::CalibratedIndicatorEstimator(double safety, int count, double spacing)
@@ -22,10 +47,10 @@ double CalibratedIndicatorEstimator::record(const InterfaceHistory& s, double in
   double bound = -1.0;
   double calibrating = 0.0;  // the largest d_jn / η_j of the checkpoints that calibrate
   double recent = 0.0;       // the largest d_kn / η_k of those too recent to calibrate
-  for (const Checkpoint& c : checkpoints_) {
-    // ‖u_j − u_n‖²_K = Σ δv · δλ (energyProduct of the difference with itself), without temporaries.
-    const double squared = (c.s.v - s.v).cwiseProduct(c.s.lambda - s.lambda).sum();
-    const double distance = std::sqrt(std::max(0.0, squared));
+  const Eigen::VectorXd squared = squaredDistances(checkpoints_, s);
+  for (std::size_t j = 0; j < checkpoints_.size(); ++j) {
+    const Checkpoint& c = checkpoints_[j];
+    const double distance = std::sqrt(std::max(0.0, squared[static_cast<Eigen::Index>(j)]));
     if (!(c.indicator >= 2.0 * safety_ * indicator)) {
       recent = std::max(recent, distance / c.indicator);
       continue;

@@ -1,5 +1,6 @@
 #include "stcontact/solver/contact_free_certificate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -19,11 +20,12 @@ double forceNormSquared(const ContactInterface& c, const InterfaceHistory& s) {
   return (s.lambda.array().square().colwise() / c.search_direction.array()).sum();
 }
 
-/// The smallest gap g0_i + v_n(i, k) over the nodes and instants (+∞ without nodes).
+/// The smallest gap g0_i + v_n(i, k) over the nodes and instants (+∞ without nodes), instant by
+/// instant: v is stored by columns.
 double smallestGap(const ContactInterface& c, const InterfaceHistory& s) {
   double smallest = INFINITY;
-  for (int i = 0; i < c.size(); ++i)
-    smallest = std::min(smallest, c.initial_gap[i] + s.v.row(c.normalRow(i)).minCoeff());
+  for (Eigen::Index k = 0; k < s.v.cols(); ++k)
+    for (int i = 0; i < c.size(); ++i) smallest = std::min(smallest, c.initial_gap[i] + s.v(c.normalRow(i), k));
   return smallest;
 }
 

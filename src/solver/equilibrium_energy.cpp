@@ -24,10 +24,12 @@ EquilibriumEnergy::EquilibriumEnergy(const Problem& problem, const SpdSolver& se
 
 double EquilibriumEnergy::operator()(const InterfaceHistory& s) const {
   const int q = static_cast<int>(histories_.rows());
-  const Eigen::MatrixXd w = s.lambda + problem_.contact.search_direction.asDiagonal() * s.v;
-  // Projections of u_k on the columns of [F D]: (A⁻¹a)ᵀ F g_k + (B A⁻¹ a)ᵀ w_k.
+  // Projections of u_k on the columns of [F D]: (A⁻¹a)ᵀ F g_k + (B A⁻¹ a)ᵀ w_k, w_k = λ_k + k v_k
+  // taken as two products (no rows × m temporary).
+  const Eigen::MatrixXd scaled_traces = problem_.contact.search_direction.asDiagonal() * interface_traces_;
   Eigen::MatrixXd projections = load_responses_ * histories_;
-  projections.noalias() += interface_traces_.transpose() * w;
+  projections.noalias() += interface_traces_.transpose() * s.lambda;
+  projections.noalias() += scaled_traces.transpose() * s.v;
   double energy = s.v.cwiseProduct(s.lambda).sum();
   if (q > 0) {
     energy += projections.topRows(q).cwiseProduct(histories_).sum();
