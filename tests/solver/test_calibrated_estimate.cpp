@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <vector>
 
+#include "stcontact/core/threads.hpp"
 #include "stcontact/solver/calibrated_estimate.hpp"
 #include "stcontact/solver/error_estimate.hpp"
 
@@ -110,4 +112,26 @@ TEST(CalibratedIndicatorEstimator, ScalesTheBoundByTheGrowthARecentCheckpointSho
   EXPECT_NEAR(estimateWithRecentCheckpointAt(0.05), calibrated * (0.05 * root3 / 4e-3) / ratio_a, 1e-15);
   // B's ratio 0.02 √3 / 4e-3 is half A's: nothing seen, the calibrated bound alone.
   EXPECT_NEAR(estimateWithRecentCheckpointAt(0.02), calibrated, 1e-15);
+}
+
+// The distances to the checkpoints are taken by instants on the threads from 2^16 entries per field
+// (docs/threads.md): the estimates of a long random sequence are bitwise those of one thread.
+TEST(CalibratedIndicatorEstimator, SplittingTheInstantsOverThreadsChangesNoBit) {
+  const Eigen::Index rows = 60, m = 2001;  // 120 060 entries per field
+  const stc::InterfaceHistory limit{Eigen::MatrixXd::Random(rows, m), Eigen::MatrixXd::Random(rows, m)};
+  const stc::InterfaceHistory direction{Eigen::MatrixXd::Random(rows, m), Eigen::MatrixXd::Random(rows, m)};
+  const auto estimates = [&](int threads) {
+    const stc::ThreadCountScope scope(threads);
+    stc::CalibratedIndicatorEstimator estimator;
+    std::vector<double> out;
+    for (int n = 1; n <= 12; ++n) {
+      const double error = std::pow(0.5, n);
+      out.push_back(estimator.record({limit.v + error * direction.v, limit.lambda + error * direction.lambda},
+                                     error / 5.0, 1.0));
+    }
+    return out;
+  };
+  const std::vector<double> one = estimates(1), two = estimates(2);
+  ASSERT_TRUE(std::isfinite(one.back())) << "the sequence must reach calibrated estimates";
+  for (std::size_t n = 0; n < one.size(); ++n) EXPECT_EQ(std::memcmp(&one[n], &two[n], sizeof(double)), 0) << n;
 }
