@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "stcontact/core/interruption.hpp"
+#include "stcontact/core/threads.hpp"
 #include "stcontact/linalg/dense_decompositions.hpp"
 #include "stcontact/linalg/dense_product.hpp"
 #include "stcontact/linalg/ranks.hpp"
@@ -204,19 +205,50 @@ ControlledGlobalStage::Anticipated ControlledGlobalStage::anticipateWhitened(con
   return out;
 }
 
+namespace {
+// Entries per field (rows × m) from which the exact stage's passes run on threadCount() threads:
+// below, waking the pool's worker costs more than a pass (the coarse step's threshold).
+constexpr Eigen::Index kThreadedPassEntries = 1 << 16;
+
+// body(first, count) over ranges of columns of an rows × m field, on the threads when it is large;
+// each entry's arithmetic is that of the whole-field expression (elementwise), so the bits are too.
+template <class Body>
+void overColumnRanges(Eigen::Index rows, Eigen::Index m, Body&& body) {
+  const int threads = rows * m >= kThreadedPassEntries ? threadCount() : 1;
+  parallelRanges(static_cast<int>(m), threads, [&](int begin, int end) { body(begin, end - begin); });
+}
+}  // namespace
+
+void ControlledGlobalStage::solveEveryRow(const InterfaceHistory& hat, InterfaceHistory& s) {
+  // The exact stage v = V_F G + D w, λ = w − k v (header, "Every row"), its passes over the
+  // history in two threaded sweeps around the product.
+  const Eigen::VectorXd& k = problem_.contact.search_direction;
+  const Eigen::VectorXd& inv_sqrt_k = basis_.invSqrtK();
+  const Eigen::MatrixXd& free_response = basis_.freeResponse();
+  const Eigen::Index rows = hat.v.rows(), m = hat.v.cols();
+  Eigen::MatrixXd& w = buffers_.solved;
+  w.resize(rows, m);
+  s.v.resize(rows, m);
+  s.lambda.resize(rows, m);
+  w_last_.resize(rows, m);
+  overColumnRanges(rows, m, [&](Eigen::Index first, Eigen::Index count) {
+    w.middleCols(first, count) = hat.lambda.middleCols(first, count) + k.asDiagonal() * hat.v.middleCols(first, count);
+    s.v.middleCols(first, count) = free_response.middleCols(first, count);
+  });
+  linalg::multiplyAdd(basis_.condensedInterface(), w, s.v);
+  overColumnRanges(rows, m, [&](Eigen::Index first, Eigen::Index count) {
+    s.lambda.middleCols(first, count) = w.middleCols(first, count) - k.asDiagonal() * s.v.middleCols(first, count);
+    w_last_.middleCols(first, count) = inv_sqrt_k.asDiagonal() * w.middleCols(first, count);
+  });
+  c_stale_ = true;
+  error_ = 0.0;
+}
+
 void ControlledGlobalStage::solve(const InterfaceHistory& hat, InterfaceHistory& s) {
   const Eigen::VectorXd& k = problem_.contact.search_direction;
   completeWhenDue();
   if (every_row_) {
-    // The exact stage v = V_F G + D w, λ = w − k v (header, "Every row").
-    Eigen::MatrixXd& w = buffers_.solved;
-    w = hat.lambda + k.asDiagonal() * hat.v;
-    s.v = basis_.freeResponse();
-    linalg::multiplyAdd(basis_.condensedInterface(), w, s.v);
-    s.lambda = w - k.asDiagonal() * s.v;
-    w_last_ = basis_.invSqrtK().asDiagonal() * w;
-    c_stale_ = true;
-    error_ = 0.0;
+    solveEveryRow(hat, s);
     return;
   }
   // Scaled right-hand sides w̃ = k^{-1/2} (λ̂ + k v̂) and their projection on the directions.

@@ -116,6 +116,8 @@ class ControlledGlobalStage : public latin::LinearStage {
   static Eigen::MatrixXd stepSketch(Eigen::Index instants, int samples);
 
  private:
+  /// The exact stage when the directions span every row (solve's "Every row" case).
+  void solveEveryRow(const InterfaceHistory& hat, InterfaceHistory& s);
   /// w̃ = k^{-1/2} (λ̂ + k v̂), the scaled right-hand sides of a solve from `hat`.
   Eigen::MatrixXd scaledRightHandSides(const InterfaceHistory& hat) const;
   /// The same written into `out` (d n_C × m): a buffer kept from call to call.
