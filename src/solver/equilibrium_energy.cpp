@@ -1,5 +1,7 @@
 #include "stcontact/solver/equilibrium_energy.hpp"
 
+#include "stcontact/linalg/dense_product.hpp"
+
 namespace stc {
 
 EquilibriumEnergy::EquilibriumEnergy(const Problem& problem, const SpdSolver& search_factor) : problem_(problem) {
@@ -25,11 +27,13 @@ EquilibriumEnergy::EquilibriumEnergy(const Problem& problem, const SpdSolver& se
 double EquilibriumEnergy::operator()(const InterfaceHistory& s) const {
   const int q = static_cast<int>(histories_.rows());
   // Projections of u_k on the columns of [F D]: (A⁻¹a)ᵀ F g_k + (B A⁻¹ a)ᵀ w_k, w_k = λ_k + k v_k
-  // taken as two products (no rows × m temporary).
+  // taken as two products (no rows × m temporary; linalg's, on the threads).
   const Eigen::MatrixXd scaled_traces = problem_.contact.search_direction.asDiagonal() * interface_traces_;
-  Eigen::MatrixXd projections = load_responses_ * histories_;
-  projections.noalias() += interface_traces_.transpose() * s.lambda;
-  projections.noalias() += scaled_traces.transpose() * s.v;
+  Eigen::MatrixXd projections, of_v;
+  linalg::multiplyTransposed(interface_traces_, s.lambda, projections);
+  linalg::multiplyTransposed(scaled_traces, s.v, of_v);
+  projections += of_v;
+  projections.noalias() += load_responses_ * histories_;
   double energy = s.v.cwiseProduct(s.lambda).sum();
   if (q > 0) {
     energy += projections.topRows(q).cwiseProduct(histories_).sum();
