@@ -210,7 +210,7 @@ namespace {
 // below, waking the pool's worker costs more than a pass (the coarse step's threshold).
 constexpr Eigen::Index kThreadedPassEntries = 1 << 16;
 
-// body(first, count) over ranges of columns of an rows × m field, on the threads when it is large;
+// body(first, count) over ranges of columns of a rows × m field, on the threads when it is large;
 // each entry's arithmetic is that of the whole-field expression (elementwise), so the bits are too.
 template <class Body>
 void overColumnRanges(Eigen::Index rows, Eigen::Index m, Body&& body) {
