@@ -12,10 +12,6 @@
 namespace stc::fas {
 namespace {
 
-/// Entries per interface field (rows × m) from which the coarse step runs on threadCount() threads
-/// (docs/threads.md, "The local stage by blocks of nodes").
-constexpr Eigen::Index kThreadedCoarseEntries = 1 << 16;
-
 /// Below this reciprocal condition number I − M_F is taken as singular and no row is eliminated.
 constexpr double kSingularSchur = 1e-12;
 
@@ -23,13 +19,11 @@ constexpr double kSingularSchur = 1e-12;
 // this thread around a short local stage (~50 µs on the seed). On 2 threads every one of those
 // local stages had to wake the pool's worker, asleep during the products, and hand over: that cost
 // more than the split saves (bench_stages CoarseStep, seed: 8.3 ms on 1 thread, 13.2 ms on 2;
-// docs/threads.md). From kThreadedCoarseEntries entries per field on, the local stages and the
+// docs/threads.md). From kThreadedFieldEntries (2^16) entries per field on, the local stages and the
 // Anderson passes are long enough to share (alternated runs to 1e-4 or 1e-6, threaded against
 // serial, every node iterated: 0.97 of the time at 201 contact nodes × 201 instants, 80 000 entries;
-// 0.93 at 401, 0.92 at 801 and 1601; the seed mesh, 40 000 entries, 1.02).
-int threadsFor(Eigen::Index rows, Eigen::Index cols) {
-  return rows * cols >= kThreadedCoarseEntries ? threadCount() : 1;
-}
+// 0.93 at 401, 0.92 at 801 and 1601; the seed mesh, 40 000 entries, 1.02). So the step sets its
+// thread count by threadsForField (src/core/threads.hpp) on the field it iterates.
 
 // The restricted linear stage ξ = (BY)ᵀ(W − W_s) with the far rows F eliminated (coarse_zone.hpp:
 // the coarse problem takes them open, λ_F = 0, so W_F = k_F v_F with v_F = Bũ_F + BY_F ξ). On the
@@ -84,7 +78,7 @@ Eigen::MatrixXd iterateOnZone(const ContactInterface& zone_contact, const ZoneLi
   std::optional<AndersonMixing> mixing;
   if (options.coarse_anderson > 0 && w.rows() > 0)
     mixing.emplace(options.coarse_anderson, k.cwiseSqrt().cwiseInverse());
-  const ThreadCountScope threads(threadsFor(w.rows(), w.cols()));
+  const ThreadCountScope threads(threadsForField(w.size()));
   for (int it = 0;; ++it) {
     z = w - W_s;
     stage.apply(z, xi);
@@ -124,7 +118,7 @@ void coarseStep(const ContactInterface& contact, const CoarseSpace& space, const
   Eigen::MatrixXd w = on_zone(hat.lambda) + k_zone.asDiagonal() * on_zone(hat.v);
   const Eigen::MatrixXd xi = iterateOnZone(zone_contact, stage, options, v0, W_s, w);
   // The last trial on every node (the far ones open: W_F = k_F v_F) and its fine local stage.
-  const ThreadCountScope threads(threadsFor(s.v.rows(), s.v.cols()));
+  const ThreadCountScope threads(threadsForField(s.v.size()));
   const Eigen::MatrixXd dv = linalg::freshProduct(BY, xi);
   Eigen::MatrixXd W(s.v.rows(), s.v.cols());
   W(zone.rows, Eigen::all) = w;

@@ -206,16 +206,12 @@ ControlledGlobalStage::Anticipated ControlledGlobalStage::anticipateWhitened(con
 }
 
 namespace {
-// Entries per field (rows × m) from which the exact stage's passes run on threadCount() threads:
-// below, waking the pool's worker costs more than a pass (the coarse step's threshold).
-constexpr Eigen::Index kThreadedPassEntries = 1 << 16;
-
-// body(first, count) over ranges of columns of a rows × m field, on the threads when it is large;
-// each entry's arithmetic is that of the whole-field expression (elementwise), so the bits are too.
+// body(first, count) over ranges of columns of a rows × m field, on the threads when it is large
+// (threadsForField); each entry's arithmetic is that of the whole-field expression (elementwise), so
+// the bits are too.
 template <class Body>
 void overColumnRanges(Eigen::Index rows, Eigen::Index m, Body&& body) {
-  const int threads = rows * m >= kThreadedPassEntries ? threadCount() : 1;
-  parallelRanges(static_cast<int>(m), threads, [&](int begin, int end) { body(begin, end - begin); });
+  parallelRanges(static_cast<int>(m), threadsForField(rows * m), [&](int begin, int end) { body(begin, end - begin); });
 }
 }  // namespace
 

@@ -77,6 +77,8 @@ int threadCount() {
   return environment;
 }
 
+int threadsForField(long long entries) { return entries >= kThreadedFieldEntries ? threadCount() : 1; }
+
 int maxThreadCount() { return 4 * static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
 void setThreadCount(int n) { chosen.store(checkedCount(n)); }

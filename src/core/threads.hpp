@@ -18,6 +18,12 @@ inline constexpr int kDefaultThreads = 2;
 /// thread, else setThreadCount's value, else the environment variable STC_THREADS (an integer >= 1;
 /// anything else throws InputError naming it), else kDefaultThreads.
 int threadCount();
+/// Entries of a dense field (rows × instants) from which a pass over it runs on threadCount()
+/// threads: below, waking the pool's worker costs more than the split saves (measured on the FAS
+/// coarse step, docs/threads.md, "Why the coarse step is threaded from 2^16 entries").
+inline constexpr long long kThreadedFieldEntries = 1LL << 16;
+/// threadCount() for a field of `entries` entries from kThreadedFieldEntries on, else 1.
+int threadsForField(long long entries);
 /// Sets the process-wide count (every thread without a ThreadCountScope). Throws InputError unless
 /// 1 <= n <= maxThreadCount().
 void setThreadCount(int n);

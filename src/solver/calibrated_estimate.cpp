@@ -12,10 +12,6 @@ namespace {
 // Iterates with a larger indicator are kept out of the calibration (see the header).
 constexpr double kCalibrationCeiling = 0.1;
 
-// Entries per field (rows × m) from which the distances are taken on threadCount() threads: below,
-// waking the pool's worker costs more than the pass (the coarse step's threshold, coarse_step.cpp).
-constexpr Eigen::Index kThreadedEntries = 1 << 16;
-
 // ‖u_j − u_n‖²_K = Σ δv · δλ over the rows and instants (energyProduct of the difference with itself)
 // for every checkpoint j, in one pass over s_n: each instant's column of s_n is read once for all
 // checkpoints, the instants split over threads, and the columns' sums added in order (the same
@@ -25,8 +21,7 @@ Eigen::VectorXd squaredDistances(const Checkpoints& checkpoints, const Interface
   const auto count = static_cast<Eigen::Index>(checkpoints.size());
   const auto m = static_cast<int>(s.v.cols());
   Eigen::MatrixXd per_instant(count, m);
-  const int threads = s.v.size() >= kThreadedEntries ? threadCount() : 1;
-  parallelRanges(m, threads, [&](int begin, int end) {
+  parallelRanges(m, threadsForField(s.v.size()), [&](int begin, int end) {
     for (int k = begin; k < end; ++k)
       for (Eigen::Index j = 0; j < count; ++j) {
         const InterfaceHistory& c = checkpoints[static_cast<std::size_t>(j)].s;
