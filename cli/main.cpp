@@ -51,10 +51,11 @@ int interrupted() { return stc::reportStopAndExitStatus(); }
 // page faults and zeroing: 8 % of a fas-apriori solve of the seed scene (perf), 19 % of its time.
 // Fixed thresholds keep freed fields in the heap for the next one (mallopt(3)); results unchanged.
 // The trim threshold bounds the free top the heap keeps: on long histories a field is tens of MB
-// (591 rows × 10 001 instants, 47 MB, on the fretting history at divisions 16), and at 128 MB a
+// (591 rows × 10 001 instants, 47 MB, on the fretting history at divisions 16), and at 128 MiB a
 // fas-apriori solve there gave 7 GB back to the system and faulted it in again (2.1 million page
-// faults, 3 s of system time); at 512 MB it keeps them (0.95 million, the solve 7 % faster) and the
-// incremental solver's peak is unchanged (docs/threads.md, "Memory of long histories").
+// faults, 3 s of system time); at 512 MiB it keeps them (0.95 million, the solve 7 % faster). The
+// free top kept can raise a run's peak: the incremental solver's by 112 MB at 2001 instants there,
+// none at 10 001 (docs/threads.md, "Memory of long histories").
 void keepFreedFieldsInTheHeap() {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 512 << 20);
